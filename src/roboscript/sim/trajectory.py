@@ -1,0 +1,111 @@
+"""Joint trajectories as time-stamped points, the form a real arm's trajectory controller accepts.
+
+A :class:`JointTrajectory` holds positions and velocities at increasing times and is sampled by cubic Hermite
+interpolation between them. :func:`min_jerk_through` makes one through waypoints, stopping at each, within
+per-joint velocity and acceleration limits (the planning layer brings better time parameterisations).
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+# Peak speed and acceleration of the quintic rest-to-rest profile s(u) = 10u^3 - 15u^4 + 6u^5, per unit distance
+# and unit time.
+_MIN_JERK_PEAK_VELOCITY = 1.875
+_MIN_JERK_PEAK_ACCELERATION = 5.7735
+
+
+@dataclass(frozen=True)
+class JointTrajectory:
+    """``positions[i]`` and ``velocities[i]`` are the targets at ``times[i]`` seconds from the start."""
+
+    times: np.ndarray  # (N,)
+    positions: np.ndarray  # (N, dof)
+    velocities: np.ndarray  # (N, dof)
+
+    def __post_init__(self) -> None:
+        times = np.asarray(self.times, dtype=float)
+        positions = np.atleast_2d(np.asarray(self.positions, dtype=float))
+        velocities = np.atleast_2d(np.asarray(self.velocities, dtype=float))
+        if times.ndim != 1 or len(times) < 1:
+            raise ValueError("a trajectory needs at least one time stamp")
+        if positions.shape[0] != len(times) or velocities.shape != positions.shape:
+            raise ValueError(
+                f"trajectory shapes disagree: {len(times)} times, positions {positions.shape}, "
+                f"velocities {velocities.shape}"
+            )
+        if np.any(np.diff(times) <= 0):
+            raise ValueError("trajectory times must increase strictly")
+        if not (np.all(np.isfinite(positions)) and np.all(np.isfinite(velocities))):
+            raise ValueError("trajectory holds non-finite values")
+        object.__setattr__(self, "times", times)
+        object.__setattr__(self, "positions", positions)
+        object.__setattr__(self, "velocities", velocities)
+
+    @property
+    def duration(self) -> float:
+        return float(self.times[-1])
+
+    @property
+    def dof(self) -> int:
+        return self.positions.shape[1]
+
+    def sample(self, t: float) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+        """Position, velocity and acceleration at time ``t`` (clamped to the trajectory's span)."""
+        if t <= self.times[0]:
+            return self.positions[0].copy(), np.zeros(self.dof), np.zeros(self.dof)
+        if t >= self.times[-1]:
+            return self.positions[-1].copy(), np.zeros(self.dof), np.zeros(self.dof)
+        i = int(np.searchsorted(self.times, t, side="right")) - 1
+        h = self.times[i + 1] - self.times[i]
+        u = (t - self.times[i]) / h
+        p0, p1 = self.positions[i], self.positions[i + 1]
+        m0, m1 = self.velocities[i] * h, self.velocities[i + 1] * h
+        u2, u3 = u * u, u * u * u
+        q = (2 * u3 - 3 * u2 + 1) * p0 + (u3 - 2 * u2 + u) * m0 + (-2 * u3 + 3 * u2) * p1 + (u3 - u2) * m1
+        dq = ((6 * u2 - 6 * u) * p0 + (3 * u2 - 4 * u + 1) * m0 + (-6 * u2 + 6 * u) * p1 + (3 * u2 - 2 * u) * m1) / h
+        ddq = ((12 * u - 6) * p0 + (6 * u - 4) * m0 + (-12 * u + 6) * p1 + (6 * u - 2) * m1) / (h * h)
+        return q, dq, ddq
+
+
+def min_jerk_through(
+    waypoints: np.ndarray,
+    max_velocity: np.ndarray,
+    max_acceleration: np.ndarray,
+    speed_scale: float = 1.0,
+    sample_dt: float = 0.01,
+) -> JointTrajectory:
+    """A rest-to-rest quintic (minimum-jerk) motion through each waypoint in turn.
+
+    Each segment lasts long enough that no joint exceeds ``speed_scale`` times its velocity and acceleration
+    limits. The result is sampled every ``sample_dt`` seconds.
+    """
+    waypoints = np.atleast_2d(np.asarray(waypoints, dtype=float))
+    if len(waypoints) < 2:
+        raise ValueError("min_jerk_through needs at least two waypoints")
+    if not 0 < speed_scale <= 1:
+        raise ValueError(f"speed_scale must be in (0, 1], got {speed_scale}")
+    vmax = np.asarray(max_velocity) * speed_scale
+    amax = np.asarray(max_acceleration) * speed_scale
+    times, positions, velocities = [0.0], [waypoints[0]], [np.zeros(waypoints.shape[1])]
+    t0 = 0.0
+    for a, b in zip(waypoints[:-1], waypoints[1:], strict=True):
+        delta = b - a
+        dist = np.abs(delta)
+        duration = float(max(
+            np.max(_MIN_JERK_PEAK_VELOCITY * dist / vmax),
+            np.max(np.sqrt(_MIN_JERK_PEAK_ACCELERATION * dist / amax)),
+            sample_dt,
+        ))
+        n = max(2, int(np.ceil(duration / sample_dt)))
+        for k in range(1, n + 1):
+            u = k / n
+            s = 10 * u**3 - 15 * u**4 + 6 * u**5
+            ds = (30 * u**2 - 60 * u**3 + 30 * u**4) / duration
+            times.append(t0 + u * duration)
+            positions.append(a + s * delta)
+            velocities.append(ds * delta)
+        t0 += duration
+    return JointTrajectory(np.array(times), np.array(positions), np.array(velocities))

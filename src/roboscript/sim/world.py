@@ -1,0 +1,317 @@
+"""Builds a MuJoCo simulation from a :class:`WorldSpec` and a robot, with MjSpec.
+
+The result, :class:`SimWorld`, owns the model and data and an index of named entities (objects, furniture parts,
+the table, the robot) that ground truth, segmentation and the backend use.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, field
+from typing import Literal
+
+import mujoco
+import numpy as np
+
+from roboscript.geometry import quat_from_yaw, quat_to_mujoco
+from roboscript.robots import ROBOT_PREFIX, RobotDescription, get_robot
+from roboscript.sim.cameras import add_camera
+from roboscript.sim.furniture import add_cabinet, add_table, drawer_interior
+from roboscript.sim.objects import ObjectType
+from roboscript.sim.world_file import ROBOT_BASE_XY, ObjectPlacement, WorldFileError, WorldSpec
+
+TIMESTEP = 0.002  # 500 Hz physics
+EntityKind = Literal["object", "furniture", "part", "table", "robot"]
+
+
+@dataclass(frozen=True)
+class Entity:
+    """A named thing in the world. ``bodies`` are the bodies whose geoms make up its shape."""
+
+    index: int
+    name: str
+    kind: EntityKind
+    bodies: tuple[int, ...]
+    category: str = ""
+    color: str = ""
+    joint: int = -1  # the part's own joint (drawers, doors), -1 if none
+    object_type: ObjectType | None = None
+
+
+@dataclass(frozen=True)
+class RobotBinding:
+    """Indices of the robot's elements in the compiled model."""
+
+    description: RobotDescription
+    qpos: np.ndarray  # qpos addresses of the arm joints
+    dof: np.ndarray  # dof addresses of the arm joints
+    actuators: np.ndarray  # arm actuator ids
+    kp: np.ndarray  # position gain of each arm actuator
+    kv: np.ndarray  # velocity gain of each arm actuator
+    joint_lower: np.ndarray
+    joint_upper: np.ndarray
+    tcp_site: int
+    gripper_actuator: int
+    finger_bodies: tuple[int, int]
+    body_ids: frozenset[int]  # every body of the robot, gripper included
+
+    @staticmethod
+    def bind(model: mujoco.MjModel, description: RobotDescription) -> RobotBinding:
+        q = RobotDescription.qualified
+        joints = [model.joint(q(j)) for j in description.arm_joints]
+        actuators = [model.actuator(q(a)) for a in description.arm_actuators]
+        root = model.body(q(_root_body_name(description))).id
+        bodies = frozenset(b for b in range(model.nbody) if _is_descendant(model, b, root))
+        return RobotBinding(
+            description=description,
+            qpos=np.array([j.qposadr[0] for j in joints]),
+            dof=np.array([j.dofadr[0] for j in joints]),
+            actuators=np.array([a.id for a in actuators]),
+            kp=np.array([a.gainprm[0] for a in actuators]),
+            kv=np.array([-a.biasprm[2] for a in actuators]),
+            joint_lower=np.array([j.range[0] for j in joints]),
+            joint_upper=np.array([j.range[1] for j in joints]),
+            tcp_site=model.site(q(description.tcp_site)).id,
+            gripper_actuator=model.actuator(q(description.gripper.actuator)).id,
+            finger_bodies=tuple(model.body(q(b)).id for b in description.gripper.finger_bodies),
+            body_ids=bodies,
+        )
+
+
+def _root_body_name(description: RobotDescription) -> str:
+    return {"panda": "link0", "ur5e": "base"}[description.name]
+
+
+def _is_descendant(model: mujoco.MjModel, body: int, root: int) -> bool:
+    while body > 0:
+        if body == root:
+            return True
+        body = model.body_parentid[body]
+    return False
+
+
+@dataclass
+class SimWorld:
+    """A compiled world: MuJoCo model and data, the entity index and the robot binding."""
+
+    spec: WorldSpec
+    model: mujoco.MjModel
+    data: mujoco.MjData
+    entities: list[Entity]
+    robot: RobotBinding
+    geom_entity: np.ndarray  # entity index of each geom, -1 if none
+    _by_name: dict[str, Entity] = field(default_factory=dict, repr=False)
+
+    def __post_init__(self) -> None:
+        self._by_name = {e.name: e for e in self.entities}
+
+    def entity(self, name: str) -> Entity:
+        """The entity ``name``; raises ``KeyError`` suggesting the closest names."""
+        try:
+            return self._by_name[name]
+        except KeyError:
+            import difflib
+
+            close = difflib.get_close_matches(name, self._by_name, n=3, cutoff=0.4)
+            hint = f"; did you mean {', '.join(close)}?" if close else ""
+            raise KeyError(f"no object named {name!r} in world {self.spec.name!r}{hint}") from None
+
+    def entity_names(self, kinds: tuple[EntityKind, ...] = ("object", "furniture", "part")) -> list[str]:
+        return [e.name for e in self.entities if e.kind in kinds]
+
+
+def _support_height(world: WorldSpec, placed: dict[str, tuple[np.ndarray, float, ObjectPlacement]],
+                    placement: ObjectPlacement) -> tuple[np.ndarray, float]:
+    """World position of the object's bottom-centre and its yaw, for objects resting on other objects."""
+    base_pos, base_yaw, base = placed[placement.support]
+    c, s = math.cos(base_yaw), math.sin(base_yaw)
+    dx, dy = placement.position[:2]
+    if base.type.container and base.type.interior is not None:
+        surface = base.type.interior[0][2]
+    else:
+        surface = base.type.bounds[1][2]
+    offset = np.array([c * dx - s * dy, s * dx + c * dy, surface + 0.002])
+    return base_pos + offset, base_yaw + placement.yaw
+
+
+def _add_object(spec: mujoco.MjSpec, placement: ObjectPlacement, pos: np.ndarray, yaw: float) -> None:
+    obj = placement.type
+    quat = quat_to_mujoco(quat_from_yaw(yaw))
+    body = spec.worldbody.add_body(name=placement.name, pos=list(pos), quat=list(quat))
+    body.add_freejoint(name=f"{placement.name}/joint")
+    # Torsional friction (condim 4) keeps grasped things from spinning; rolling friction (condim 6) lets round
+    # fruit come to rest as real, slightly irregular fruit does.
+    condim = 6 if obj.round else 4
+    friction = [obj.friction, 0.01, 0.002 if obj.round else 0.0001]
+    for k, part in enumerate(obj.parts):
+        kind = getattr(mujoco.mjtGeom, f"mjGEOM_{part.kind.upper()}")
+        size = list(part.size) + [0.0] * (3 - len(part.size))
+        body.add_geom(
+            name=f"{placement.name}/g{k}",
+            type=kind,
+            size=size,
+            pos=list(part.pos),
+            quat=list(quat_to_mujoco(np.array(part.quat))),
+            rgba=list(part.rgba or obj.rgba),
+            density=obj.density,
+            condim=condim,
+            friction=friction,
+            solref=[0.004, 1.0],
+        )
+
+
+def _configure_options(spec: mujoco.MjSpec) -> None:
+    spec.option.timestep = TIMESTEP
+    spec.option.integrator = mujoco.mjtIntegrator.mjINT_IMPLICITFAST
+    spec.option.cone = mujoco.mjtCone.mjCONE_ELLIPTIC
+    spec.option.impratio = 10.0
+    spec.visual.global_.offwidth = 1920
+    spec.visual.global_.offheight = 1080
+    spec.visual.quality.shadowsize = 0
+    spec.visual.headlight.ambient = [0.35, 0.35, 0.35]
+    spec.visual.headlight.diffuse = [0.5, 0.5, 0.5]
+    spec.stat.center = [0.0, 0.0, 0.8]
+    spec.stat.extent = 2.0
+
+
+def _add_environment(spec: mujoco.MjSpec) -> None:
+    spec.add_texture(name="floor_tex", type=mujoco.mjtTexture.mjTEXTURE_2D, builtin=mujoco.mjtBuiltin.mjBUILTIN_CHECKER,
+                     rgb1=[0.32, 0.34, 0.36], rgb2=[0.26, 0.28, 0.3], width=256, height=256)
+    spec.add_material(name="floor_mat", texrepeat=[6, 6], reflectance=0.0,
+                      textures=["", "floor_tex"] + [""] * 8)
+    spec.worldbody.add_geom(name="floor", type=mujoco.mjtGeom.mjGEOM_PLANE, size=[4, 4, 0.1], material="floor_mat")
+    spec.worldbody.add_light(name="key", pos=[0.5, -0.5, 3.0], dir=[-0.2, 0.2, -1.0], diffuse=[0.6, 0.6, 0.6],
+                             castshadow=False)
+    spec.worldbody.add_light(name="fill", pos=[-1.0, 1.0, 3.0], dir=[0.3, -0.3, -1.0], diffuse=[0.35, 0.35, 0.35],
+                             castshadow=False)
+
+
+def build_world(world: WorldSpec, robot: str | None = None) -> SimWorld:
+    """Compiles ``world`` with ``robot`` (default: the world's own) into a ready-to-step :class:`SimWorld`.
+
+    The robot is at its home configuration and every object at its listed pose; nothing has been stepped yet.
+    """
+    description = get_robot(robot or world.robot)
+    spec = mujoco.MjSpec()
+    spec.modelname = world.name
+    _configure_options(spec)
+    _add_environment(spec)
+    add_table(spec, world.table)
+
+    excludes: list[tuple[str, str]] = []
+    for cabinet in world.cabinets:
+        excludes += add_cabinet(spec, cabinet, world.table.height)
+
+    robot_spec = description.build_spec()
+    mount = spec.worldbody.add_frame(
+        pos=[ROBOT_BASE_XY[0], ROBOT_BASE_XY[1], world.table.height],
+        quat=list(quat_to_mujoco(quat_from_yaw(description.mount_yaw))),
+    )
+    spec.attach(robot_spec, prefix=ROBOT_PREFIX, frame=mount)
+
+    # Drawers hold objects: their interiors need the compiled geometry, so compile the furniture first.
+    drawer_frames = _drawer_frames(spec, world) if any(o.support_kind == "inside" for o in world.objects) else {}
+    placed: dict[str, tuple[np.ndarray, float, ObjectPlacement]] = {}
+    for o in world.objects:
+        if o.support_kind == "table":
+            pos = np.array([o.position[0], o.position[1], world.table.height + 0.001])
+            yaw = o.yaw
+        elif o.support_kind == "on":
+            pos, yaw = _support_height(world, placed, o)
+        else:
+            pos, yaw = _inside_drawer(world, drawer_frames[o.support], o)
+        # The object's frame origin is its bottom centre, but part bounds may dip slightly below it.
+        pos = pos - np.array([0.0, 0.0, min(0.0, float(o.type.bounds[0][2]))])
+        _add_object(spec, o, pos, yaw)
+        placed[o.name] = (pos, yaw, o)
+
+    for a, b in excludes:
+        spec.add_exclude(bodyname1=a, bodyname2=b)
+    for camera in world.cameras:
+        add_camera(spec, camera)
+    spec.worldbody.add_camera(name="overview", pos=[1.35, -1.05, 1.95], xyaxes=[0.62, 0.78, 0, -0.38, 0.3, 0.87],
+                              fovy=50)
+
+    try:
+        model = spec.compile()
+    except ValueError as exc:
+        raise WorldFileError(world.source, "world", f"MuJoCo could not compile it: {exc}") from exc
+    data = mujoco.MjData(model)
+    binding = RobotBinding.bind(model, description)
+    data.qpos[binding.qpos] = description.home_array()
+    data.ctrl[binding.actuators] = description.home_array()
+    data.ctrl[binding.gripper_actuator] = description.gripper.open_ctrl
+    for joint, value in zip(description.gripper.joints, description.gripper.open_qpos, strict=True):
+        data.qpos[model.joint(ROBOT_PREFIX + joint).qposadr[0]] = value
+    mujoco.mj_forward(model, data)
+    entities, geom_entity = _index_entities(model, world, binding)
+    return SimWorld(world, model, data, entities, binding, geom_entity)
+
+
+def _drawer_frames(spec: mujoco.MjSpec, world: WorldSpec) -> dict[str, tuple[np.ndarray, np.ndarray, np.ndarray]]:
+    """World pose and interior box of every drawer: (position, rotation, (lower, upper) in the drawer frame)."""
+    model = spec.compile()
+    data = mujoco.MjData(model)
+    mujoco.mj_kinematics(model, data)
+    frames = {}
+    for cabinet in world.cabinets:
+        for part in cabinet.part_names():
+            if ".drawer_" in part:
+                body = data.body(part)
+                frames[part] = (body.xpos.copy(), body.xmat.reshape(3, 3).copy(), drawer_interior(model, part))
+    return frames
+
+
+def _inside_drawer(world: WorldSpec, frame, o: ObjectPlacement) -> tuple[np.ndarray, float]:
+    position, rotation, (lower, upper) = frame
+    center = (lower + upper) / 2
+    local = np.array([center[0] + o.position[0], center[1] + o.position[1], lower[2] + 0.002])
+    obj_lower, obj_upper = o.type.bounds
+    half = (obj_upper[:2] - obj_lower[:2]) / 2
+    c, s = abs(math.cos(o.yaw)), abs(math.sin(o.yaw))
+    half = np.array([c * half[0] + s * half[1], s * half[0] + c * half[1]])
+    if np.any(local[:2] - half < lower[:2] - 1e-6) or np.any(local[:2] + half > upper[:2] + 1e-6):
+        index = world.object_names().index(o.name)
+        raise WorldFileError(
+            world.source, f"objects[{index}] {o.name!r}",
+            f"does not fit inside {o.support} at offset {list(o.position)}: the drawer's interior is "
+            f"{(upper[0] - lower[0]):.3f} x {(upper[1] - lower[1]):.3f} m, the object "
+            f"{2 * half[0]:.3f} x {2 * half[1]:.3f} m",
+        )
+    yaw = math.atan2(rotation[1, 0], rotation[0, 0]) + o.yaw
+    return position + rotation @ local, yaw
+
+
+def _index_entities(model: mujoco.MjModel, world: WorldSpec,
+                    binding: RobotBinding) -> tuple[list[Entity], np.ndarray]:
+    entities: list[Entity] = []
+
+    def add(name: str, kind: EntityKind, bodies: list[int], **kwargs) -> None:
+        entities.append(Entity(len(entities), name, kind, tuple(bodies), **kwargs))
+
+    add("table", "table", [model.body("table").id], category="table")
+    for o in world.objects:
+        add(o.name, "object", [model.body(o.name).id], category=o.type.category, color=o.type.color,
+            object_type=o.type)
+    for cabinet in world.cabinets:
+        root = model.body(cabinet.name).id
+        subtree = [b for b in range(model.nbody) if _is_descendant(model, b, root)]
+        add(cabinet.name, "furniture", subtree, category="cabinet", color="white")
+        for part in cabinet.part_names():
+            body = model.body(part).id
+            joint = model.body_jntadr[body] if model.body_jntnum[body] > 0 else -1
+            category = part.split(".")[1].split("_")[0]
+            add(part, "part", [body], category=category, color="white" if category != "handle" else "gray",
+                joint=int(joint))
+    add("robot", "robot", sorted(binding.body_ids), category="robot")
+
+    # Each geom belongs to the most specific entity whose own bodies hold it (a handle, not its drawer).
+    geom_entity = np.full(model.ngeom, -1, dtype=np.int32)
+    body_owner: dict[int, int] = {}
+    for e in entities:
+        for b in e.bodies:
+            if b not in body_owner or e.kind in ("part", "object"):
+                body_owner[b] = e.index
+    for g in range(model.ngeom):
+        geom_entity[g] = body_owner.get(int(model.geom_bodyid[g]), -1)
+    return entities, geom_entity

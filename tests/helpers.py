@@ -1,0 +1,43 @@
+"""Helpers for tests: worlds built from dicts, and a small IK used only to script joint targets in tests.
+
+The project's own IK belongs to the planning layer; this damped-least-squares solver exists so that foundation
+tests can compute joint waypoints without depending on it.
+"""
+
+from __future__ import annotations
+
+import mujoco
+import numpy as np
+
+from roboscript.sim.world import SimWorld
+
+DOWN = np.array([[1.0, 0.0, 0.0], [0.0, -1.0, 0.0], [0.0, 0.0, -1.0]])  # TCP z pointing at the table
+
+
+def tcp_ik(world: SimWorld, position, rotation=DOWN, q0=None, iterations: int = 300) -> np.ndarray:
+    """Arm configuration putting the TCP at ``position`` with ``rotation`` (test helper, DLS IK)."""
+    m = world.model
+    d = mujoco.MjData(m)
+    d.qpos[:] = world.data.qpos
+    r = world.robot
+    if q0 is not None:
+        d.qpos[r.qpos] = q0
+    jacp, jacr = np.zeros((3, m.nv)), np.zeros((3, m.nv))
+    target_rot = np.asarray(rotation)
+    for _ in range(iterations):
+        mujoco.mj_kinematics(m, d)
+        mujoco.mj_comPos(m, d)
+        pos = d.site_xpos[r.tcp_site]
+        rot = d.site_xmat[r.tcp_site].reshape(3, 3)
+        err_p = np.asarray(position) - pos
+        err_r = 0.5 * sum(np.cross(rot[:, i], target_rot[:, i]) for i in range(3))
+        err = np.concatenate([err_p, err_r])
+        if np.linalg.norm(err_p) < 1e-4 and np.linalg.norm(err_r) < 1e-3:
+            break
+        mujoco.mj_jacSite(m, d, jacp, jacr, r.tcp_site)
+        jac = np.vstack([jacp, jacr])[:, r.dof]
+        dq = jac.T @ np.linalg.solve(jac @ jac.T + 1e-4 * np.eye(6), err)
+        d.qpos[r.qpos] = np.clip(d.qpos[r.qpos] + dq, r.joint_lower, r.joint_upper)
+    else:
+        raise AssertionError(f"test IK did not converge to {position}: error {np.linalg.norm(err_p):.4f} m")
+    return d.qpos[r.qpos].copy()
