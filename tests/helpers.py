@@ -37,7 +37,13 @@ def tcp_ik(world: SimWorld, position, rotation=DOWN, q0=None, iterations: int = 
         mujoco.mj_jacSite(m, d, jacp, jacr, r.tcp_site)
         jac = np.vstack([jacp, jacr])[:, r.dof]
         dq = jac.T @ np.linalg.solve(jac @ jac.T + 1e-4 * np.eye(6), err)
+        dq *= min(1.0, 0.2 / max(np.max(np.abs(dq)), 1e-12))  # small steps keep it on the seed's branch
         d.qpos[r.qpos] = np.clip(d.qpos[r.qpos] + dq, r.joint_lower, r.joint_upper)
     else:
         raise AssertionError(f"test IK did not converge to {position}: error {np.linalg.norm(err_p):.4f} m")
-    return d.qpos[r.qpos].copy()
+    q = d.qpos[r.qpos].copy()
+    seed = world.data.qpos[r.qpos] if q0 is None else np.asarray(q0)
+    # Joints that turn more than one revolution: take the solution's equivalent angle nearest the seed.
+    wrapped = seed + (q - seed + np.pi) % (2 * np.pi) - np.pi
+    ok = (wrapped >= r.joint_lower) & (wrapped <= r.joint_upper)
+    return np.where(ok, wrapped, q)

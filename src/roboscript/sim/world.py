@@ -161,6 +161,7 @@ def _add_object(spec: mujoco.MjSpec, placement: ObjectPlacement, pos: np.ndarray
 
 
 def _configure_options(spec: mujoco.MjSpec) -> None:
+    spec.compiler.degree = False  # every angle this project writes is in radians (MjSpec defaults to degrees)
     spec.option.timestep = TIMESTEP
     spec.option.integrator = mujoco.mjtIntegrator.mjINT_IMPLICITFAST
     spec.option.cone = mujoco.mjtCone.mjCONE_ELLIPTIC

@@ -1,0 +1,1 @@
+"""MuJoCo simulation: worlds, objects, furniture, cameras, control and ground truth."""

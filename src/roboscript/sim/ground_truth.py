@@ -1,0 +1,158 @@
+"""Ground-truth queries on a simulated world: poses, 3D boxes, articulation, contacts.
+
+These answer from the simulator's state, never from perception; the benchmark's checks and the ground-truth mode
+of the tool API use them. Boxes are world-axis-aligned and fitted to the geoms' own bounding boxes.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import mujoco
+import numpy as np
+
+from roboscript.geometry import Box3D, Transform
+from roboscript.sim.world import Entity, SimWorld
+
+_CORNER_SIGNS = np.array([[sx, sy, sz] for sx in (-1, 1) for sy in (-1, 1) for sz in (-1, 1)], dtype=float)
+
+
+@dataclass(frozen=True)
+class JointInfo:
+    """A furniture joint in world coordinates: ``position`` is a point on the axis (the hinge line for doors)."""
+
+    name: str
+    type: str  # "prismatic" or "revolute"
+    position: np.ndarray
+    axis: np.ndarray
+    value: float  # metres or radians from closed
+    lower: float
+    upper: float
+
+
+@dataclass(frozen=True)
+class Contact:
+    """A contact between two entities (or unnamed geoms, reported by geom name)."""
+
+    a: str
+    b: str
+    position: np.ndarray
+    normal: np.ndarray  # from a to b
+    normal_force: float
+
+
+def geoms_box(model: mujoco.MjModel, data: mujoco.MjData, geoms: np.ndarray) -> Box3D:
+    """World axis-aligned box of the given geoms: exact half-extents for primitives, whose rotated local boxes
+    would overstate them (a capsule rolled by 45 degrees by 41 percent); rotated local boxes for meshes."""
+    rot = data.geom_xmat[geoms].reshape(-1, 3, 3)
+    center = data.geom_xpos[geoms].copy()
+    size = model.geom_size[geoms]
+    types = model.geom_type[geoms]
+    half = np.zeros((len(geoms), 3))
+    G = mujoco.mjtGeom
+    for kind in np.unique(types):
+        sel = types == kind
+        r, s = rot[sel], size[sel]
+        if kind == int(G.mjGEOM_SPHERE):
+            h = np.repeat(s[:, :1], 3, axis=1)
+        elif kind == int(G.mjGEOM_BOX):
+            h = np.einsum("nij,nj->ni", np.abs(r), s)
+        elif kind == int(G.mjGEOM_ELLIPSOID):
+            h = np.sqrt(np.einsum("nij,nj->ni", r**2, s**2))
+        elif kind == int(G.mjGEOM_CAPSULE):
+            h = np.abs(r[:, :, 2]) * s[:, 1:2] + s[:, :1]
+        elif kind == int(G.mjGEOM_CYLINDER):
+            axis = r[:, :, 2]
+            h = np.abs(axis) * s[:, 1:2] + s[:, :1] * np.sqrt(np.clip(1 - axis**2, 0, 1))
+        else:  # meshes and the rest: the geom's own box, rotated
+            aabb = model.geom_aabb[geoms[sel]]
+            corners = aabb[:, None, :3] + _CORNER_SIGNS[None] * aabb[:, None, 3:]
+            world = np.einsum("nij,nkj->nki", r, corners)
+            lo, hi = world.min(axis=1), world.max(axis=1)
+            center[sel] = center[sel] + (lo + hi) / 2
+            h = (hi - lo) / 2
+        half[sel] = h
+    return Box3D((center - half).min(axis=0), (center + half).max(axis=0))
+
+
+class GroundTruth:
+    """Reads the true state of a :class:`SimWorld`."""
+
+    def __init__(self, world: SimWorld):
+        self.world = world
+        self.model, self.data = world.model, world.data
+        self._entity_geoms = {
+            e.name: np.array([g for g in range(self.model.ngeom) if self.model.geom_bodyid[g] in e.bodies], dtype=int)
+            for e in world.entities
+        }
+
+    def names(self) -> list[str]:
+        """Objects and furniture parts, as the tool API lists them."""
+        return self.world.entity_names(("object", "furniture", "part"))
+
+    def entity(self, name: str) -> Entity:
+        return self.world.entity(name)
+
+    def pose(self, name: str) -> Transform:
+        """Pose of the entity's (first) body frame; for objects, the centre of their bottom face."""
+        body = self.entity(name).bodies[0]
+        return Transform.from_mujoco(self.data.xpos[body], self.data.xquat[body])
+
+    def box(self, name: str) -> Box3D:
+        """Tight world axis-aligned box around every geom of ``name`` (exact for primitives)."""
+        geoms = self._entity_geoms[self.entity(name).name]
+        if len(geoms) == 0:
+            raise ValueError(f"{name!r} has no geometry")
+        return geoms_box(self.model, self.data, geoms)
+
+    def velocity(self, name: str) -> tuple[np.ndarray, np.ndarray]:
+        """(linear, angular) velocity of the entity's body in the world frame."""
+        body = self.entity(name).bodies[0]
+        vel = np.zeros(6)
+        mujoco.mj_objectVelocity(self.model, self.data, mujoco.mjtObj.mjOBJ_BODY, body, vel, 0)
+        return vel[3:], vel[:3]
+
+    def joint(self, name: str) -> JointInfo:
+        """The joint of a drawer or door (``cabinet.drawer_1``), or of the part a handle is on."""
+        entity = self.entity(name)
+        body = entity.bodies[0]
+        # A handle has no joint of its own: it moves with its drawer or door.
+        while self.model.body_jntnum[body] == 0 and body > 0:
+            body = self.model.body_parentid[body]
+        if body <= 0:
+            raise ValueError(f"{name!r} is not articulated; articulated parts: {self._articulated()}")
+        j = self.model.body_jntadr[body]
+        jtype = int(self.model.jnt_type[j])
+        if jtype not in (int(mujoco.mjtJoint.mjJNT_SLIDE), int(mujoco.mjtJoint.mjJNT_HINGE)):
+            raise ValueError(f"{name!r} moves freely; articulated parts: {self._articulated()}")
+        return JointInfo(
+            name=self.model.joint(j).name,
+            type="prismatic" if jtype == int(mujoco.mjtJoint.mjJNT_SLIDE) else "revolute",
+            position=self.data.xanchor[j].copy(),
+            axis=self.data.xaxis[j].copy(),
+            value=float(self.data.qpos[self.model.jnt_qposadr[j]]),
+            lower=float(self.model.jnt_range[j][0]),
+            upper=float(self.model.jnt_range[j][1]),
+        )
+
+    def _articulated(self) -> list[str]:
+        return [e.name for e in self.world.entities if e.joint >= 0]
+
+    def contacts(self, name: str | None = None) -> list[Contact]:
+        """Active contacts, optionally only those touching ``name``."""
+        out = []
+        force = np.zeros(6)
+        for i in range(self.data.ncon):
+            c = self.data.contact[i]
+            ea, eb = (self._geom_label(g) for g in c.geom)
+            if name is not None and name not in (ea, eb):
+                continue
+            mujoco.mj_contactForce(self.model, self.data, i, force)
+            out.append(Contact(ea, eb, c.pos.copy(), c.frame[:3].copy(), float(force[0])))
+        return out
+
+    def _geom_label(self, geom: int) -> str:
+        index = self.world.geom_entity[geom]
+        if index >= 0:
+            return self.world.entities[index].name
+        return self.model.geom(geom).name or f"geom {geom}"

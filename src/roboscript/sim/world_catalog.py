@@ -1,0 +1,36 @@
+"""The worlds shipped with the package (``roboscript/worlds/*.yaml``), by name."""
+
+from __future__ import annotations
+
+import difflib
+from importlib import resources
+from pathlib import Path
+
+from roboscript.sim.world_file import WorldSpec, load_world_file
+
+
+def _world_dir() -> Path:
+    return Path(str(resources.files("roboscript") / "worlds"))
+
+
+def world_names() -> list[str]:
+    """Names of the packaged worlds, sorted."""
+    return sorted(p.stem for p in _world_dir().glob("*.yaml"))
+
+
+def world_path(name: str) -> Path:
+    """The file of packaged world ``name``; raises ``KeyError`` naming the valid worlds."""
+    path = _world_dir() / f"{name}.yaml"
+    if not path.is_file():
+        close = difflib.get_close_matches(name, world_names(), n=3, cutoff=0.4)
+        hint = f"did you mean {', '.join(close)}? " if close else ""
+        raise KeyError(f"unknown world {name!r}; {hint}valid worlds: {', '.join(world_names())}")
+    return path
+
+
+def load_world(name_or_path: str | Path) -> WorldSpec:
+    """A packaged world by name, or any world file by path (anything ending in .yaml/.yml/.json)."""
+    text = str(name_or_path)
+    if text.endswith((".yaml", ".yml", ".json")) or Path(text).is_file():
+        return load_world_file(text)
+    return load_world_file(world_path(text))
