@@ -26,8 +26,11 @@ def test_packaged_worlds_are_the_six_benchmark_worlds():
 
 
 def test_unknown_object_type_names_file_entry_and_suggestion(tmp_path):
-    path = write(tmp_path, "name: w\nobjects:\n  - {name: a, type: apple, position: [0, 0]}\n"
-                           "  - {name: fruit, type: aple, position: [0.2, 0.2]}\n")
+    path = write(
+        tmp_path,
+        "name: w\nobjects:\n  - {name: a, type: apple, position: [0, 0]}\n"
+        "  - {name: fruit, type: aple, position: [0.2, 0.2]}\n",
+    )
     with pytest.raises(WorldFileError) as info:
         load_world_file(path)
     message = str(info.value)
@@ -48,8 +51,11 @@ def test_missing_objects_list_is_named(tmp_path):
 
 
 def test_overlapping_objects_are_named(tmp_path):
-    path = write(tmp_path, "name: w\nobjects:\n  - {name: a, type: apple, position: [0, 0]}\n"
-                           "  - {name: b, type: orange, position: [0.05, 0.0]}\n")
+    path = write(
+        tmp_path,
+        "name: w\nobjects:\n  - {name: a, type: apple, position: [0, 0]}\n"
+        "  - {name: b, type: orange, position: [0.05, 0.0]}\n",
+    )
     with pytest.raises(WorldFileError) as info:
         load_world_file(path)
     message = str(info.value)
@@ -59,8 +65,13 @@ def test_overlapping_objects_are_named(tmp_path):
 def test_overlap_with_furniture_and_robot_and_table_edge():
     cabinet = [{"name": "cabinet", "type": "cabinet", "position": [-0.42, 0.62]}]
     with pytest.raises(WorldFileError, match="overlaps furniture 'cabinet'"):
-        parse_world({"name": "w", "furniture": cabinet, "objects": [{"name": "a", "type": "apple",
-                                                                      "position": [-0.3, 0.6]}]})
+        parse_world(
+            {
+                "name": "w",
+                "furniture": cabinet,
+                "objects": [{"name": "a", "type": "apple", "position": [-0.3, 0.6]}],
+            }
+        )
     with pytest.raises(WorldFileError, match="overlaps the robot base"):
         parse_world({"name": "w", "objects": [{"name": "a", "type": "apple", "position": [-0.45, 0.05]}]})
     with pytest.raises(WorldFileError, match="off the table"):
@@ -78,18 +89,34 @@ def test_bad_values_are_explained():
     with pytest.raises(WorldFileError, match="unknown robot 'kuka'; valid robots: panda, ur5e"):
         parse_world({"name": "w", "robot": "kuka", "objects": []})
     with pytest.raises(WorldFileError, match="already used"):
-        parse_world({"name": "w", "objects": [{"name": "a", "type": "apple", "position": [0, 0]},
-                                              {"name": "a", "type": "apple", "position": [0.2, 0.2]}]})
+        parse_world(
+            {
+                "name": "w",
+                "objects": [
+                    {"name": "a", "type": "apple", "position": [0, 0]},
+                    {"name": "a", "type": "apple", "position": [0.2, 0.2]},
+                ],
+            }
+        )
     with pytest.raises(WorldFileError, match="must name a drawer; drawers in this world: none"):
         parse_world({"name": "w", "objects": [{"name": "a", "type": "apple", "inside": "cabinet.drawer_0"}]})
     with pytest.raises(WorldFileError, match="row kind must be 'drawer' or 'door'"):
-        parse_world({"name": "w", "objects": [], "furniture": [
-            {"name": "c", "type": "cabinet", "position": [-0.42, 0.62], "rows": ["shelf"]}]})
+        parse_world(
+            {
+                "name": "w",
+                "objects": [],
+                "furniture": [{"name": "c", "type": "cabinet", "position": [-0.42, 0.62], "rows": ["shelf"]}],
+            }
+        )
 
 
 def test_yaml_key_on_is_a_string_not_a_boolean(tmp_path):
-    path = write(tmp_path, "name: w\nobjects:\n  - {name: plate, type: white_plate, position: [0, 0]}\n"
-                           "  - {name: apple, type: apple, on: plate}\n", "ok.yaml")
+    path = write(
+        tmp_path,
+        "name: w\nobjects:\n  - {name: plate, type: white_plate, position: [0, 0]}\n"
+        "  - {name: apple, type: apple, on: plate}\n",
+        "ok.yaml",
+    )
     world = load_world_file(path)
     assert world.objects[1].support == "plate" and world.objects[1].support_kind == "on"
 

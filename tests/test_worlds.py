@@ -59,6 +59,12 @@ def test_robot_starts_at_home_with_the_gripper_open(settled):
 def test_cabinet_parts_follow_the_api_names():
     world = load_world("world_5_mug_to_cabinet")
     assert world.part_names() == [
-        "cabinet.drawer_0", "cabinet.handle_0", "cabinet.drawer_1", "cabinet.handle_1",
-        "cabinet.drawer_2", "cabinet.handle_2", "cabinet.door_0", "cabinet.handle_3",
+        "cabinet.drawer_0",
+        "cabinet.handle_0",
+        "cabinet.drawer_1",
+        "cabinet.handle_1",
+        "cabinet.drawer_2",
+        "cabinet.handle_2",
+        "cabinet.door_0",
+        "cabinet.handle_3",
     ]

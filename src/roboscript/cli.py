@@ -65,12 +65,15 @@ def cmd_render(args: argparse.Namespace) -> int:
     out = Path(args.out)
     out.mkdir(parents=True, exist_ok=True)
     started = time.perf_counter()
-    backend = MujocoBackend(args.world, robot=args.robot, seed=args.seed, randomize=args.randomize,
-                            settle=args.settle)
+    backend = MujocoBackend(args.world, robot=args.robot, seed=args.seed, randomize=args.randomize, settle=args.settle)
     world = backend.sim_world
     palette = _palette(len(world.entities))
-    meta = {"world": world.spec.name, "robot": backend.robot.name, "cameras": {},
-            "segmentation_ids": {e.index: e.name for e in world.entities}}
+    meta = {
+        "world": world.spec.name,
+        "robot": backend.robot.name,
+        "cameras": {},
+        "segmentation_ids": {e.index: e.name for e in world.entities},
+    }
     for camera in backend.camera_names():
         frame = backend.capture(camera)
         Image.fromarray(frame.rgb).save(out / f"{camera}_rgb.png")
@@ -93,8 +96,10 @@ def cmd_render(args: argparse.Namespace) -> int:
     Image.fromarray(renderer.rgb(world.data, "overview")).save(out / "overview.png")
     (out / "cameras.json").write_text(json.dumps(meta, indent=2))
     backend.close()
-    print(f"wrote {len(backend.camera_names()) * 3 + 2} images of {world.spec.name} ({backend.robot.name}) to {out} "
-          f"in {time.perf_counter() - started:.1f} s")
+    print(
+        f"wrote {len(backend.camera_names()) * 3 + 2} images of {world.spec.name} ({backend.robot.name}) to {out} "
+        f"in {time.perf_counter() - started:.1f} s"
+    )
     return 0
 
 

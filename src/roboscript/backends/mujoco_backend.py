@@ -64,7 +64,9 @@ class MujocoBackend(Backend):
 
     def execute_trajectory(self, trajectory: JointTrajectory) -> ExecutionReport:
         if trajectory.dof != self.robot.dof:
-            raise BackendError(f"trajectory has {trajectory.dof} joints, the {self.robot.name} arm has {self.robot.dof}")
+            raise BackendError(
+                f"trajectory has {trajectory.dof} joints, the {self.robot.name} arm has {self.robot.dof}"
+            )
         start = trajectory.positions[0]
         deviation = float(np.max(np.abs(start - self.joint_positions())))
         if deviation > 0.05:

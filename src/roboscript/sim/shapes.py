@@ -144,9 +144,7 @@ def arc_of_capsules(
         a = start + (k + 0.5) * step
         u = np.array([math.cos(a), 0.0, math.sin(a)]) if plane == "xz" else np.array([math.cos(a), math.sin(a), 0])
         tangent = (
-            np.array([-math.sin(a), 0.0, math.cos(a)])
-            if plane == "xz"
-            else np.array([-math.sin(a), math.cos(a), 0.0])
+            np.array([-math.sin(a), 0.0, math.cos(a)]) if plane == "xz" else np.array([-math.sin(a), math.cos(a), 0.0])
         )
         pos = np.array(center) + radius * math.cos(step / 2) * u
         # Rotate the capsule's z axis onto the tangent.

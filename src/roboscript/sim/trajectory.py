@@ -8,6 +8,7 @@ per-joint velocity and acceleration limits (the planning layer brings better tim
 from __future__ import annotations
 
 from dataclasses import dataclass
+from itertools import pairwise
 
 import numpy as np
 
@@ -52,6 +53,26 @@ class JointTrajectory:
     def dof(self) -> int:
         return self.positions.shape[1]
 
+    def sample_many(self, t: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+        """Positions, velocities and accelerations at many times at once, each (len(t), dof)."""
+        t = np.clip(np.asarray(t, dtype=float), self.times[0], self.times[-1])
+        if len(self.times) == 1:
+            n = len(t)
+            return np.repeat(self.positions, n, axis=0), np.zeros((n, self.dof)), np.zeros((n, self.dof))
+        i = np.clip(np.searchsorted(self.times, t, side="right") - 1, 0, len(self.times) - 2)
+        h = (self.times[i + 1] - self.times[i])[:, None]
+        u = ((t - self.times[i])[:, None]) / h
+        p0, p1 = self.positions[i], self.positions[i + 1]
+        m0, m1 = self.velocities[i] * h, self.velocities[i + 1] * h
+        u2, u3 = u * u, u * u * u
+        q = (2 * u3 - 3 * u2 + 1) * p0 + (u3 - 2 * u2 + u) * m0 + (-2 * u3 + 3 * u2) * p1 + (u3 - u2) * m1
+        dq = ((6 * u2 - 6 * u) * p0 + (3 * u2 - 4 * u + 1) * m0 + (-6 * u2 + 6 * u) * p1 + (3 * u2 - 2 * u) * m1) / h
+        ddq = ((12 * u - 6) * p0 + (6 * u - 4) * m0 + (-12 * u + 6) * p1 + (6 * u - 2) * m1) / (h * h)
+        at_end = t >= self.times[-1]
+        dq[at_end] = 0.0
+        ddq[at_end] = 0.0
+        return q, dq, ddq
+
     def sample(self, t: float) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
         """Position, velocity and acceleration at time ``t`` (clamped to the trajectory's span)."""
         if t <= self.times[0]:
@@ -91,14 +112,16 @@ def min_jerk_through(
     amax = np.asarray(max_acceleration) * speed_scale
     times, positions, velocities = [0.0], [waypoints[0]], [np.zeros(waypoints.shape[1])]
     t0 = 0.0
-    for a, b in zip(waypoints[:-1], waypoints[1:], strict=True):
+    for a, b in pairwise(waypoints):
         delta = b - a
         dist = np.abs(delta)
-        duration = float(max(
-            np.max(_MIN_JERK_PEAK_VELOCITY * dist / vmax),
-            np.max(np.sqrt(_MIN_JERK_PEAK_ACCELERATION * dist / amax)),
-            sample_dt,
-        ))
+        duration = float(
+            max(
+                np.max(_MIN_JERK_PEAK_VELOCITY * dist / vmax),
+                np.max(np.sqrt(_MIN_JERK_PEAK_ACCELERATION * dist / amax)),
+                sample_dt,
+            )
+        )
         n = max(2, int(np.ceil(duration / sample_dt)))
         for k in range(1, n + 1):
             u = k / n

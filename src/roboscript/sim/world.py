@@ -120,8 +120,9 @@ class SimWorld:
         return [e.name for e in self.entities if e.kind in kinds]
 
 
-def _support_height(world: WorldSpec, placed: dict[str, tuple[np.ndarray, float, ObjectPlacement]],
-                    placement: ObjectPlacement) -> tuple[np.ndarray, float]:
+def _support_height(
+    world: WorldSpec, placed: dict[str, tuple[np.ndarray, float, ObjectPlacement]], placement: ObjectPlacement
+) -> tuple[np.ndarray, float]:
     """World position of the object's bottom-centre and its yaw, for objects resting on other objects."""
     base_pos, base_yaw, base = placed[placement.support]
     c, s = math.cos(base_yaw), math.sin(base_yaw)
@@ -176,15 +177,23 @@ def _configure_options(spec: mujoco.MjSpec) -> None:
 
 
 def _add_environment(spec: mujoco.MjSpec) -> None:
-    spec.add_texture(name="floor_tex", type=mujoco.mjtTexture.mjTEXTURE_2D, builtin=mujoco.mjtBuiltin.mjBUILTIN_CHECKER,
-                     rgb1=[0.32, 0.34, 0.36], rgb2=[0.26, 0.28, 0.3], width=256, height=256)
-    spec.add_material(name="floor_mat", texrepeat=[6, 6], reflectance=0.0,
-                      textures=["", "floor_tex"] + [""] * 8)
+    spec.add_texture(
+        name="floor_tex",
+        type=mujoco.mjtTexture.mjTEXTURE_2D,
+        builtin=mujoco.mjtBuiltin.mjBUILTIN_CHECKER,
+        rgb1=[0.32, 0.34, 0.36],
+        rgb2=[0.26, 0.28, 0.3],
+        width=256,
+        height=256,
+    )
+    spec.add_material(name="floor_mat", texrepeat=[6, 6], reflectance=0.0, textures=["", "floor_tex"] + [""] * 8)
     spec.worldbody.add_geom(name="floor", type=mujoco.mjtGeom.mjGEOM_PLANE, size=[4, 4, 0.1], material="floor_mat")
-    spec.worldbody.add_light(name="key", pos=[0.5, -0.5, 3.0], dir=[-0.2, 0.2, -1.0], diffuse=[0.6, 0.6, 0.6],
-                             castshadow=False)
-    spec.worldbody.add_light(name="fill", pos=[-1.0, 1.0, 3.0], dir=[0.3, -0.3, -1.0], diffuse=[0.35, 0.35, 0.35],
-                             castshadow=False)
+    spec.worldbody.add_light(
+        name="key", pos=[0.5, -0.5, 3.0], dir=[-0.2, 0.2, -1.0], diffuse=[0.6, 0.6, 0.6], castshadow=False
+    )
+    spec.worldbody.add_light(
+        name="fill", pos=[-1.0, 1.0, 3.0], dir=[0.3, -0.3, -1.0], diffuse=[0.35, 0.35, 0.35], castshadow=False
+    )
 
 
 def build_world(world: WorldSpec, robot: str | None = None) -> SimWorld:
@@ -230,8 +239,9 @@ def build_world(world: WorldSpec, robot: str | None = None) -> SimWorld:
         spec.add_exclude(bodyname1=a, bodyname2=b)
     for camera in world.cameras:
         add_camera(spec, camera)
-    spec.worldbody.add_camera(name="overview", pos=[1.35, -1.05, 1.95], xyaxes=[0.62, 0.78, 0, -0.38, 0.3, 0.87],
-                              fovy=50)
+    spec.worldbody.add_camera(
+        name="overview", pos=[1.35, -1.05, 1.95], xyaxes=[0.62, 0.78, 0, -0.38, 0.3, 0.87], fovy=50
+    )
 
     try:
         model = spec.compile()
@@ -259,7 +269,11 @@ def _drawer_frames(spec: mujoco.MjSpec, world: WorldSpec) -> dict[str, tuple[np.
         for part in cabinet.part_names():
             if ".drawer_" in part:
                 body = data.body(part)
-                frames[part] = (body.xpos.copy(), body.xmat.reshape(3, 3).copy(), drawer_interior(model, part))
+                frames[part] = (
+                    body.xpos.copy(),
+                    body.xmat.reshape(3, 3).copy(),
+                    drawer_interior(model, part),
+                )
     return frames
 
 
@@ -274,7 +288,8 @@ def _inside_drawer(world: WorldSpec, frame, o: ObjectPlacement) -> tuple[np.ndar
     if np.any(local[:2] - half < lower[:2] - 1e-6) or np.any(local[:2] + half > upper[:2] + 1e-6):
         index = world.object_names().index(o.name)
         raise WorldFileError(
-            world.source, f"objects[{index}] {o.name!r}",
+            world.source,
+            f"objects[{index}] {o.name!r}",
             f"does not fit inside {o.support} at offset {list(o.position)}: the drawer's interior is "
             f"{(upper[0] - lower[0]):.3f} x {(upper[1] - lower[1]):.3f} m, the object "
             f"{2 * half[0]:.3f} x {2 * half[1]:.3f} m",
@@ -283,8 +298,7 @@ def _inside_drawer(world: WorldSpec, frame, o: ObjectPlacement) -> tuple[np.ndar
     return position + rotation @ local, yaw
 
 
-def _index_entities(model: mujoco.MjModel, world: WorldSpec,
-                    binding: RobotBinding) -> tuple[list[Entity], np.ndarray]:
+def _index_entities(model: mujoco.MjModel, world: WorldSpec, binding: RobotBinding) -> tuple[list[Entity], np.ndarray]:
     entities: list[Entity] = []
 
     def add(name: str, kind: EntityKind, bodies: list[int], **kwargs) -> None:
@@ -292,8 +306,14 @@ def _index_entities(model: mujoco.MjModel, world: WorldSpec,
 
     add("table", "table", [model.body("table").id], category="table")
     for o in world.objects:
-        add(o.name, "object", [model.body(o.name).id], category=o.type.category, color=o.type.color,
-            object_type=o.type)
+        add(
+            o.name,
+            "object",
+            [model.body(o.name).id],
+            category=o.type.category,
+            color=o.type.color,
+            object_type=o.type,
+        )
     for cabinet in world.cabinets:
         root = model.body(cabinet.name).id
         subtree = [b for b in range(model.nbody) if _is_descendant(model, b, root)]
@@ -302,8 +322,14 @@ def _index_entities(model: mujoco.MjModel, world: WorldSpec,
             body = model.body(part).id
             joint = model.body_jntadr[body] if model.body_jntnum[body] > 0 else -1
             category = part.split(".")[1].split("_")[0]
-            add(part, "part", [body], category=category, color="white" if category != "handle" else "gray",
-                joint=int(joint))
+            add(
+                part,
+                "part",
+                [body],
+                category=category,
+                color="white" if category != "handle" else "gray",
+                joint=int(joint),
+            )
     add("robot", "robot", sorted(binding.body_ids), category="robot")
 
     # Each geom belongs to the most specific entity whose own bodies hold it (a handle, not its drawer).

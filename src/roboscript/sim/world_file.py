@@ -110,8 +110,11 @@ class WorldSpec:
             except WorldFileError:
                 continue
             return candidate
-        raise WorldFileError(self.source, "randomize", f"no overlap-free layout found in 100 draws with seed {seed}; "
-                             "reduce randomize.position or randomize.yaw")
+        raise WorldFileError(
+            self.source,
+            "randomize",
+            f"no overlap-free layout found in 100 draws with seed {seed}; reduce randomize.position or randomize.yaw",
+        )
 
 
 # ---------------------------------------------------------------------------------------------------------------
@@ -243,8 +246,10 @@ def _parse_objects(source: str, items: Any, part_names: set[str]) -> tuple[Objec
         if "on" in r.data:
             support, kind = r.string("on"), "on"
             if support not in seen:
-                r.fail(f"'on: {support}' must name an object listed before this one; listed so far: "
-                       f"{', '.join(sorted(seen)) or 'none'}")
+                r.fail(
+                    f"'on: {support}' must name an object listed before this one; listed so far: "
+                    f"{', '.join(sorted(seen)) or 'none'}"
+                )
         elif "inside" in r.data:
             support, kind = r.string("inside"), "inside"
             drawers = sorted(p for p in part_names if ".drawer_" in p)
@@ -343,7 +348,7 @@ _Yaml12Loader.add_implicit_resolver(
 
 def load_yaml(text: str):
     """Parses YAML text with YAML 1.2 booleans (see :class:`_Yaml12Loader`)."""
-    return yaml.load(text, Loader=_Yaml12Loader)  # noqa: S506 - a SafeLoader subclass
+    return yaml.load(text, Loader=_Yaml12Loader)
 
 
 def load_world_file(path: str | Path) -> WorldSpec:
@@ -412,28 +417,37 @@ def _check_layout(world: WorldSpec) -> None:
         if np.any(np.abs(corners[:, 0]) > table.length / 2 + 0.02) or np.any(
             np.abs(corners[:, 1]) > table.width / 2 + 0.02
         ):
-            raise WorldFileError(world.source, f"furniture[{i}] {world.cabinets[i].name!r}",
-                                 "does not fit on the table")
+            raise WorldFileError(
+                world.source, f"furniture[{i}] {world.cabinets[i].name!r}", "does not fit on the table"
+            )
         for other in [robot, *furniture[:i]]:
             if _overlap(c, other, OVERLAP_MARGIN):
-                raise WorldFileError(world.source, f"furniture[{i}] {world.cabinets[i].name!r}",
-                                     f"overlaps {other.label}")
+                raise WorldFileError(
+                    world.source, f"furniture[{i}] {world.cabinets[i].name!r}", f"overlaps {other.label}"
+                )
     by_support: dict[str, list[tuple[ObjectPlacement, _Footprint]]] = {}
     for o in world.objects:
         fp = _object_footprint(o, np.array(o.position[:2]))
         if o.support_kind == "table":
             corners = fp.corners()
             if np.any(np.abs(corners[:, 0]) > table.length / 2) or np.any(np.abs(corners[:, 1]) > table.width / 2):
-                raise WorldFileError(world.source, _entry(world, o.name),
-                                     f"position {list(o.position)} puts it off the table "
-                                     f"(x within +-{table.length / 2}, y within +-{table.width / 2})")
+                raise WorldFileError(
+                    world.source,
+                    _entry(world, o.name),
+                    f"position {list(o.position)} puts it off the table "
+                    f"(x within +-{table.length / 2}, y within +-{table.width / 2})",
+                )
             for other in [robot, *furniture]:
                 if _overlap(fp, other, OVERLAP_MARGIN):
-                    raise WorldFileError(world.source, _entry(world, o.name),
-                                         f"at {list(o.position)} overlaps {other.label}")
+                    raise WorldFileError(
+                        world.source, _entry(world, o.name), f"at {list(o.position)} overlaps {other.label}"
+                    )
         for other_o, other_fp in by_support.get(o.support, []):
             if _overlap(fp, other_fp, OVERLAP_MARGIN):
-                raise WorldFileError(world.source, _entry(world, o.name),
-                                     f"at {list(o.position)} overlaps objects {other_o.name!r} at "
-                                     f"{list(other_o.position)} (both on {o.support})")
+                raise WorldFileError(
+                    world.source,
+                    _entry(world, o.name),
+                    f"at {list(o.position)} overlaps objects {other_o.name!r} at "
+                    f"{list(other_o.position)} (both on {o.support})",
+                )
         by_support.setdefault(o.support, []).append((o, fp))

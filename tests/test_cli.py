@@ -1,0 +1,63 @@
+import json
+import subprocess
+import sys
+
+import numpy as np
+from PIL import Image
+
+from roboscript.cli import main
+
+
+def test_worlds_lists_the_six_worlds(capsys):
+    assert main(["worlds"]) == 0
+    out = capsys.readouterr().out
+    assert out.count("world_") >= 6 and "cabinet.drawer_1" in out
+
+
+def test_objects_lists_at_least_40_types_with_category_and_colour(capsys):
+    assert main(["objects"]) == 0
+    rows = [line for line in capsys.readouterr().out.splitlines()[1:] if line.strip()]
+    assert len(rows) >= 40
+    assert any(r.startswith("footed_bowl") and "(container)" in r for r in rows)
+
+
+def test_render_writes_every_camera_and_a_top_view(tmp_path):
+    out = tmp_path / "render"
+    result = subprocess.run(
+        [
+            sys.executable,
+            "-m",
+            "roboscript.cli",
+            "render",
+            "world_2_pick_and_place",
+            "--robot",
+            "ur5e",
+            "--out",
+            str(out),
+            "--settle",
+            "0.2",
+        ],
+        capture_output=True,
+        text=True,
+        timeout=300,
+    )
+    assert result.returncode == 0, result.stderr
+    meta = json.loads((out / "cameras.json").read_text())
+    assert meta["robot"] == "ur5e" and set(meta["cameras"]) == {"camera_left", "camera_right", "camera_top"}
+    for camera in meta["cameras"]:
+        rgb = np.asarray(Image.open(out / f"{camera}_rgb.png"))
+        depth = np.asarray(Image.open(out / f"{camera}_depth.png"))
+        assert rgb.shape == (480, 640, 3) and depth.dtype == np.uint16 and depth.max() > 500
+        assert (out / f"{camera}_seg.png").is_file()
+        seg = np.load(out / f"{camera}_seg.npy")
+        names = {meta["segmentation_ids"][str(i)] for i in np.unique(seg) if i >= 0}
+        assert "apple" in names or camera != "camera_top"
+    assert (out / "top_view.png").is_file() and (out / "overview.png").is_file()
+
+
+def test_bad_world_file_fails_with_its_message(tmp_path, capsys):
+    bad = tmp_path / "bad.yaml"
+    bad.write_text("name: w\nobjects:\n  - {name: a, type: teapot, position: [0, 0]}\n")
+    assert main(["render", str(bad), "--out", str(tmp_path / "o")]) == 2
+    err = capsys.readouterr().err
+    assert "bad.yaml" in err and "objects[0] 'a'" in err and "unknown object type 'teapot'" in err
