@@ -75,20 +75,10 @@ class JointTrajectory:
 
     def sample(self, t: float) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
         """Position, velocity and acceleration at time ``t`` (clamped to the trajectory's span)."""
+        q, dq, ddq = self.sample_many(np.array([t]))
         if t <= self.times[0]:
-            return self.positions[0].copy(), np.zeros(self.dof), np.zeros(self.dof)
-        if t >= self.times[-1]:
-            return self.positions[-1].copy(), np.zeros(self.dof), np.zeros(self.dof)
-        i = int(np.searchsorted(self.times, t, side="right")) - 1
-        h = self.times[i + 1] - self.times[i]
-        u = (t - self.times[i]) / h
-        p0, p1 = self.positions[i], self.positions[i + 1]
-        m0, m1 = self.velocities[i] * h, self.velocities[i + 1] * h
-        u2, u3 = u * u, u * u * u
-        q = (2 * u3 - 3 * u2 + 1) * p0 + (u3 - 2 * u2 + u) * m0 + (-2 * u3 + 3 * u2) * p1 + (u3 - u2) * m1
-        dq = ((6 * u2 - 6 * u) * p0 + (3 * u2 - 4 * u + 1) * m0 + (-6 * u2 + 6 * u) * p1 + (3 * u2 - 2 * u) * m1) / h
-        ddq = ((12 * u - 6) * p0 + (6 * u - 4) * m0 + (-12 * u + 6) * p1 + (6 * u - 2) * m1) / (h * h)
-        return q, dq, ddq
+            return q[0], np.zeros(self.dof), np.zeros(self.dof)
+        return q[0], dq[0], ddq[0]
 
 
 def min_jerk_through(
