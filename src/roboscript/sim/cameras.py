@@ -40,8 +40,13 @@ class CameraSpec:
 
     def intrinsics(self) -> np.ndarray:
         """The 3x3 pinhole matrix K for this camera's resolution and vertical field of view."""
-        f = self.height / 2 / math.tan(math.radians(self.fovy) / 2)
-        return np.array([[f, 0, self.width / 2], [0, f, self.height / 2], [0, 0, 1.0]])
+        return pinhole_intrinsics(self.fovy, self.width, self.height)
+
+
+def pinhole_intrinsics(fovy_degrees: float, width: int, height: int) -> np.ndarray:
+    """The 3x3 pinhole matrix K of a camera with square pixels and vertical field of view ``fovy_degrees``."""
+    f = height / 2 / math.tan(math.radians(fovy_degrees) / 2)
+    return np.array([[f, 0, width / 2], [0, f, height / 2], [0, 0, 1.0]])
 
 
 def default_camera_rig() -> tuple[CameraSpec, ...]:
@@ -91,9 +96,6 @@ class Renderer:
         self._geom_to_entity = np.asarray(geom_to_entity, dtype=np.int32)
         self.width, self.height = width, height
         self._renderer = mujoco.Renderer(model, height=height, width=width)
-        # Shadows and reflections cost 6-10x the render time on a CPU rasteriser and help no perception code.
-        self._renderer.scene.flags[mujoco.mjtRndFlag.mjRND_SHADOW] = False
-        self._renderer.scene.flags[mujoco.mjtRndFlag.mjRND_REFLECTION] = False
         self._option = mujoco.MjvOption()
 
     def close(self) -> None:
@@ -101,6 +103,7 @@ class Renderer:
 
     def _update(self, data: mujoco.MjData, camera: str | int | mujoco.MjvCamera) -> None:
         self._renderer.update_scene(data, camera=camera, scene_option=self._option)
+        # Shadows and reflections cost 6-10x the render time on a CPU rasteriser and help no perception code.
         self._renderer.scene.flags[mujoco.mjtRndFlag.mjRND_SHADOW] = False
         self._renderer.scene.flags[mujoco.mjtRndFlag.mjRND_REFLECTION] = False
 
@@ -142,9 +145,7 @@ class Renderer:
                 f"camera {camera!r} is {spec.width}x{spec.height} but this renderer renders "
                 f"{self.width}x{self.height}; create a Renderer of that size"
             )
-        fovy = float(self._model.cam(camera).fovy[0])
-        f = self.height / 2 / math.tan(math.radians(fovy) / 2)
-        intrinsics = np.array([[f, 0, self.width / 2], [0, f, self.height / 2], [0, 0, 1.0]])
+        intrinsics = pinhole_intrinsics(float(self._model.cam(camera).fovy[0]), self.width, self.height)
         return CameraFrame(
             name=camera,
             rgb=self.rgb(data, camera),

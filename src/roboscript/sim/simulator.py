@@ -64,7 +64,6 @@ class Simulator:
         self._mqacc = np.zeros(self.model.nv)
         lo, hi = self.model.actuator_ctrlrange[self.robot.actuators].T
         self._ctrl_lo, self._ctrl_hi = lo, hi
-        self._gripper_command = 0.0
         # Arm elements are contiguous in every model built here; slices index much faster than index arrays.
         self._arm_ctrl = _as_slice(self.robot.actuators)
         self._arm_dof = _as_slice(self.robot.dof)
@@ -115,17 +114,23 @@ class Simulator:
 
     def hold(self, q: np.ndarray) -> None:
         """Makes ``q`` the arm's set-point, at rest."""
-        self._command(np.asarray(q, dtype=float), np.zeros(len(q)), np.zeros(len(q)))
+        q = np.asarray(q, dtype=float)
+        self._apply(self._servo_ctrl(q, np.zeros_like(q)), np.zeros_like(q))
 
-    def _command(self, q: np.ndarray, qd: np.ndarray, qdd: np.ndarray) -> None:
+    def _servo_ctrl(self, q: np.ndarray, qd: np.ndarray) -> np.ndarray:
+        """Servo commands for set-points ``q``, ``qd`` (one row or many).
+
+        Position servo force = kp (ctrl - q) - kv qdot; ctrl = q* + kv/kp qd* makes it kp e + kv de/dt.
+        """
         r = self.robot
-        # Position servo force = kp (ctrl - q) - kv qdot; ctrl = q* + kv/kp qd* makes it kp e + kv de/dt.
-        ctrl = q + (r.kv / r.kp) * qd
-        self.data.ctrl[r.actuators] = np.clip(ctrl, self._ctrl_lo, self._ctrl_hi)
-        self._qacc[:] = 0.0
-        self._qacc[r.dof] = qdd
+        return np.clip(q + (r.kv / r.kp) * qd, self._ctrl_lo, self._ctrl_hi)
+
+    def _apply(self, ctrl: np.ndarray, qdd: np.ndarray) -> None:
+        """Writes servo commands and the inertial feed-forward ``M(q) qdd`` for the next tick."""
+        self.data.ctrl[self._arm_ctrl] = ctrl
+        self._qacc[self._arm_dof] = qdd
         mujoco.mj_mulM(self.model, self.data, self._mqacc, self._qacc)
-        self.data.qfrc_applied[r.dof] = self._mqacc[r.dof]
+        self.data.qfrc_applied[self._arm_dof] = self._mqacc[self._arm_dof]
 
     def _tick(self) -> None:
         mujoco.mj_step(self.model, self.data, nstep=self.control_stride)
@@ -138,8 +143,16 @@ class Simulator:
         for _ in range(n):
             self._tick()
 
-    def execute(self, trajectory: JointTrajectory, settle: float = 0.3, monitor_every: int = 5) -> ExecutionReport:
+    def execute(
+        self,
+        trajectory: JointTrajectory,
+        settle: float = 0.3,
+        monitor_every: int = 5,
+        max_start_deviation: float = 0.05,
+    ) -> ExecutionReport:
         """Tracks ``trajectory`` from the current time, then holds its end for up to ``settle`` seconds.
+
+        The trajectory must start within ``max_start_deviation`` radians of the arm's configuration.
 
         Set-points for every control tick are computed up front, so the loop does little besides stepping.
         Joint error is measured on every tick; TCP error (actual TCP against forward kinematics of the set-point)
@@ -148,6 +161,12 @@ class Simulator:
         r = self.robot
         if trajectory.dof != len(r.qpos):
             raise ValueError(f"trajectory has {trajectory.dof} joints, the {r.description.name} arm has {len(r.qpos)}")
+        deviation = float(np.max(np.abs(trajectory.positions[0] - self.joint_positions())))
+        if deviation > max_start_deviation:
+            raise ValueError(
+                f"trajectory starts {deviation:.3f} rad away from the current configuration; it must start at "
+                f"the robot's joint positions {np.round(self.joint_positions(), 4).tolist()}"
+            )
         bad = np.any(
             (trajectory.positions < r.joint_lower - 1e-6) | (trajectory.positions > r.joint_upper + 1e-6),
             axis=1,
@@ -162,25 +181,17 @@ class Simulator:
         tick = self.model.opt.timestep * self.control_stride
         n = max(1, int(np.ceil(trajectory.duration / tick - 1e-9)))
         q_set, qd_set, qdd_set = trajectory.sample_many(np.arange(1, n + 1) * tick)
-        ctrl = np.clip(q_set + (r.kv / r.kp) * qd_set, self._ctrl_lo, self._ctrl_hi)
+        ctrl = self._servo_ctrl(q_set, qd_set)
         actual_q = np.empty_like(q_set)
         monitored = np.arange(monitor_every - 1, n, monitor_every)
         actual_tcp = np.empty((len(monitored), 3))
-        ctrl_idx, dof_idx, qpos_idx = self._arm_ctrl, self._arm_dof, self._arm_qpos
-        data, model, nstep = self.data, self.model, self.control_stride
-        qacc, mqacc, site = self._qacc, self._mqacc, r.tcp_site
         start, j = self.time, 0
         for k in range(n):
-            data.ctrl[ctrl_idx] = ctrl[k]
-            qacc[dof_idx] = qdd_set[k]
-            mujoco.mj_mulM(model, data, mqacc, qacc)
-            data.qfrc_applied[dof_idx] = mqacc[dof_idx]
-            mujoco.mj_step(model, data, nstep=nstep)
-            for callback in self._callbacks:
-                callback(self)
-            actual_q[k] = data.qpos[qpos_idx]
+            self._apply(ctrl[k], qdd_set[k])
+            self._tick()
+            actual_q[k] = self.data.qpos[self._arm_qpos]
             if j < len(monitored) and monitored[j] == k:
-                actual_tcp[j] = data.site_xpos[site]
+                actual_tcp[j] = self.data.site_xpos[r.tcp_site]
                 j += 1
         final = trajectory.positions[-1]
         self.hold(final)
@@ -204,7 +215,6 @@ class Simulator:
             raise ValueError(f"gripper command must be within 0 (open) and 1 (closed), got {closed}")
         g = self.robot.description.gripper
         self.data.ctrl[self.robot.gripper_actuator] = g.open_ctrl + closed * (g.closed_ctrl - g.open_ctrl)
-        self._gripper_command = closed
         start = self.time
         tick = self.model.opt.timestep * self.control_stride
         widths = [self.gripper_width()]

@@ -121,7 +121,7 @@ class SimWorld:
 
 
 def _support_height(
-    world: WorldSpec, placed: dict[str, tuple[np.ndarray, float, ObjectPlacement]], placement: ObjectPlacement
+    placed: dict[str, tuple[np.ndarray, float, ObjectPlacement]], placement: ObjectPlacement
 ) -> tuple[np.ndarray, float]:
     """World position of the object's bottom-centre and its yaw, for objects resting on other objects."""
     base_pos, base_yaw, base = placed[placement.support]
@@ -227,7 +227,7 @@ def build_world(world: WorldSpec, robot: str | None = None) -> SimWorld:
             pos = np.array([o.position[0], o.position[1], world.table.height + 0.001])
             yaw = o.yaw
         elif o.support_kind == "on":
-            pos, yaw = _support_height(world, placed, o)
+            pos, yaw = _support_height(placed, o)
         else:
             pos, yaw = _inside_drawer(world, drawer_frames[o.support], o)
         # The object's frame origin is its bottom centre, but part bounds may dip slightly below it.
