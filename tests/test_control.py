@@ -143,3 +143,29 @@ def test_trajectory_errors_are_explained():
         backend.execute_trajectory(JointTrajectory(np.array([0.0, 1.0]), np.zeros((2, 6)), np.zeros((2, 6))))
     with pytest.raises(ValueError, match=r"within 0 \(open\) and 1 \(closed\)"):
         backend.set_gripper(1.5)
+
+
+def test_objects_at_rest_sleep_and_wake_when_touched_or_moved():
+    backend = MujocoBackend(cube_world(), robot="panda", settle=0.0)
+    sim, model, data = backend.simulator, backend.sim_world.model, backend.sim_world.data
+    assert sim.sleeping_enabled
+    backend.wait(1.5)
+    cube = model.body("cube")
+    cube_tree = model.body_treeid[cube.id]
+    assert data.tree_asleep[cube_tree] >= 0, "a cube at rest on the table should be asleep"
+    # The arm never sleeps, and set-point kinematics stays exact while the rest of the world sleeps.
+    q = backend.joint_positions()
+    np.testing.assert_allclose(sim.tcp_position_at(q), sim.tcp_position(), atol=1e-9)
+    # Moving a sleeping body by hand wakes it: it falls back onto the table.
+    adr = model.jnt_qposadr[model.body_jntadr[cube.id]]
+    data.qpos[adr + 2] += 0.05
+    backend.wait(0.5)
+    assert backend.ground_truth.pose("cube").position[2] == pytest.approx(TABLE, abs=0.005)
+
+
+def test_sleeping_can_be_switched_off():
+    backend = MujocoBackend(cube_world(), robot="panda", settle=0.0)
+    backend.simulator.sleeping_enabled = False
+    backend.wait(1.5)
+    model, data = backend.sim_world.model, backend.sim_world.data
+    assert data.tree_asleep[model.body_treeid[model.body("cube").id]] < 0

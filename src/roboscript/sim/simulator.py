@@ -60,6 +60,9 @@ class Simulator:
         self.control_stride = control_stride
         self._callbacks: list[StepCallback] = []
         self._scratch = mujoco.MjData(self.model)  # for forward kinematics of set-points
+        # With sleeping enabled, kinematics only visits bodies marked awake; a fresh MjData has that mark set by
+        # its first mj_forward. Nothing ever steps the scratch data, so every tree in it stays awake.
+        mujoco.mj_forward(self.model, self._scratch)
         self._qacc = np.zeros(self.model.nv)
         self._mqacc = np.zeros(self.model.nv)
         lo, hi = self.model.actuator_ctrlrange[self.robot.actuators].T
@@ -100,6 +103,18 @@ class Simulator:
         a, b = (self.data.xpos[i] for i in self.robot.finger_bodies)
         closing_axis = self.tcp_rotation()[:, 1]
         return float(abs(np.dot(a - b, closing_axis)) - self.robot.description.gripper.width_offset)
+
+    @property
+    def sleeping_enabled(self) -> bool:
+        """Whether bodies at rest may sleep (skip collision and constraint work until touched); on by default."""
+        return bool(self.model.opt.enableflags & mujoco.mjtEnableBit.mjENBL_SLEEP)
+
+    @sleeping_enabled.setter
+    def sleeping_enabled(self, enabled: bool) -> None:
+        flag = int(mujoco.mjtEnableBit.mjENBL_SLEEP)
+        self.model.opt.enableflags = (
+            (self.model.opt.enableflags | flag) if enabled else (self.model.opt.enableflags & ~flag)
+        )
 
     # --- callbacks -----------------------------------------------------------------------------------------
 

@@ -167,6 +167,9 @@ def _configure_options(spec: mujoco.MjSpec) -> None:
     spec.option.integrator = mujoco.mjtIntegrator.mjINT_IMPLICITFAST
     spec.option.cone = mujoco.mjtCone.mjCONE_ELLIPTIC
     spec.option.impratio = 10.0
+    # Objects at rest sleep: a resting tree costs no collision or constraint work until something touches it,
+    # which roughly doubles the speed of a cluttered table. Actuated trees (the arm) never sleep.
+    spec.option.enableflags |= mujoco.mjtEnableBit.mjENBL_SLEEP
     spec.visual.global_.offwidth = 1920
     spec.visual.global_.offheight = 1080
     spec.visual.quality.shadowsize = 0
