@@ -95,6 +95,11 @@ class Transform:
     def from_mujoco(position: np.ndarray, quat_wxyz: np.ndarray) -> Transform:
         return Transform(np.array(position, dtype=float), quat_from_mujoco(quat_wxyz))
 
+    @staticmethod
+    def from_rotation(position: np.ndarray, rotation: np.ndarray) -> Transform:
+        """From a position and a 3x3 rotation matrix."""
+        return Transform(np.array(position, dtype=float), matrix_to_quat(np.asarray(rotation, dtype=float)))
+
     @property
     def rotation(self) -> np.ndarray:
         return quat_to_matrix(self.quaternion)

@@ -13,7 +13,7 @@ from typing import Literal
 import mujoco
 import numpy as np
 
-from roboscript.geometry import quat_from_yaw, quat_to_mujoco
+from roboscript.geometry import Transform, quat_from_yaw, quat_to_mujoco
 from roboscript.robots import ROBOT_PREFIX, RobotDescription, get_robot
 from roboscript.sim.cameras import add_camera
 from roboscript.sim.furniture import add_cabinet, add_table, drawer_interior
@@ -161,7 +161,8 @@ def _add_object(spec: mujoco.MjSpec, placement: ObjectPlacement, pos: np.ndarray
         )
 
 
-def _configure_options(spec: mujoco.MjSpec) -> None:
+def configure_options(spec: mujoco.MjSpec) -> None:
+    """Physics (and rendering) options of every world; robots attached later keep the world's."""
     spec.compiler.degree = False  # every angle this project writes is in radians (MjSpec defaults to degrees)
     spec.option.timestep = TIMESTEP
     spec.option.integrator = mujoco.mjtIntegrator.mjINT_IMPLICITFAST
@@ -199,6 +200,19 @@ def _add_environment(spec: mujoco.MjSpec) -> None:
     )
 
 
+def robot_mount(world: WorldSpec, description: RobotDescription) -> Transform:
+    """Where the robot's base frame is: on the table at the conventional spot, turned by the robot's mount yaw."""
+    return Transform(
+        np.array([ROBOT_BASE_XY[0], ROBOT_BASE_XY[1], world.table.height]), quat_from_yaw(description.mount_yaw)
+    )
+
+
+def attach_robot(spec: mujoco.MjSpec, description: RobotDescription, mount: Transform) -> None:
+    """Adds the robot (names prefixed ``robot/``) to ``spec`` with its base frame at ``mount``."""
+    frame = spec.worldbody.add_frame(pos=list(mount.position), quat=list(quat_to_mujoco(mount.quaternion)))
+    spec.attach(description.build_spec(), prefix=ROBOT_PREFIX, frame=frame)
+
+
 def build_world(world: WorldSpec, robot: str | None = None) -> SimWorld:
     """Compiles ``world`` with ``robot`` (default: the world's own) into a ready-to-step :class:`SimWorld`.
 
@@ -207,7 +221,7 @@ def build_world(world: WorldSpec, robot: str | None = None) -> SimWorld:
     description = get_robot(robot or world.robot)
     spec = mujoco.MjSpec()
     spec.modelname = world.name
-    _configure_options(spec)
+    configure_options(spec)
     _add_environment(spec)
     add_table(spec, world.table)
 
@@ -215,12 +229,7 @@ def build_world(world: WorldSpec, robot: str | None = None) -> SimWorld:
     for cabinet in world.cabinets:
         excludes += add_cabinet(spec, cabinet, world.table.height)
 
-    robot_spec = description.build_spec()
-    mount = spec.worldbody.add_frame(
-        pos=[ROBOT_BASE_XY[0], ROBOT_BASE_XY[1], world.table.height],
-        quat=list(quat_to_mujoco(quat_from_yaw(description.mount_yaw))),
-    )
-    spec.attach(robot_spec, prefix=ROBOT_PREFIX, frame=mount)
+    attach_robot(spec, description, robot_mount(world, description))
 
     # Drawers hold objects: their interiors need the compiled geometry, so compile the furniture first.
     drawer_frames = _drawer_frames(spec, world) if any(o.support_kind == "inside" for o in world.objects) else {}

@@ -1,0 +1,134 @@
+"""Motion: plans, times and executes arm motions on a backend, keeping the planning scene in step with the world.
+
+This is what the tool API's motion tools call. Every motion starts from the backend's measured configuration.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable, Sequence
+
+import numpy as np
+
+from roboscript.backends.base import Backend
+from roboscript.geometry import Transform
+from roboscript.planning.cartesian import CartesianResult, arc_poses, cartesian_path
+from roboscript.planning.errors import CartesianPathIncompleteError, TrackingError
+from roboscript.planning.ik import solve_ik
+from roboscript.planning.kinematics import ArmKinematics
+from roboscript.planning.planner import JointPath, JointPlanner
+from roboscript.planning.scene import PlanningScene
+from roboscript.planning.timing import time_parameterize
+from roboscript.sim.simulator import ExecutionReport
+
+
+class MotionPlanner:
+    """Joint-space, pose and Cartesian motions for one arm, executed on a backend with tracking monitoring."""
+
+    def __init__(
+        self,
+        backend: Backend,
+        scene: PlanningScene,
+        kinematics: ArmKinematics,
+        world_state: Callable[[], np.ndarray],
+        speed_scale: float = 0.5,
+        tracking_tolerance: float = 0.02,
+    ):
+        self.backend = backend
+        self.scene = scene
+        self.kinematics = kinematics
+        self.planner = JointPlanner(scene)
+        self._world_state = world_state
+        self.speed_scale = speed_scale
+        self.tracking_tolerance = tracking_tolerance
+        self.default_planner = "RRTConnect"
+        self.planning_timeout = 2.0
+
+    @classmethod
+    def for_mujoco(cls, backend, padding: float = 0.005, **kwargs) -> MotionPlanner:
+        """A planner whose scene is the simulated world's exact geometry (ground-truth mode)."""
+        from roboscript.sim.world import robot_mount
+
+        world = backend.sim_world
+        description = world.robot.description
+        scene = PlanningScene.from_sim_world(world, padding=padding)
+        kinematics = ArmKinematics(description, robot_mount(world.spec, description))
+        return cls(backend, scene, kinematics, lambda: world.data.qpos.copy(), **kwargs)
+
+    # --- planning ------------------------------------------------------------------------------------------
+
+    def sync(self) -> np.ndarray:
+        """Takes the world's present state into the scene; returns the arm's configuration."""
+        self.scene.update(self._world_state())
+        return self.backend.joint_positions()
+
+    def plan_to_joints(self, goal: np.ndarray, planner: str | None = None, timeout: float | None = None) -> JointPath:
+        start = self.sync()
+        return self.planner.plan(start, goal, planner or self.default_planner, timeout or self.planning_timeout)
+
+    def ik(self, pose: Transform, reference: np.ndarray | None = None) -> np.ndarray:
+        """A collision-free configuration for the TCP at ``pose``, nearest ``reference`` (default: current)."""
+        reference = self.backend.joint_positions() if reference is None else reference
+        return solve_ik(self.kinematics, pose, reference, self.scene)
+
+    def plan_to_pose(self, pose: Transform, planner: str | None = None, timeout: float | None = None) -> JointPath:
+        start = self.sync()
+        goal = self.ik(pose, start)
+        return self.planner.plan(start, goal, planner or self.default_planner, timeout or self.planning_timeout)
+
+    def cartesian(self, poses: Sequence[Transform], eef_step: float = 0.005) -> CartesianResult:
+        """Straight TCP lines through ``poses`` from the present pose; see :func:`cartesian_path`."""
+        start = self.sync()
+        return cartesian_path(self.kinematics, self.scene, start, list(poses), eef_step)
+
+    # --- execution -----------------------------------------------------------------------------------------
+
+    def execute(self, waypoints: np.ndarray | JointPath) -> ExecutionReport:
+        """Times the path within the arm's limits (at ``speed_scale``), runs it, and checks it was followed."""
+        points = waypoints.waypoints if isinstance(waypoints, JointPath) else np.asarray(waypoints, dtype=float)
+        robot = self.backend.robot
+        trajectory = time_parameterize(points, robot.max_velocity, robot.max_acceleration, self.speed_scale)
+        report = self.backend.execute_trajectory(trajectory)
+        if report.max_tcp_error > self.tracking_tolerance:
+            raise TrackingError(report.max_tcp_error, self.tracking_tolerance)
+        return report
+
+    def move_to_joints(self, goal: np.ndarray, planner: str | None = None) -> ExecutionReport:
+        return self.execute(self.plan_to_joints(goal, planner))
+
+    def move_to_pose(self, pose: Transform, planner: str | None = None) -> ExecutionReport:
+        """A straight line when it is feasible in full, else a planned collision-free motion."""
+        line = self.cartesian([pose])
+        if line.fraction >= 1.0:
+            return self.execute(line.waypoints)
+        return self.execute(self.plan_to_pose(pose, planner))
+
+    def follow(self, poses: Sequence[Transform], min_fraction: float = 1.0) -> ExecutionReport:
+        """Executes a Cartesian path through ``poses``; raises if less than ``min_fraction`` is achievable."""
+        result = self.cartesian(poses)
+        if result.fraction < min_fraction - 1e-9:
+            raise CartesianPathIncompleteError(result.fraction, result.reason)
+        return self.execute(result.waypoints)
+
+    def move_in_direction(self, direction: np.ndarray, distance: float, min_fraction: float = 1.0) -> ExecutionReport:
+        """Moves the TCP in a straight line by ``distance`` metres along ``direction``, orientation kept."""
+        direction = np.asarray(direction, dtype=float)
+        norm = float(np.linalg.norm(direction))
+        if direction.shape != (3,) or norm < 1e-9:
+            raise ValueError(f"direction must be a non-zero 3-vector, got {direction.tolist()}")
+        current = self.backend.tcp_pose()
+        target = Transform(current.position + direction / norm * distance, current.quaternion)
+        return self.follow([target], min_fraction)
+
+    def arc(self, axis: np.ndarray, pivot: np.ndarray, angle: float, n: int = 20, min_fraction: float = 1.0):
+        """Turns the TCP about a revolute joint (a door's hinge) by ``angle`` radians."""
+        return self.follow(arc_poses(self.backend.tcp_pose(), axis, pivot, n, angle), min_fraction)
+
+    # --- held objects --------------------------------------------------------------------------------------
+
+    def attach(self, name: str) -> None:
+        self.sync()
+        self.scene.attach(name, self.backend.joint_positions())
+
+    def detach(self, name: str) -> None:
+        self.scene.detach(name)
+        self.sync()

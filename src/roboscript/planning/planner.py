@@ -1,0 +1,258 @@
+"""Joint-space motion planning with OMPL's planners, MuJoCo as the collision checker.
+
+Every returned path has been simplified and then validated densely: consecutive checks are at most
+``validation_step`` metres of motion apart for any point of the arm (a bound from each joint's lever arm), and the
+scene's padding is at least that step, so no point of the arm can pass through an obstacle between two checks.
+"""
+
+from __future__ import annotations
+
+import itertools
+import time
+from dataclasses import dataclass
+
+import numpy as np
+
+from roboscript.planning.errors import (
+    PathInCollisionError,
+    PlannerTimeoutError,
+    PlanningError,
+    StateInCollisionError,
+    UnknownPlannerError,
+)
+from roboscript.planning.scene import PlanningScene
+
+_OMPL = None
+
+
+def _ompl():
+    """Imports OMPL once, quietly (its log goes to stdout at INFO level by default)."""
+    global _OMPL
+    if _OMPL is None:
+        from ompl import base, geometric, util
+
+        util.setLogLevel(util.LOG_WARN)
+        _OMPL = (base, geometric, util)
+    return _OMPL
+
+
+# Name -> OMPL class name. The original system exposed twelve planners through MoveIt; these are the ones the
+# ompl 2.0.1 Python wheel binds, under their MoveIt-style names and OMPL's own.
+_PLANNER_CLASSES = {
+    "RRTConnect": "RRTConnect",
+    "RRT": "RRT",
+    "RRTstar": "RRTstar",
+    "InformedRRTstar": "InformedRRTstar",
+    "SORRTstar": "SORRTstar",
+    "PRM": "PRM",
+    "PRMstar": "PRMstar",
+    "BITstar": "BITstar",
+    "KPIECE": "KPIECE1",
+    "BKPIECE": "BKPIECE1",
+    "LBKPIECE": "LBKPIECE1",
+    "FMT": "FMT",
+    "BFMT": "BFMT",
+    "AORRTC": "AORRTC",
+}
+_ALIASES = {"RRT*": "RRTstar", "PRM*": "PRMstar", "BIT*": "BITstar", "KPIECE1": "KPIECE", "BKPIECE1": "BKPIECE"}
+_ALIASES.update({"LBKPIECE1": "LBKPIECE"})
+_UNAVAILABLE = {
+    name: "the ompl 2.0.1 Python bindings do not include it" for name in ("EST", "BiEST", "SBL", "TRRT", "BiTRRT")
+}
+# Planners that keep improving until the time is up; they stop at the first exact solution here unless asked.
+_OPTIMIZING = {"RRTstar", "InformedRRTstar", "SORRTstar", "PRMstar", "BITstar", "FMT", "BFMT", "AORRTC", "PRM"}
+
+
+def planner_names() -> list[str]:
+    """The selectable planners."""
+    return list(_PLANNER_CLASSES)
+
+
+def canonical_planner_name(name: str) -> str:
+    name = _ALIASES.get(name, name)
+    if name not in _PLANNER_CLASSES:
+        raise UnknownPlannerError(name, planner_names(), _UNAVAILABLE)
+    return name
+
+
+@dataclass(frozen=True)
+class JointPath:
+    """A collision-free piecewise-linear path in joint space, from a planner or a Cartesian interpolation."""
+
+    waypoints: np.ndarray  # (N, dof)
+    planner: str = ""
+    planning_time: float = 0.0  # seconds in the planner and simplifier
+    validation_time: float = 0.0  # seconds of dense validation
+
+    @property
+    def start(self) -> np.ndarray:
+        return self.waypoints[0]
+
+    @property
+    def goal(self) -> np.ndarray:
+        return self.waypoints[-1]
+
+    def length(self) -> float:
+        return float(np.sum(np.linalg.norm(np.diff(self.waypoints, axis=0), axis=1)))
+
+
+def lever_arms(scene: PlanningScene, beyond_tcp: float = 0.15) -> np.ndarray:
+    """An upper bound, per arm joint, of how far any point of the arm (and what it holds) is from that joint.
+
+    The distance between consecutive joint anchors is fixed by the link between them, so the chain of those
+    distances to the TCP, plus ``beyond_tcp`` for fingers and a held object, bounds it in every configuration.
+    Multiplying by a joint's motion bounds the displacement it causes.
+    """
+    model, data, robot = scene.model, scene.data, scene.robot
+    scene._kinematics(np.clip(np.zeros(scene.dof), scene.joint_lower, scene.joint_upper))
+    anchors = [data.xanchor[int(model.dof_jntid[dof])].copy() for dof in robot.dof]
+    anchors.append(data.site_xpos[robot.tcp_site].copy())
+    links = [float(np.linalg.norm(b - a)) for a, b in itertools.pairwise(anchors)]
+    return np.array([sum(links[k:]) + beyond_tcp for k in range(scene.dof)])
+
+
+def densify(waypoints: np.ndarray, lever: np.ndarray, step: float) -> np.ndarray:
+    """Points along the polyline such that no point of the arm moves more than ``step`` metres between two."""
+    out = [waypoints[0]]
+    for a, b in itertools.pairwise(waypoints):
+        motion = float(np.sum(np.abs(b - a) * lever))
+        n = max(1, int(np.ceil(motion / step)))
+        for k in range(1, n + 1):
+            out.append(a + (b - a) * (k / n))
+    return np.array(out)
+
+
+def first_collision(scene: PlanningScene, points: np.ndarray) -> int:
+    """Index of the first point in collision, or -1."""
+    for index, q in enumerate(points):
+        if not scene.is_valid(q):
+            return index
+    return -1
+
+
+class JointPlanner:
+    """Plans collision-free joint paths in a :class:`PlanningScene` with a chosen OMPL planner."""
+
+    def __init__(self, scene: PlanningScene, check_step: float = 0.03, validation_step: float | None = None):
+        """``check_step``: joint-space distance (radians) between the planner's own motion checks; the dense
+        validation afterwards makes the path safe, this only sets how often the planner must repair.
+        ``validation_step``: metres any point of the arm may move between two checks of the final path (default:
+        the scene's padding, which makes the validation exhaustive).
+        """
+        self.scene = scene
+        self.check_step = check_step
+        self.validation_step = scene.padding if validation_step is None else validation_step
+        if self.validation_step <= 0:
+            raise ValueError("validation_step must be > 0 metres (the scene's padding is 0: give one explicitly)")
+        self.lever = lever_arms(scene)
+
+    def check_state(self, q: np.ndarray, which: str) -> None:
+        """Raises if ``q`` is out of limits or in collision, naming the joint or the bodies."""
+        q = np.asarray(q, dtype=float)
+        if q.shape != (self.scene.dof,):
+            raise ValueError(f"the {which} configuration must have {self.scene.dof} joint values, got shape {q.shape}")
+        lower, upper = self.scene.joint_lower, self.scene.joint_upper
+        outside = np.flatnonzero((q < lower - 1e-6) | (q > upper + 1e-6))
+        if outside.size:
+            j = int(outside[0])
+            raise PlanningError(
+                f"the {which} configuration is outside the joint limits: joint {j + 1} is {q[j]:.3f} rad, "
+                f"limits [{lower[j]:.3f}, {upper[j]:.3f}]"
+            )
+        if not self.scene.is_valid(q):
+            raise StateInCollisionError(which, self.scene.collisions(q))
+
+    def segment_is_free(self, a: np.ndarray, b: np.ndarray) -> bool:
+        return first_collision(self.scene, densify(np.array([a, b]), self.lever, self.validation_step)) < 0
+
+    def validate(self, waypoints: np.ndarray) -> None:
+        """Dense validation; raises :class:`PathInCollisionError` at the first colliding point."""
+        points = densify(waypoints, self.lever, self.validation_step)
+        index = first_collision(self.scene, points)
+        if index >= 0:
+            raise PathInCollisionError(index, len(points), self.scene.collisions(points[index]))
+
+    def plan(
+        self,
+        start: np.ndarray,
+        goal: np.ndarray,
+        planner: str = "RRTConnect",
+        timeout: float = 2.0,
+        simplify: bool = True,
+        optimize: bool = False,
+    ) -> JointPath:
+        """A validated collision-free path from ``start`` to ``goal``.
+
+        Optimising planners stop at their first exact solution unless ``optimize`` is set (then they use the
+        whole ``timeout``). Raises :class:`StateInCollisionError`, :class:`PlannerTimeoutError` or
+        :class:`UnknownPlannerError`.
+        """
+        name = canonical_planner_name(planner)
+        start, goal = np.asarray(start, dtype=float), np.asarray(goal, dtype=float)
+        self.check_state(start, "start")
+        self.check_state(goal, "goal")
+        began = time.perf_counter()
+        waypoints = self._solve(name, start, goal, timeout, simplify, optimize)
+        planned = time.perf_counter()
+        try:
+            self.validate(waypoints)
+        except PathInCollisionError:
+            # Rare: the planner's coarser checks missed a graze. Refine the path rather than return it.
+            waypoints = self._repair(waypoints)
+        return JointPath(waypoints, name, planned - began, time.perf_counter() - planned)
+
+    def _solve(
+        self, name: str, start: np.ndarray, goal: np.ndarray, timeout: float, simplify: bool, optimize: bool
+    ) -> np.ndarray:
+        ob, og, _ = _ompl()
+        dof = self.scene.dof
+        space = ob.RealVectorStateSpace(dof)
+        bounds = ob.RealVectorBounds(dof)
+        for j in range(dof):
+            bounds.setLow(j, float(self.scene.joint_lower[j]))
+            bounds.setHigh(j, float(self.scene.joint_upper[j]))
+        space.setBounds(bounds)
+        setup = og.SimpleSetup(space)
+        is_free = self.scene.is_free  # OMPL samples within the joint bounds: no limit check needed
+        buffer = np.empty(dof)
+        indices = range(dof)
+
+        def valid(state) -> bool:
+            for j in indices:
+                buffer[j] = state[j]
+            return is_free(buffer)
+
+        setup.setStateValidityChecker(valid)
+        info = setup.getSpaceInformation()
+        info.setStateValidityCheckingResolution(min(1.0, self.check_step / space.getMaximumExtent()))
+        start_state, goal_state = space.allocState(), space.allocState()
+        for j in range(dof):
+            start_state[j], goal_state[j] = float(start[j]), float(goal[j])
+        setup.setStartAndGoalStates(start_state, goal_state)
+        setup.setPlanner(getattr(og, _PLANNER_CLASSES[name])(info))
+        if name in _OPTIMIZING and not optimize:
+            condition = ob.plannerOrTerminationCondition(
+                ob.timedPlannerTerminationCondition(timeout),
+                ob.exactSolnPlannerTerminationCondition(setup.getProblemDefinition()),
+            )
+            setup.solve(condition)
+        else:
+            setup.solve(timeout)
+        if not setup.haveExactSolutionPath():
+            raise PlannerTimeoutError(name, timeout)
+        if simplify:
+            setup.simplifySolution(min(0.1, timeout))
+        path = setup.getSolutionPath()
+        return np.array([[path.getState(i)[j] for j in range(dof)] for i in range(path.getStateCount())])
+
+    def _repair(self, waypoints: np.ndarray) -> np.ndarray:
+        """Replaces each colliding segment by a sub-plan between its ends; raises if that fails too."""
+        repaired = [waypoints[0]]
+        for a, b in itertools.pairwise(waypoints):
+            if self.segment_is_free(a, b):
+                repaired.append(b)
+                continue
+            detour = self._solve("RRTConnect", a, b, 1.0, True, False)
+            self.validate(detour)
+            repaired.extend(detour[1:])
+        return np.array(repaired)

@@ -1,0 +1,308 @@
+"""The planning scene: the robot, static obstacles, objects as collision geometry, and attached objects.
+
+The scene keeps its own copy of a compiled world model, so collision queries never disturb the simulation. Only
+pairs that involve the robot (or an object it holds) are tested: MuJoCo's contype/conaffinity bits are set so that
+robot geoms collide with everything, and the rest of the world does not collide with itself (objects resting on
+the table are not a planning problem). Contacts closer than ``padding`` count as collisions.
+
+Objects come from ground truth here (:meth:`PlanningScene.from_sim_world` copies the simulated geometry and
+:meth:`update` copies its state); a perception-built scene supplies its own model in the same form.
+"""
+
+from __future__ import annotations
+
+import copy
+from collections.abc import Iterable
+from dataclasses import dataclass
+
+import mujoco
+import numpy as np
+
+from roboscript.geometry import Transform
+from roboscript.sim.world import RobotBinding, SimWorld
+
+# contype/conaffinity bits. Two geoms collide if the type of either shares a bit with the affinity of the other.
+# Moving arm links collide with everything; the environment only with the robot and held objects (objects resting on
+# the table are no planning problem); the fixed base not with the table it stands on; the first moving link not with
+# the base it turns on (MuJoCo's parent-child filter skips bodies welded to the world); the gripper's parts not with
+# each other (its linkage touches itself); a held object not with the gripper holding it.
+_ARM, _ENV, _BASE, _FIRST, _GRIPPER, _HELD = 1, 2, 4, 8, 16, 32
+_BITS = {
+    "arm": (_ARM, _ARM | _ENV | _BASE),
+    "env": (_ENV, _ARM),
+    "base": (_BASE, _ARM),
+    "first_link": (_FIRST, _ARM | _ENV),
+    "gripper": (_GRIPPER, _ARM | _ENV | _BASE | _FIRST),
+    "held": (_HELD, _ARM | _ENV | _BASE | _FIRST),
+}
+
+
+@dataclass(frozen=True)
+class Attachment:
+    """An object held by the gripper: its pose relative to the TCP, and contacts allowed until it leaves them."""
+
+    name: str
+    body: int
+    tcp_to_object: np.ndarray  # 4x4
+
+
+class PlanningScene:
+    """Collision queries for arm configurations against the world, with attached objects and allowed pairs."""
+
+    def __init__(
+        self,
+        model: mujoco.MjModel,
+        robot: RobotBinding,
+        body_labels: list[str],
+        object_bodies: dict[str, int],
+        padding: float = 0.005,
+    ):
+        if padding < 0:
+            raise ValueError(f"padding must be >= 0 metres, got {padding}")
+        self.model = model
+        self.data = mujoco.MjData(model)
+        self.robot = robot
+        self.padding = padding
+        self.body_labels = body_labels
+        self.object_bodies = object_bodies
+        self._qpos = robot.qpos
+        # Queries call mj_kinematics and mj_collision directly; sleeping would make them skip bodies.
+        model.opt.enableflags &= ~int(mujoco.mjtEnableBit.mjENBL_SLEEP)
+
+        nbody = model.nbody
+        self._is_robot = np.zeros(nbody, dtype=bool)
+        self._is_robot[list(robot.body_ids)] = True
+        tcp_body = model.site_bodyid[robot.tcp_site]
+        self._gripper_bodies = np.array([b for b in robot.body_ids if _is_descendant(model, b, tcp_body)])
+        self._collides = (model.geom_contype | model.geom_conaffinity) > 0
+        moved = np.array([_moved_by_arm(model, b, robot) for b in range(nbody)])
+        base = self._is_robot & ~moved
+        first_link = self._is_robot & moved & base[model.body_parentid]
+        gripper = np.zeros(nbody, dtype=bool)
+        gripper[self._gripper_bodies] = True
+        self._set_bits(~self._is_robot, "env", 0.0)
+        self._set_bits(self._is_robot & moved & ~first_link & ~gripper, "arm", padding)
+        self._set_bits(base, "base", 0.0)
+        self._set_bits(first_link, "first_link", padding)
+        self._set_bits(gripper, "gripper", padding)
+
+        self._allowed = np.zeros((nbody, nbody), dtype=bool)
+        self._attached: dict[str, Attachment] = {}
+        self._attached_allowed: dict[str, set[int]] = {}
+        self._lower, self._upper = robot.joint_lower - 1e-9, robot.joint_upper + 1e-9
+
+    @classmethod
+    def from_sim_world(cls, world: SimWorld, padding: float = 0.005) -> PlanningScene:
+        """A scene with the world's exact geometry (ground truth), in the world's current state."""
+        model = copy.copy(world.model)
+        labels = [model.body(b).name for b in range(model.nbody)]
+        for entity in sorted(world.entities, key=lambda e: e.kind == "part"):  # parts override their furniture
+            if entity.kind == "robot":
+                continue
+            for body in entity.bodies:
+                labels[body] = entity.name
+        objects = {e.name: e.bodies[0] for e in world.entities if e.kind == "object"}
+        scene = cls(model, world.robot, labels, objects, padding)
+        scene.update(world.data.qpos)
+        return scene
+
+    # --- state -----------------------------------------------------------------------------------------------
+
+    @property
+    def dof(self) -> int:
+        return len(self._qpos)
+
+    @property
+    def joint_lower(self) -> np.ndarray:
+        return self.robot.joint_lower
+
+    @property
+    def joint_upper(self) -> np.ndarray:
+        return self.robot.joint_upper
+
+    def update(self, qpos: np.ndarray) -> None:
+        """Takes the world's state (every joint: objects, drawers, doors, the arm) from a full ``qpos`` vector.
+
+        Held objects follow the gripper, not ``qpos``; a contact allowed at attachment is withdrawn once the held
+        object has left it.
+        """
+        qpos = np.asarray(qpos, dtype=float)
+        if qpos.shape != (self.model.nq,):
+            raise ValueError(f"qpos must have {self.model.nq} entries (the world's), got shape {qpos.shape}")
+        self.data.qpos[:] = qpos
+        if self._attached:
+            self._place(qpos[self._qpos])
+            touching = {b for pair in self._contact_bodies() for b in pair}
+            for name, allowed in self._attached_allowed.items():
+                body = self._attached[name].body
+                for other in list(allowed):
+                    if other not in touching:
+                        allowed.discard(other)
+                        self._allowed[body, other] = self._allowed[other, body] = False
+
+    def arm_positions(self) -> np.ndarray:
+        return self.data.qpos[self._qpos].copy()
+
+    def within_limits(self, q: np.ndarray) -> bool:
+        return bool(((q >= self._lower) & (q <= self._upper)).all())
+
+    # --- queries ---------------------------------------------------------------------------------------------
+
+    def is_valid(self, q: np.ndarray) -> bool:
+        """True if the arm at ``q`` is within its limits and nothing it holds or is made of collides."""
+        return self.within_limits(q) and self.is_free(q)
+
+    def is_free(self, q: np.ndarray) -> bool:
+        """True if nothing collides with the arm at ``q`` (joint limits not checked)."""
+        self._place(q)
+        mujoco.mj_collision(self.model, self.data)
+        ncon = self.data.ncon
+        if ncon == 0:
+            return True
+        geoms = self.data.contact.geom[:ncon]
+        bodies = self.model.geom_bodyid[geoms]
+        return bool(np.all(self._allowed[bodies[:, 0], bodies[:, 1]]))
+
+    def collisions(self, q: np.ndarray) -> list[tuple[str, str]]:
+        """The pairs of named things in collision (closer than the padding) with the arm at ``q``."""
+        self._place(q)
+        mujoco.mj_collision(self.model, self.data)
+        pairs = []
+        for a, b in self._contact_bodies():
+            if not self._allowed[a, b]:
+                pair = (self.body_labels[a], self.body_labels[b])
+                if self._is_robot[b] and not self._is_robot[a]:
+                    pair = pair[::-1]
+                if pair not in pairs:
+                    pairs.append(pair)
+        return pairs
+
+    def tcp_pose(self, q: np.ndarray) -> Transform:
+        """Forward kinematics of the TCP."""
+        self._kinematics(q)
+        site = self.robot.tcp_site
+        return Transform.from_rotation(self.data.site_xpos[site], self.data.site_xmat[site].reshape(3, 3))
+
+    # --- attachments and allowed contacts --------------------------------------------------------------------
+
+    def attach(self, name: str, q: np.ndarray | None = None) -> Attachment:
+        """Makes object ``name`` move with the gripper, keeping its present pose relative to the TCP.
+
+        Contacts between it and the gripper are always allowed; those it has now with anything else (the table
+        it is lifted from) are allowed until it has left them.
+        """
+        if name not in self.object_bodies:
+            raise KeyError(f"no object named {name!r} to attach; objects: {', '.join(sorted(self.object_bodies))}")
+        if name in self._attached:
+            return self._attached[name]
+        body = self.object_bodies[name]
+        q = self.arm_positions() if q is None else np.asarray(q, dtype=float)
+        self._kinematics(q)
+        tcp = Transform.from_rotation(
+            self.data.site_xpos[self.robot.tcp_site], self.data.site_xmat[self.robot.tcp_site].reshape(3, 3)
+        )
+        obj = Transform.from_rotation(self.data.xpos[body], self.data.xmat[body].reshape(3, 3))
+        attachment = Attachment(name, body, tcp.inverse().compose(obj).matrix())
+        self._set_bits(self._body_mask(body), "held", self.padding)
+        mujoco.mj_collision(self.model, self.data)
+        touching = {b for pair in self._contact_bodies() if body in pair for b in pair} - {body}
+        self._allow_bodies([body], list(touching))
+        self._attached[name] = attachment
+        self._attached_allowed[name] = touching
+        return attachment
+
+    def detach(self, name: str) -> None:
+        """Returns a held object to the environment (where it now lies is taken from the next :meth:`update`)."""
+        attachment = self._attached.pop(name, None)
+        if attachment is None:
+            raise KeyError(f"{name!r} is not attached; attached: {', '.join(self._attached) or 'nothing'}")
+        self._attached_allowed.pop(name)
+        body = attachment.body
+        self._set_bits(self._body_mask(body), "env", 0.0)
+        self._allowed[body, :] = self._allowed[:, body] = False
+
+    @property
+    def attached(self) -> list[str]:
+        return list(self._attached)
+
+    def allow(self, a: str, b: str, allowed: bool = True) -> None:
+        """Allows (or forbids again) contact between two named things, e.g. the fingers and an object to grasp."""
+        self._allowed_pair_bodies(a, b, allowed)
+
+    def _allowed_pair_bodies(self, a: str, b: str, allowed: bool) -> None:
+        first, second = self._bodies_named(a), self._bodies_named(b)
+        for i in first:
+            for j in second:
+                self._allowed[i, j] = self._allowed[j, i] = allowed
+
+    def _bodies_named(self, name: str) -> list[int]:
+        if name == "gripper":
+            return self._gripper_bodies.tolist()
+        bodies = [b for b, label in enumerate(self.body_labels) if label == name]
+        if not bodies:
+            known = sorted({label for label in self.body_labels if label})
+            raise KeyError(f"nothing named {name!r} in the planning scene; names: {', '.join(known)}, gripper")
+        return bodies
+
+    # --- internals -------------------------------------------------------------------------------------------
+
+    def _kinematics(self, q: np.ndarray) -> None:
+        self.data.qpos[self._qpos] = q
+        mujoco.mj_kinematics(self.model, self.data)
+
+    def _place(self, q: np.ndarray) -> None:
+        """Kinematics with the arm at ``q`` and every held object carried along."""
+        self._kinematics(q)
+        if not self._attached:
+            return
+        site = self.robot.tcp_site
+        tcp = np.eye(4)
+        tcp[:3, :3] = self.data.site_xmat[site].reshape(3, 3)
+        tcp[:3, 3] = self.data.site_xpos[site]
+        for attachment in self._attached.values():
+            pose = tcp @ attachment.tcp_to_object
+            adr = self.model.jnt_qposadr[self.model.body_jntadr[attachment.body]]
+            self.data.qpos[adr : adr + 3] = pose[:3, 3]
+            mujoco.mju_mat2Quat(self.data.qpos[adr + 3 : adr + 7], pose[:3, :3].flatten())
+        mujoco.mj_kinematics(self.model, self.data)
+
+    def _contact_bodies(self) -> list[tuple[int, int]]:
+        ncon = self.data.ncon
+        if ncon == 0:
+            return []
+        bodies = self.model.geom_bodyid[self.data.contact.geom[:ncon]]
+        return [(int(a), int(b)) for a, b in bodies]
+
+    def _body_mask(self, body: int) -> np.ndarray:
+        mask = np.zeros(self.model.nbody, dtype=bool)
+        mask[body] = True
+        return mask
+
+    def _allow_bodies(self, first: Iterable[int], second: Iterable[int]) -> None:
+        second = list(second)
+        for i in first:
+            for j in second:
+                self._allowed[i, j] = self._allowed[j, i] = True
+
+    def _set_bits(self, bodies: np.ndarray, role: str, margin: float) -> None:
+        """Collision bits of a role, and margin (MuJoCo reports pairs closer than the larger margin), of geoms."""
+        geoms = bodies[self.model.geom_bodyid] & self._collides
+        self.model.geom_contype[geoms], self.model.geom_conaffinity[geoms] = _BITS[role]
+        self.model.geom_margin[geoms] = margin
+
+
+def _is_descendant(model: mujoco.MjModel, body: int, root: int) -> bool:
+    while body > 0:
+        if body == root:
+            return True
+        body = model.body_parentid[body]
+    return False
+
+
+def _moved_by_arm(model: mujoco.MjModel, body: int, robot: RobotBinding) -> bool:
+    arm_dofs = set(robot.dof.tolist())
+    while body > 0:
+        if model.body_dofnum[body] > 0 and model.body_dofadr[body] in arm_dofs:
+            return True
+        body = model.body_parentid[body]
+    return False
