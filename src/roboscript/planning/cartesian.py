@@ -117,7 +117,10 @@ def cartesian_path(
             index = first_collision(scene, points)
             if index >= 0:
                 pairs = scene.collisions(points[index])
-                reason = "collision: " + ", ".join(f"{a} with {b}" for a, b in pairs[:4])
+                if pairs:
+                    reason = "collision: " + ", ".join(f"{a} with {b}" for a, b in pairs[:4])
+                else:
+                    reason = "a joint limit is in the way"
         if reason:
             return CartesianResult(np.array(waypoints), achieved / total if total > 0 else 0.0, reason)
         achieved += _step_measure(previous, target)

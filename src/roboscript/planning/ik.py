@@ -16,21 +16,25 @@ def solve_ik(
     reference: np.ndarray,
     scene: PlanningScene | None = None,
     attempts: int = 16,
+    max_attempts: int = 150,
     wanted_solutions: int = 3,
     seed: int = 0,
 ) -> np.ndarray:
     """A joint configuration that puts the TCP at ``target``, collision-free in ``scene`` if one is given.
 
     The first seed is ``reference`` (usually the current configuration), the others are drawn uniformly within
-    the joint limits (deterministically, from ``seed``). Among the solutions found, the one nearest ``reference``
-    is returned. Raises :class:`IKError` with the nearest pose reached, or with the collisions of the solutions.
+    the joint limits (deterministically, from ``seed``). After ``attempts`` seeds the search stops if it has a
+    solution, else goes on up to ``max_attempts`` (a redundant arm may have free solutions on few branches only).
+    Among the solutions found, the one nearest ``reference`` is returned. Raises :class:`IKError` with the nearest pose reached, or with the collisions of the solutions.
     """
     reference = np.asarray(reference, dtype=float)
     rng = np.random.default_rng(seed)
     solutions: list[np.ndarray] = []
     colliding: list[tuple[str, str]] = []
     best_position, best_angle = np.inf, np.inf
-    for attempt in range(attempts):
+    for attempt in range(max(attempts, max_attempts)):
+        if attempt >= attempts and solutions:
+            break
         start = reference if attempt == 0 else rng.uniform(kinematics.lower, kinematics.upper)
         result = kinematics.solve(target, start)
         if result.position_error + 0.1 * result.angle_error < best_position + 0.1 * best_angle:
@@ -51,7 +55,7 @@ def solve_ik(
     if colliding:
         raise IKError(target.position, best_position, best_angle, "every solution found is in collision", colliding)
     raise IKError(
-        target.position, best_position, best_angle, f"not reachable within the joint limits ({attempts} seeds)"
+        target.position, best_position, best_angle, f"not reachable within the joint limits ({max(attempts, max_attempts)} seeds)"
     )
 
 

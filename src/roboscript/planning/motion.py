@@ -57,9 +57,13 @@ class MotionPlanner:
     # --- planning ------------------------------------------------------------------------------------------
 
     def sync(self) -> np.ndarray:
-        """Takes the world's present state into the scene; returns the arm's configuration."""
+        """Takes the world's present state into the scene; returns the arm's configuration.
+
+        A servoed joint resting at a limit can read a hair beyond it; such readings are taken as at the limit.
+        """
         self.scene.update(self._world_state())
-        return self.backend.joint_positions()
+        q = self.backend.joint_positions()
+        return np.clip(q, self.scene.joint_lower, self.scene.joint_upper)
 
     def plan_to_joints(self, goal: np.ndarray, planner: str | None = None, timeout: float | None = None) -> JointPath:
         start = self.sync()
