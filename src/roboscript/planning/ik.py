@@ -55,7 +55,10 @@ def solve_ik(
     if colliding:
         raise IKError(target.position, best_position, best_angle, "every solution found is in collision", colliding)
     raise IKError(
-        target.position, best_position, best_angle, f"not reachable within the joint limits ({max(attempts, max_attempts)} seeds)"
+        target.position,
+        best_position,
+        best_angle,
+        f"not reachable within the joint limits ({max(attempts, max_attempts)} seeds)",
     )
 
 

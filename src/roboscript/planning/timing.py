@@ -16,6 +16,9 @@ import numpy as np
 from roboscript.sim.trajectory import JointTrajectory
 
 
+_SHARP_TURN = 2 * np.sin(np.radians(10) / 2)  # chord between unit tangents 10 degrees apart
+
+
 def resample_polyline(waypoints: np.ndarray, max_step: float) -> np.ndarray:
     """The polyline with points added so that no joint moves more than ``max_step`` between two; drops repeats."""
     waypoints = np.atleast_2d(np.asarray(waypoints, dtype=float))
@@ -60,15 +63,23 @@ def time_parameterize(
     turn = np.abs(tangents[1:] - tangents[:-1])  # change of direction at each interior point
     reach = np.minimum(lengths[:-1], lengths[1:])
     with np.errstate(divide="ignore", invalid="ignore"):
-        corner = np.sqrt(np.min(amax[None, :] * reach[:, None] / turn, axis=1))
-    speed[1:-1] = np.minimum(speed[1:-1], np.nan_to_num(corner, nan=np.inf, posinf=np.inf))
+        # Turning within one piece needs v^2 |turn| / reach <= amax; the cubic between knots peaks at about three
+        # times its mean acceleration, hence the factor. Sharp corners (a planner's) are taken from rest.
+        corner = np.sqrt(np.min(amax[None, :] * reach[:, None] / (3.0 * turn), axis=1))
+    corner = np.nan_to_num(corner, nan=np.inf, posinf=np.inf)
+    corner[np.linalg.norm(tangents[1:] - tangents[:-1], axis=1) > _SHARP_TURN] = 0.0
+    speed[1:-1] = np.minimum(speed[1:-1], corner)
 
     for k in range(n - 1):  # accelerate no faster than the limits allow
         speed[k + 1] = min(speed[k + 1], np.sqrt(speed[k] ** 2 + 2 * segment_accel[k] * lengths[k]))
     for k in range(n - 2, -1, -1):  # and brake in time
         speed[k] = min(speed[k], np.sqrt(speed[k + 1] ** 2 + 2 * segment_accel[k] * lengths[k]))
 
-    durations = 2 * lengths / np.maximum(speed[:-1] + speed[1:], 1e-12)
+    pair = speed[:-1] + speed[1:]
+    # A piece between two rests (two sharp corners closer than max_step) is a cubic whose peak acceleration is
+    # 6 L / T^2; otherwise the speed changes at a constant rate along the piece.
+    with np.errstate(divide="ignore"):
+        durations = np.where(pair > 0, 2 * lengths / pair, 2 * np.sqrt(1.5 * lengths / segment_accel))
     times = np.concatenate([[0.0], np.cumsum(durations)])
     directions = np.zeros_like(points)
     directions[0], directions[-1] = tangents[0], tangents[-1]

@@ -1,0 +1,213 @@
+"""Planning: IK accuracy, planner validity, Cartesian fractions, held objects, timing limits, typed errors."""
+
+import numpy as np
+import pytest
+
+from roboscript.backends.mujoco_backend import MujocoBackend
+from roboscript.geometry import Transform, matrix_to_quat, rotation_angle_between
+from roboscript.planning import (
+    CartesianPathIncompleteError,
+    IKError,
+    MotionPlanner,
+    PlannerTimeoutError,
+    StateInCollisionError,
+    UnknownPlannerError,
+    arc_poses,
+    cartesian_path,
+    planner_names,
+    solve_ik,
+    time_parameterize,
+)
+from roboscript.planning.planner import JointPlanner, densify
+from roboscript.sim.world_file import parse_world
+
+ROBOTS = ("panda", "ur5e")
+TABLE = 0.82
+DOWN = matrix_to_quat(np.array([[1.0, 0, 0], [0, -1.0, 0], [0, 0, -1.0]]))
+
+
+def planner_for(world, robot, **kwargs) -> tuple[MujocoBackend, MotionPlanner]:
+    backend = MujocoBackend(world, robot=robot, settle=0.3)
+    return backend, MotionPlanner.for_mujoco(backend, **kwargs)
+
+
+def objects_world(*objects):
+    return parse_world({"name": "planning", "objects": list(objects)})
+
+
+@pytest.fixture(scope="module", params=ROBOTS)
+def table_world(request):
+    return planner_for("world_1_table_sort", request.param)
+
+
+def test_fk_of_ik_is_within_1mm_and_1_degree(table_world):
+    backend, motion = table_world
+    kinematics = motion.kinematics
+    rng = np.random.default_rng(7)
+    home = backend.joint_positions()
+    for _ in range(15):
+        target = kinematics.fk(rng.uniform(kinematics.lower, kinematics.upper))
+        q = solve_ik(kinematics, target, home)
+        reached = kinematics.fk(q)
+        assert np.linalg.norm(reached.position - target.position) < 1e-3
+        assert np.degrees(rotation_angle_between(reached.quaternion, target.quaternion)) < 1.0
+        assert np.all(q >= kinematics.lower) and np.all(q <= kinematics.upper)
+
+
+def test_planned_paths_are_collision_free_under_exact_dense_checking(table_world):
+    backend, motion = table_world
+    rng = np.random.default_rng(3)
+    start = backend.joint_positions()
+    exact = JointPlanner(motion.scene, validation_step=0.001)  # 1 mm steps of any point of the arm
+    planned = 0
+    for _ in range(6):
+        p = np.array([rng.uniform(-0.25, 0.15), rng.uniform(-0.4, 0.3), TABLE + rng.uniform(0.1, 0.3)])
+        goal = motion.ik(Transform(p, DOWN), start)
+        path = motion.planner.plan(start, goal)
+        np.testing.assert_allclose(path.start, start)
+        np.testing.assert_allclose(path.goal, goal)
+        exact.validate(path.waypoints)
+        assert np.all(np.isfinite(path.waypoints))
+        start, planned = goal, planned + 1
+    assert planned == 6
+
+
+@pytest.mark.parametrize("robot", ROBOTS)
+def test_20cm_cartesian_move_in_free_space_is_achieved(robot):
+    backend, motion = planner_for(objects_world(), robot)
+    start = backend.joint_positions()
+    pose = motion.kinematics.fk(start)
+    result = cartesian_path(
+        motion.kinematics, motion.scene, start, [Transform(pose.position + [0.0, 0.2, 0.0], pose.quaternion)]
+    )
+    assert result.fraction >= 0.99, result.reason
+    end = motion.kinematics.fk(result.waypoints[-1])
+    np.testing.assert_allclose(end.position, pose.position + [0, 0.2, 0], atol=1e-3)
+    # Every intermediate TCP position lies on the straight line.
+    for q in result.waypoints:
+        offset = motion.kinematics.fk(q).position - pose.position
+        assert abs(offset[0]) < 1e-3 and abs(offset[2]) < 1e-3
+
+
+@pytest.mark.parametrize("robot", ROBOTS)
+def test_blocked_cartesian_move_reports_the_fraction_and_the_obstacle(robot):
+    world = objects_world(
+        {"name": "tea", "type": "tea_box", "position": [0.0, 0.0], "yaw": 90}
+    )  # wider than open fingers
+    backend, motion = planner_for(world, robot)
+    top = backend.ground_truth.box("tea").upper[2]
+    motion.move_to_pose(Transform(np.array([0.0, 0.0, top + 0.15]), DOWN))
+    result = motion.cartesian([Transform(np.array([0.0, 0.0, top - 0.05]), DOWN)])
+    assert 0.3 < result.fraction < 0.95, result
+    assert "tea" in result.reason
+    with pytest.raises(CartesianPathIncompleteError, match="tea") as error:
+        motion.move_in_direction([0, 0, -1], 0.2)
+    assert 0.3 < error.value.fraction < 0.95
+
+
+@pytest.mark.parametrize("robot", ROBOTS)
+def test_a_held_box_makes_the_planner_avoid_what_the_bare_gripper_clears(robot):
+    world = objects_world(
+        {"name": "held", "type": "cracker_box", "position": [0.1, -0.35]},
+        {"name": "wall", "type": "cereal_box", "position": [0.05, 0.0], "yaw": 90},
+    )
+    backend, motion = planner_for(world, robot)
+    scene, kinematics = motion.scene, motion.kinematics
+    wall_top = backend.ground_truth.box("wall").upper[2]
+    height = wall_top + 0.07  # the fingers clear the wall; a box hanging 19 cm below them does not
+    qa = motion.ik(Transform(np.array([0.05, -0.25, height]), DOWN))
+    qb = motion.ik(Transform(np.array([0.05, 0.25, height]), qa if False else DOWN), qa)
+    straight = densify(np.array([qa, qb]), motion.planner.lever, 0.005)
+    assert all(scene.is_valid(q) for q in straight), "the bare gripper passes over the wall"
+
+    # Put the box in the hand at qa (hanging below the fingers) and attach it.
+    state = backend.sim_world.data.qpos.copy()
+    tcp = kinematics.fk(qa)
+    adr = backend.sim_world.model.jnt_qposadr[
+        backend.sim_world.model.body_jntadr[backend.sim_world.model.body("held").id]
+    ]
+    state[adr : adr + 3] = tcp.position - [0.0, 0.0, 0.19]
+    state[adr + 3 : adr + 7] = [1.0, 0.0, 0.0, 0.0]
+    state[backend.sim_world.robot.qpos] = qa
+    scene.update(state)
+    scene.attach("held", qa)
+    blocked = [q for q in straight if not scene.is_valid(q)]
+    assert blocked, "the held box must hit the wall on the straight path"
+    assert ("held", "wall") in scene.collisions(blocked[0])
+
+    path = motion.planner.plan(qa, qb)
+    motion.planner.validate(path.waypoints)  # with the box attached
+    assert len(path.waypoints) > 2, "the path must detour"
+    scene.detach("held")
+
+
+def test_time_parameterisation_follows_the_path_within_limits():
+    rng = np.random.default_rng(0)
+    waypoints = np.cumsum(rng.uniform(-0.6, 0.6, size=(6, 7)), axis=0)
+    vmax, amax = np.full(7, 1.5), np.full(7, 4.0)
+    trajectory = time_parameterize(waypoints, vmax, amax, speed_scale=0.5)
+    t = np.arange(0, trajectory.duration, 0.001)
+    q, qd, _ = trajectory.sample_many(t)
+    assert np.max(np.abs(qd)) <= 0.75 * 1.02
+    qdd = np.diff(qd, axis=0) / 0.001
+    assert np.percentile(np.abs(qdd), 99.5) <= 2.0 * 1.1
+    np.testing.assert_allclose(trajectory.positions[0], waypoints[0])
+    np.testing.assert_allclose(trajectory.positions[-1], waypoints[-1])
+    np.testing.assert_allclose(trajectory.velocities[[0, -1]], 0.0)
+    for w in waypoints:  # the trajectory passes through every waypoint
+        assert np.min(np.max(np.abs(q - w), axis=1)) < 0.01
+
+
+def test_arc_poses_turn_about_the_axis():
+    start = Transform(np.array([0.3, 0.2, 1.0]), DOWN)
+    pivot, axis = np.array([0.3, 0.5, 1.0]), np.array([0.0, 0.0, 1.0])
+    poses = arc_poses(start, axis, pivot, 10, np.radians(60))
+    radius = np.linalg.norm(start.position - pivot)
+    for k, pose in enumerate(poses, 1):
+        assert np.linalg.norm(pose.position - pivot) == pytest.approx(radius)
+        assert np.degrees(rotation_angle_between(start.quaternion, pose.quaternion)) == pytest.approx(6 * k)
+    with pytest.raises(ValueError, match="axis"):
+        arc_poses(start, [0, 0, 0], pivot, 5, 1.0)
+
+
+def test_failures_are_typed_and_explained():
+    world = objects_world({"name": "tea", "type": "tea_box", "position": [0.0, 0.0], "yaw": 90})
+    backend, motion = planner_for(world, "panda")
+    home = backend.joint_positions()
+    with pytest.raises(UnknownPlannerError, match="RRTConnect"):
+        motion.planner.plan(home, home, planner="Dijkstra")
+    with pytest.raises(UnknownPlannerError, match="not available"):
+        motion.planner.plan(home, home, planner="SBL")
+    with pytest.raises(IKError, match="nearest pose reached") as error:
+        motion.ik(Transform(np.array([1.5, 0.0, 1.0]), DOWN))
+    assert error.value.position_error > 0.3
+    inside = motion.kinematics.solve(Transform(np.array([0.0, 0.0, TABLE + 0.03]), DOWN), home, max_iterations=200).q
+    with pytest.raises(StateInCollisionError, match="tea") as collision:
+        motion.planner.plan(inside, home)
+    assert collision.value.which == "start"
+    with pytest.raises(IKError, match="collision"):
+        motion.ik(Transform(np.array([0.0, 0.0, TABLE + 0.03]), DOWN))
+    side_a = motion.ik(Transform(np.array([0.0, -0.2, TABLE + 0.05]), DOWN))
+    side_b = motion.ik(Transform(np.array([0.0, 0.2, TABLE + 0.05]), DOWN), side_a)
+    with pytest.raises(PlannerTimeoutError, match="RRTConnect"):
+        motion.planner.plan(side_a, side_b, timeout=1e-5)
+    with pytest.raises(ValueError, match="7 joint values"):
+        motion.planner.plan(home[:3], home)
+
+
+def test_every_listed_planner_solves_a_simple_query():
+    backend, motion = planner_for(objects_world(), "panda")
+    start = backend.joint_positions()
+    goal = motion.ik(Transform(np.array([0.1, 0.25, TABLE + 0.2]), DOWN))
+    for name in planner_names():
+        path = motion.planner.plan(start, goal, planner=name, timeout=5.0)
+        assert path.planner == name
+        motion.planner.validate(path.waypoints)
+    assert len(planner_names()) >= 12
+
+
+def test_time_parameterisation_handles_corners_closer_than_a_piece():
+    waypoints = np.array([[0.0, 0.0], [0.5, 0.0], [0.5, 0.005], [1.0, 0.005]])
+    trajectory = time_parameterize(waypoints, np.ones(2), np.ones(2))
+    assert np.all(np.isfinite(trajectory.times)) and np.all(np.diff(trajectory.times) > 0)
+    np.testing.assert_allclose(trajectory.positions[-1], waypoints[-1])
