@@ -78,11 +78,11 @@ def test_20cm_cartesian_move_in_free_space_is_achieved(robot):
     start = backend.joint_positions()
     pose = motion.kinematics.fk(start)
     result = cartesian_path(
-        motion.kinematics, motion.scene, start, [Transform(pose.position + [0.0, 0.2, 0.0], pose.quaternion)]
+        motion.kinematics, motion.scene, start, [Transform(pose.position + np.array([0.0, 0.2, 0.0]), pose.quaternion)]
     )
     assert result.fraction >= 0.99, result.reason
     end = motion.kinematics.fk(result.waypoints[-1])
-    np.testing.assert_allclose(end.position, pose.position + [0, 0.2, 0], atol=1e-3)
+    np.testing.assert_allclose(end.position, pose.position + np.array([0, 0.2, 0]), atol=1e-3)
     # Every intermediate TCP position lies on the straight line.
     for q in result.waypoints:
         offset = motion.kinematics.fk(q).position - pose.position

@@ -25,7 +25,8 @@ def solve_ik(
     The first seed is ``reference`` (usually the current configuration), the others are drawn uniformly within
     the joint limits (deterministically, from ``seed``). After ``attempts`` seeds the search stops if it has a
     solution, else goes on up to ``max_attempts`` (a redundant arm may have free solutions on few branches only).
-    Among the solutions found, the one nearest ``reference`` is returned. Raises :class:`IKError` with the nearest pose reached, or with the collisions of the solutions.
+    Among the solutions found, the one nearest ``reference`` is returned. Raises :class:`IKError` with the
+    nearest pose reached, or with the collisions of the solutions.
     """
     reference = np.asarray(reference, dtype=float)
     rng = np.random.default_rng(seed)

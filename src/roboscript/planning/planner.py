@@ -83,6 +83,7 @@ class JointPath:
     planner: str = ""
     planning_time: float = 0.0  # seconds in the planner and simplifier
     validation_time: float = 0.0  # seconds of dense validation
+    replans: int = 0  # times the path failed dense validation and was planned again with finer checks
 
     @property
     def start(self) -> np.ndarray:
@@ -123,9 +124,13 @@ def densify(waypoints: np.ndarray, lever: np.ndarray, step: float) -> np.ndarray
 
 
 def first_collision(scene: PlanningScene, points: np.ndarray) -> int:
-    """Index of the first point in collision, or -1."""
+    """Index of the first point in collision or outside the joint limits, or -1."""
+    # Points between in-limit points are within the limits too (the limits are a box); test only the ends.
+    for index in (0, len(points) - 1):
+        if not scene.within_limits(points[index]):
+            return index
     for index, q in enumerate(points):
-        if not scene.is_valid(q):
+        if not scene.is_free(q):
             return index
     return -1
 
@@ -133,7 +138,7 @@ def first_collision(scene: PlanningScene, points: np.ndarray) -> int:
 class JointPlanner:
     """Plans collision-free joint paths in a :class:`PlanningScene` with a chosen OMPL planner."""
 
-    def __init__(self, scene: PlanningScene, check_step: float = 0.03, validation_step: float | None = None):
+    def __init__(self, scene: PlanningScene, check_step: float = 0.08, validation_step: float | None = None):
         """``check_step``: joint-space distance (radians) between the planner's own motion checks; the dense
         validation afterwards makes the path safe, this only sets how often the planner must repair.
         ``validation_step``: metres any point of the arm may move between two checks of the final path (default:
@@ -162,9 +167,6 @@ class JointPlanner:
         if not self.scene.is_valid(q):
             raise StateInCollisionError(which, self.scene.collisions(q))
 
-    def segment_is_free(self, a: np.ndarray, b: np.ndarray) -> bool:
-        return first_collision(self.scene, densify(np.array([a, b]), self.lever, self.validation_step)) < 0
-
     def validate(self, waypoints: np.ndarray) -> None:
         """Dense validation; raises :class:`PathInCollisionError` at the first colliding point."""
         points = densify(waypoints, self.lever, self.validation_step)
@@ -192,17 +194,31 @@ class JointPlanner:
         self.check_state(start, "start")
         self.check_state(goal, "goal")
         began = time.perf_counter()
-        waypoints = self._solve(name, start, goal, timeout, simplify, optimize)
-        planned = time.perf_counter()
-        try:
-            self.validate(waypoints)
-        except PathInCollisionError:
-            # Rare: the planner's coarser checks missed a graze. Refine the path rather than return it.
-            waypoints = self._repair(waypoints)
-        return JointPath(waypoints, name, planned - began, time.perf_counter() - planned)
+        validation = 0.0
+        check_step = self.check_step
+        for attempt in range(3):
+            # The planner's motion checks are coarse for speed; a path that fails the dense validation is planned
+            # again with checks four times finer (rare: a graze between two coarse checks).
+            waypoints = self._solve(name, start, goal, timeout, simplify, optimize, check_step)
+            checked = time.perf_counter()
+            points = densify(waypoints, self.lever, self.validation_step)
+            index = first_collision(self.scene, points)
+            validation += time.perf_counter() - checked
+            if index < 0:
+                total = time.perf_counter() - began
+                return JointPath(waypoints, name, total - validation, validation, attempt)
+            check_step /= 4
+        raise PathInCollisionError(index, len(points), self.scene.collisions(points[index]))
 
     def _solve(
-        self, name: str, start: np.ndarray, goal: np.ndarray, timeout: float, simplify: bool, optimize: bool
+        self,
+        name: str,
+        start: np.ndarray,
+        goal: np.ndarray,
+        timeout: float,
+        simplify: bool,
+        optimize: bool,
+        check_step: float,
     ) -> np.ndarray:
         ob, og, _ = _ompl()
         dof = self.scene.dof
@@ -224,7 +240,7 @@ class JointPlanner:
 
         setup.setStateValidityChecker(valid)
         info = setup.getSpaceInformation()
-        info.setStateValidityCheckingResolution(min(1.0, self.check_step / space.getMaximumExtent()))
+        info.setStateValidityCheckingResolution(min(1.0, check_step / space.getMaximumExtent()))
         start_state, goal_state = space.allocState(), space.allocState()
         for j in range(dof):
             start_state[j], goal_state[j] = float(start[j]), float(goal[j])
@@ -242,15 +258,3 @@ class JointPlanner:
             setup.simplifySolution(min(0.1, timeout))
         path = setup.getSolutionPath()
         return np.array([[path.getState(i)[j] for j in range(dof)] for i in range(path.getStateCount())])
-
-    def _repair(self, waypoints: np.ndarray) -> np.ndarray:
-        """Replaces each colliding segment by a sub-plan between its ends; raises if that fails too."""
-        repaired = [waypoints[0]]
-        for a, b in itertools.pairwise(waypoints):
-            if self.segment_is_free(a, b):
-                repaired.append(b)
-                continue
-            detour = self._solve("RRTConnect", a, b, 1.0, True, False)
-            self.validate(detour)
-            repaired.extend(detour[1:])
-        return np.array(repaired)

@@ -81,6 +81,9 @@ class PlanningScene:
         gripper = np.zeros(nbody, dtype=bool)
         gripper[self._gripper_bodies] = True
         self._set_bits(~self._is_robot, "env", 0.0)
+        # The floor is out of the arm's reach (the table is in the way) and a plane is tested against every geom.
+        planes = (model.geom_type == mujoco.mjtGeom.mjGEOM_PLANE) & (model.geom_bodyid == 0)
+        model.geom_contype[planes], model.geom_conaffinity[planes] = 0, 0
         self._set_bits(self._is_robot & moved & ~first_link & ~gripper, "arm", padding)
         self._set_bits(base, "base", 0.0)
         self._set_bits(first_link, "first_link", padding)

@@ -15,7 +15,6 @@ import numpy as np
 
 from roboscript.sim.trajectory import JointTrajectory
 
-
 _SHARP_TURN = 2 * np.sin(np.radians(10) / 2)  # chord between unit tangents 10 degrees apart
 
 

@@ -1,0 +1,77 @@
+"""Planned motions executed in simulation, both arms: pick-and-place into a bowl, and opening a drawer."""
+
+import numpy as np
+import pytest
+
+from roboscript.backends.mujoco_backend import MujocoBackend
+from roboscript.geometry import Transform, matrix_to_quat
+from roboscript.planning import MotionPlanner
+from roboscript.sim.world_file import parse_world
+
+ROBOTS = ("panda", "ur5e")
+DOWN = matrix_to_quat(np.array([[1.0, 0, 0], [0, -1.0, 0], [0, 0, -1.0]]))
+
+
+@pytest.mark.parametrize("robot", ROBOTS)
+def test_pick_a_box_and_place_it_into_a_bowl(robot):
+    world = parse_world(
+        {
+            "name": "pick_and_place",
+            "objects": [
+                {"name": "box", "type": "blue_box", "position": [0.0, -0.2]},
+                {"name": "bowl", "type": "white_bowl", "position": [0.0, 0.2]},
+            ],
+        }
+    )
+    backend = MujocoBackend(world, robot=robot, settle=0.5)
+    motion = MotionPlanner.for_mujoco(backend)
+    gt = backend.ground_truth
+    center = gt.box("box").center
+    motion.move_to_pose(Transform(center + np.array([0.0, 0.0, 0.125]), DOWN))
+    motion.scene.allow("gripper", "box")
+    motion.move_in_direction([0, 0, -1], 0.12)
+    assert backend.close_gripper().blocked
+    motion.attach("box")
+    motion.move_in_direction([0, 0, 1], 0.15)
+    bowl = gt.box("bowl")
+    motion.move_to_pose(Transform(np.array([*bowl.center[:2], bowl.upper[2] + 0.12]), DOWN))
+    motion.move_in_direction([0, 0, -1], 0.06)
+    backend.open_gripper()
+    motion.detach("box")
+    motion.move_in_direction([0, 0, 1], 0.1)
+    backend.wait(0.5)
+    box = gt.box("box")
+    assert np.all(box.lower[:2] >= bowl.lower[:2]) and np.all(box.upper[:2] <= bowl.upper[:2]), (box, bowl)
+    assert bowl.lower[2] < box.lower[2] < bowl.lower[2] + 0.03, "the box rests on the bowl's floor"
+
+
+@pytest.mark.parametrize("robot", ROBOTS)
+def test_open_a_drawer_by_its_handle(robot):
+    world = parse_world(
+        {
+            "name": "drawer",
+            "objects": [{"name": "box", "type": "gelatin_box", "inside": "cabinet.drawer_1"}],
+            "furniture": [{"name": "cabinet", "type": "cabinet", "position": [-0.42, 0.62], "rows": ["drawer"] * 3}],
+        }
+    )
+    backend = MujocoBackend(world, robot=robot, settle=0.5)
+    motion = MotionPlanner.for_mujoco(backend)
+    gt = backend.ground_truth
+    handle = gt.box("cabinet.handle_1").center
+    box_before = gt.pose("box").position
+    # Horizontal approach against the drawer front (-x), turned 40 degrees towards the robot, which keeps the
+    # wrist within reach when the drawer is pulled out; the fingers close vertically around the bar.
+    alpha = 0.7
+    approach = np.array([-np.cos(alpha), np.sin(alpha), 0.0])
+    closing = np.array([0.0, 0.0, 1.0])
+    grasp = matrix_to_quat(np.column_stack([np.cross(closing, approach), closing, approach]))
+    motion.move_to_pose(Transform(handle - 0.1 * approach, grasp))
+    motion.scene.allow("gripper", "cabinet.handle_1")
+    motion.scene.allow("gripper", "cabinet.drawer_1")
+    motion.move_in_direction(approach, 0.1)
+    assert backend.close_gripper().blocked
+    motion.move_in_direction([1, 0, 0], 0.2)
+    opened = gt.joint("cabinet.drawer_1").value
+    assert opened == pytest.approx(0.2, abs=0.02)
+    moved = gt.pose("box").position - box_before
+    assert moved[0] == pytest.approx(opened, abs=0.02), "the box inside comes out with the drawer"
