@@ -211,3 +211,19 @@ def test_time_parameterisation_handles_corners_closer_than_a_piece():
     trajectory = time_parameterize(waypoints, np.ones(2), np.ones(2))
     assert np.all(np.isfinite(trajectory.times)) and np.all(np.diff(trajectory.times) > 0)
     np.testing.assert_allclose(trajectory.positions[-1], waypoints[-1])
+
+
+def test_contacts_allowed_at_pickup_are_withdrawn_once_the_object_leaves_them():
+    world = objects_world({"name": "box", "type": "blue_box", "position": [0.0, 0.0]})
+    backend, motion = planner_for(world, "panda")
+    scene = motion.scene
+    grasp = motion.ik(Transform(backend.ground_truth.box("box").center, DOWN))
+    scene.update(backend.sim_world.data.qpos)
+    scene.attach("box", grasp)  # resting on the table: box-table contact allowed
+    assert scene.is_valid(grasp)
+    lifted = motion.ik(Transform(backend.ground_truth.box("box").center + np.array([0, 0, 0.1]), DOWN), grasp)
+    state = backend.sim_world.data.qpos.copy()
+    state[backend.sim_world.robot.qpos] = lifted
+    scene.update(state)  # the box (carried along) has left the table
+    assert not scene.is_valid(grasp), "back on the table, the box now collides with it"
+    assert ("box", "table") in scene.collisions(grasp)

@@ -135,6 +135,7 @@ class PlanningScene:
         self.data.qpos[:] = qpos
         if self._attached:
             self._place(qpos[self._qpos])
+            mujoco.mj_collision(self.model, self.data)
             touching = {b for pair in self._contact_bodies() for b in pair}
             for name, allowed in self._attached_allowed.items():
                 body = self._attached[name].body
@@ -171,10 +172,12 @@ class PlanningScene:
         self._place(q)
         mujoco.mj_collision(self.model, self.data)
         pairs = []
+        moving = self._is_robot.copy()  # the robot and what it holds come first in each pair
+        moving[[attachment.body for attachment in self._attached.values()]] = True
         for a, b in self._contact_bodies():
             if not self._allowed[a, b]:
                 pair = (self.body_labels[a], self.body_labels[b])
-                if self._is_robot[b] and not self._is_robot[a]:
+                if moving[b] and not moving[a]:
                     pair = pair[::-1]
                 if pair not in pairs:
                     pairs.append(pair)
