@@ -217,11 +217,12 @@ def test_contacts_allowed_at_pickup_are_withdrawn_once_the_object_leaves_them():
     world = objects_world({"name": "box", "type": "blue_box", "position": [0.0, 0.0]})
     backend, motion = planner_for(world, "panda")
     scene = motion.scene
-    grasp = motion.ik(Transform(backend.ground_truth.box("box").center, DOWN))
+    center = backend.ground_truth.box("box").center
+    grasp = motion.ik(Transform(center, DOWN))
+    lifted = motion.ik(Transform(center + np.array([0, 0, 0.1]), DOWN), grasp)
     scene.update(backend.sim_world.data.qpos)
     scene.attach("box", grasp)  # resting on the table: box-table contact allowed
     assert scene.is_valid(grasp)
-    lifted = motion.ik(Transform(backend.ground_truth.box("box").center + np.array([0, 0, 0.1]), DOWN), grasp)
     state = backend.sim_world.data.qpos.copy()
     state[backend.sim_world.robot.qpos] = lifted
     scene.update(state)  # the box (carried along) has left the table
