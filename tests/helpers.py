@@ -9,9 +9,11 @@ from __future__ import annotations
 import mujoco
 import numpy as np
 
+from roboscript.geometry import matrix_to_quat
 from roboscript.sim.world import SimWorld
 
 DOWN = np.array([[1.0, 0.0, 0.0], [0.0, -1.0, 0.0], [0.0, 0.0, -1.0]])  # TCP z pointing at the table
+DOWN_QUAT = matrix_to_quat(DOWN)
 
 
 def tcp_ik(world: SimWorld, position, rotation=DOWN, q0=None, iterations: int = 300) -> np.ndarray:

@@ -3,13 +3,13 @@
 import numpy as np
 import pytest
 
+from helpers import DOWN_QUAT as DOWN
 from roboscript.backends.mujoco_backend import MujocoBackend
 from roboscript.geometry import Transform, matrix_to_quat
 from roboscript.planning import MotionPlanner
 from roboscript.sim.world_file import parse_world
 
 ROBOTS = ("panda", "ur5e")
-DOWN = matrix_to_quat(np.array([[1.0, 0, 0], [0, -1.0, 0], [0, 0, -1.0]]))
 
 
 @pytest.mark.parametrize("robot", ROBOTS)

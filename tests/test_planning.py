@@ -3,8 +3,9 @@
 import numpy as np
 import pytest
 
+from helpers import DOWN_QUAT as DOWN
 from roboscript.backends.mujoco_backend import MujocoBackend
-from roboscript.geometry import Transform, matrix_to_quat, rotation_angle_between
+from roboscript.geometry import Transform, rotation_angle_between
 from roboscript.planning import (
     CartesianPathIncompleteError,
     IKError,
@@ -23,7 +24,6 @@ from roboscript.sim.world_file import parse_world
 
 ROBOTS = ("panda", "ur5e")
 TABLE = 0.82
-DOWN = matrix_to_quat(np.array([[1.0, 0, 0], [0, -1.0, 0], [0, 0, -1.0]]))
 
 
 def planner_for(world, robot, **kwargs) -> tuple[MujocoBackend, MotionPlanner]:

@@ -14,7 +14,7 @@ import numpy as np
 
 from roboscript.geometry import Transform, quat_from_axis_angle, rotation_angle_between
 from roboscript.planning.kinematics import ArmKinematics
-from roboscript.planning.planner import densify, first_collision, lever_arms
+from roboscript.planning.planner import densify, first_collision
 from roboscript.planning.scene import PlanningScene
 
 
@@ -93,7 +93,6 @@ def cartesian_path(
     start = np.asarray(start, dtype=float)
     if not poses:
         raise ValueError("a Cartesian path needs at least one pose")
-    lever = lever_arms(scene) if scene is not None else None
     current_pose = kinematics.fk(start)
     targets: list[Transform] = []
     anchors = [current_pose, *poses]
@@ -113,7 +112,7 @@ def cartesian_path(
             j = int(np.argmax(np.abs(result.q - q)))
             reason = f"joint {j + 1} would jump {abs(result.q[j] - q[j]):.2f} rad (near a singularity or a joint limit)"
         elif scene is not None:
-            points = densify(np.array([q, result.q]), lever, scene.padding)
+            points = densify(np.array([q, result.q]), scene.lever_arms, scene.padding)
             index = first_collision(scene, points)
             if index >= 0:
                 pairs = scene.collisions(points[index])

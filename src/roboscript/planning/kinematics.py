@@ -61,11 +61,6 @@ class ArmKinematics:
         mujoco.mj_kinematics(self.model, self.data)
         return Transform.from_rotation(self.data.site_xpos[self._site], self.data.site_xmat[self._site].reshape(3, 3))
 
-    def fk_position(self, q: np.ndarray) -> np.ndarray:
-        self.data.qpos[self._qpos] = q
-        mujoco.mj_kinematics(self.model, self.data)
-        return self.data.site_xpos[self._site].copy()
-
     def solve(
         self,
         target: Transform,

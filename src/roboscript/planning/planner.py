@@ -97,21 +97,6 @@ class JointPath:
         return float(np.sum(np.linalg.norm(np.diff(self.waypoints, axis=0), axis=1)))
 
 
-def lever_arms(scene: PlanningScene, beyond_tcp: float = 0.15) -> np.ndarray:
-    """An upper bound, per arm joint, of how far any point of the arm (and what it holds) is from that joint.
-
-    The distance between consecutive joint anchors is fixed by the link between them, so the chain of those
-    distances to the TCP, plus ``beyond_tcp`` for fingers and a held object, bounds it in every configuration.
-    Multiplying by a joint's motion bounds the displacement it causes.
-    """
-    model, data, robot = scene.model, scene.data, scene.robot
-    scene._kinematics(np.clip(np.zeros(scene.dof), scene.joint_lower, scene.joint_upper))
-    anchors = [data.xanchor[int(model.dof_jntid[dof])].copy() for dof in robot.dof]
-    anchors.append(data.site_xpos[robot.tcp_site].copy())
-    links = [float(np.linalg.norm(b - a)) for a, b in itertools.pairwise(anchors)]
-    return np.array([sum(links[k:]) + beyond_tcp for k in range(scene.dof)])
-
-
 def densify(waypoints: np.ndarray, lever: np.ndarray, step: float) -> np.ndarray:
     """Points along the polyline such that no point of the arm moves more than ``step`` metres between two."""
     out = [waypoints[0]]
@@ -149,7 +134,7 @@ class JointPlanner:
         self.validation_step = scene.padding if validation_step is None else validation_step
         if self.validation_step <= 0:
             raise ValueError("validation_step must be > 0 metres (the scene's padding is 0: give one explicitly)")
-        self.lever = lever_arms(scene)
+        self.lever = scene.lever_arms
 
     def check_state(self, q: np.ndarray, which: str) -> None:
         """Raises if ``q`` is out of limits or in collision, naming the joint or the bodies."""

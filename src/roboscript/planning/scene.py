@@ -12,6 +12,8 @@ Objects come from ground truth here (:meth:`PlanningScene.from_sim_world` copies
 from __future__ import annotations
 
 import copy
+import functools
+import itertools
 from collections.abc import Iterable
 from dataclasses import dataclass
 
@@ -19,7 +21,7 @@ import mujoco
 import numpy as np
 
 from roboscript.geometry import Transform
-from roboscript.sim.world import RobotBinding, SimWorld
+from roboscript.sim.world import RobotBinding, SimWorld, is_descendant
 
 # contype/conaffinity bits. Two geoms collide if the type of either shares a bit with the affinity of the other.
 # Moving arm links collide with everything; the environment only with the robot and held objects (objects resting on
@@ -73,7 +75,7 @@ class PlanningScene:
         self._is_robot = np.zeros(nbody, dtype=bool)
         self._is_robot[list(robot.body_ids)] = True
         tcp_body = model.site_bodyid[robot.tcp_site]
-        self._gripper_bodies = np.array([b for b in robot.body_ids if _is_descendant(model, b, tcp_body)])
+        self._gripper_bodies = np.array([b for b in robot.body_ids if is_descendant(model, b, tcp_body)])
         self._collides = (model.geom_contype | model.geom_conaffinity) > 0
         moved = np.array([_moved_by_arm(model, b, robot) for b in range(nbody)])
         base = self._is_robot & ~moved
@@ -183,6 +185,20 @@ class PlanningScene:
                     pairs.append(pair)
         return pairs
 
+    @functools.cached_property
+    def lever_arms(self) -> np.ndarray:
+        """An upper bound, per arm joint, of how far any point of the arm (and what it holds) is from that joint.
+
+        The distance between consecutive joint anchors is fixed by the link between them, so the chain of those
+        distances to the TCP, plus 0.15 m for fingers and a held object, bounds it in every configuration.
+        Multiplying by a joint's motion bounds the displacement it causes.
+        """
+        self._kinematics(np.clip(np.zeros(self.dof), self.joint_lower, self.joint_upper))
+        anchors = [self.data.xanchor[int(self.model.dof_jntid[dof])].copy() for dof in self.robot.dof]
+        anchors.append(self.data.site_xpos[self.robot.tcp_site].copy())
+        links = [float(np.linalg.norm(b - a)) for a, b in itertools.pairwise(anchors)]
+        return np.array([sum(links[k:]) + 0.15 for k in range(self.dof)])
+
     def tcp_pose(self, q: np.ndarray) -> Transform:
         """Forward kinematics of the TCP."""
         self._kinematics(q)
@@ -203,10 +219,7 @@ class PlanningScene:
             return self._attached[name]
         body = self.object_bodies[name]
         q = self.arm_positions() if q is None else np.asarray(q, dtype=float)
-        self._kinematics(q)
-        tcp = Transform.from_rotation(
-            self.data.site_xpos[self.robot.tcp_site], self.data.site_xmat[self.robot.tcp_site].reshape(3, 3)
-        )
+        tcp = self.tcp_pose(q)
         obj = Transform.from_rotation(self.data.xpos[body], self.data.xmat[body].reshape(3, 3))
         attachment = Attachment(name, body, tcp.inverse().compose(obj).matrix())
         self._set_bits(self._body_mask(body), "held", self.padding)
@@ -233,13 +246,7 @@ class PlanningScene:
 
     def allow(self, a: str, b: str, allowed: bool = True) -> None:
         """Allows (or forbids again) contact between two named things, e.g. the fingers and an object to grasp."""
-        self._allowed_pair_bodies(a, b, allowed)
-
-    def _allowed_pair_bodies(self, a: str, b: str, allowed: bool) -> None:
-        first, second = self._bodies_named(a), self._bodies_named(b)
-        for i in first:
-            for j in second:
-                self._allowed[i, j] = self._allowed[j, i] = allowed
+        self._allow_bodies(self._bodies_named(a), self._bodies_named(b), allowed)
 
     def _bodies_named(self, name: str) -> list[int]:
         if name == "gripper":
@@ -284,25 +291,17 @@ class PlanningScene:
         mask[body] = True
         return mask
 
-    def _allow_bodies(self, first: Iterable[int], second: Iterable[int]) -> None:
+    def _allow_bodies(self, first: Iterable[int], second: Iterable[int], allowed: bool = True) -> None:
         second = list(second)
         for i in first:
             for j in second:
-                self._allowed[i, j] = self._allowed[j, i] = True
+                self._allowed[i, j] = self._allowed[j, i] = allowed
 
     def _set_bits(self, bodies: np.ndarray, role: str, margin: float) -> None:
         """Collision bits of a role, and margin (MuJoCo reports pairs closer than the larger margin), of geoms."""
         geoms = bodies[self.model.geom_bodyid] & self._collides
         self.model.geom_contype[geoms], self.model.geom_conaffinity[geoms] = _BITS[role]
         self.model.geom_margin[geoms] = margin
-
-
-def _is_descendant(model: mujoco.MjModel, body: int, root: int) -> bool:
-    while body > 0:
-        if body == root:
-            return True
-        body = model.body_parentid[body]
-    return False
 
 
 def _moved_by_arm(model: mujoco.MjModel, body: int, robot: RobotBinding) -> bool:

@@ -13,7 +13,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from roboscript.sim.trajectory import JointTrajectory
+from roboscript.sim.trajectory import JointTrajectory, scaled_limits
 
 _SHARP_TURN = 2 * np.sin(np.radians(10) / 2)  # chord between unit tangents 10 degrees apart
 
@@ -40,10 +40,7 @@ def time_parameterize(
     max_step: float = 0.02,
 ) -> JointTrajectory:
     """A trajectory along ``waypoints`` (N, dof), from rest to rest, within ``speed_scale`` times the limits."""
-    if not 0 < speed_scale <= 1:
-        raise ValueError(f"speed_scale must be in (0, 1], got {speed_scale}")
-    vmax = np.asarray(max_velocity, dtype=float) * speed_scale
-    amax = np.asarray(max_acceleration, dtype=float) * speed_scale
+    vmax, amax = scaled_limits(max_velocity, max_acceleration, speed_scale)
     points = resample_polyline(waypoints, max_step)
     if len(points) < 2:
         dof = points.shape[1]

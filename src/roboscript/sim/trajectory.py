@@ -81,6 +81,15 @@ class JointTrajectory:
         return q[0], dq[0], ddq[0]
 
 
+def scaled_limits(
+    max_velocity: np.ndarray, max_acceleration: np.ndarray, speed_scale: float
+) -> tuple[np.ndarray, np.ndarray]:
+    """Per-joint velocity and acceleration limits scaled by ``speed_scale``, which must be in (0, 1]."""
+    if not 0 < speed_scale <= 1:
+        raise ValueError(f"speed_scale must be in (0, 1], got {speed_scale}")
+    return np.asarray(max_velocity, dtype=float) * speed_scale, np.asarray(max_acceleration, dtype=float) * speed_scale
+
+
 def min_jerk_through(
     waypoints: np.ndarray,
     max_velocity: np.ndarray,
@@ -96,10 +105,7 @@ def min_jerk_through(
     waypoints = np.atleast_2d(np.asarray(waypoints, dtype=float))
     if len(waypoints) < 2:
         raise ValueError("min_jerk_through needs at least two waypoints")
-    if not 0 < speed_scale <= 1:
-        raise ValueError(f"speed_scale must be in (0, 1], got {speed_scale}")
-    vmax = np.asarray(max_velocity) * speed_scale
-    amax = np.asarray(max_acceleration) * speed_scale
+    vmax, amax = scaled_limits(max_velocity, max_acceleration, speed_scale)
     times, positions, velocities = [0.0], [waypoints[0]], [np.zeros(waypoints.shape[1])]
     t0 = 0.0
     for a, b in pairwise(waypoints):

@@ -61,7 +61,7 @@ class RobotBinding:
         joints = [model.joint(q(j)) for j in description.arm_joints]
         actuators = [model.actuator(q(a)) for a in description.arm_actuators]
         root = model.body(q(_root_body_name(description))).id
-        bodies = frozenset(b for b in range(model.nbody) if _is_descendant(model, b, root))
+        bodies = frozenset(b for b in range(model.nbody) if is_descendant(model, b, root))
         return RobotBinding(
             description=description,
             qpos=np.array([j.qposadr[0] for j in joints]),
@@ -82,7 +82,8 @@ def _root_body_name(description: RobotDescription) -> str:
     return {"panda": "link0", "ur5e": "base"}[description.name]
 
 
-def _is_descendant(model: mujoco.MjModel, body: int, root: int) -> bool:
+def is_descendant(model: mujoco.MjModel, body: int, root: int) -> bool:
+    """Whether ``body`` is ``root`` or lies in its subtree."""
     while body > 0:
         if body == root:
             return True
@@ -328,7 +329,7 @@ def _index_entities(model: mujoco.MjModel, world: WorldSpec, binding: RobotBindi
         )
     for cabinet in world.cabinets:
         root = model.body(cabinet.name).id
-        subtree = [b for b in range(model.nbody) if _is_descendant(model, b, root)]
+        subtree = [b for b in range(model.nbody) if is_descendant(model, b, root)]
         add(cabinet.name, "furniture", subtree, category="cabinet", color="white")
         for part in cabinet.part_names():
             body = model.body(part).id
