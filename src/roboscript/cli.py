@@ -103,6 +103,80 @@ def cmd_render(args: argparse.Namespace) -> int:
     return 0
 
 
+def cmd_tasks(args: argparse.Namespace) -> int:
+    from roboscript.bench.tasks import TASKS
+
+    for task in TASKS.values():
+        print(f"{task.id:12s} {task.world:32s} {task.instruction}")
+    return 0
+
+
+def _print_result(result: dict) -> None:
+    print(
+        f"{result['task']} ({result['robot']}, {result['trials']} trials): "
+        f"grammar {result['grammar_correctness']:.2f}, semantic {result['semantic_correctness']:.2f}, "
+        f"finished steps {result['finished_steps_ratio']:.2f}, whole task {result['whole_task_success']:.2f}"
+    )
+    for trial in result["per_trial"]:
+        passed = sum(c["passed"] for c in trial["checks"])
+        line = f"  trial {trial['trial']} (seed {trial['seed']}): {passed}/{len(trial['checks'])} checks"
+        line += f", sim {trial['sim_time_s']:.1f} s, wall {trial['wall_time_s']:.1f} s"
+        if trial["error"]:
+            line += f"\n    error: {trial['error']}"
+        for check in trial["checks"]:
+            if not check["passed"]:
+                line += f"\n    failed: {check['check']}: {check['detail']}"
+        print(line)
+
+
+def cmd_exec(args: argparse.Namespace) -> int:
+    from roboscript.bench.benchmark import progress_printer, trial_specs
+    from roboscript.bench.metrics import task_result
+    from roboscript.bench.runner import run_isolated
+    from roboscript.bench.tasks import get_task
+
+    get_task(args.task)
+    path = Path(args.program)
+    if not path.is_file():
+        raise ValueError(f"no program file {str(path)!r}")
+    program = path.read_text()
+    specs = trial_specs(args.task, program, args.robot, args.trials, args.seed, args.timeout, args.video)
+    records = run_isolated(specs, args.jobs, None if args.json else progress_printer(len(specs)))
+    result = task_result(args.task, args.robot, records)
+    if args.json:
+        print(json.dumps(result))
+    else:
+        _print_result(result)
+    return 0
+
+
+def cmd_bench(args: argparse.Namespace) -> int:
+    from roboscript.bench.benchmark import run_benchmark
+
+    tasks = [t.strip() for t in args.tasks.split(",") if t.strip()] if args.tasks else None
+    out = args.out or f"out/bench/{args.policy}_{args.robot}"
+    result = run_benchmark(
+        args.policy, tasks, args.robot, args.trials, args.seed, out, args.jobs, args.timeout, progress=not args.json
+    )
+    if args.json:
+        print(json.dumps({"tasks": result["tasks"], "wall_time_s": result["wall_time_s"]}))
+    else:
+        print((Path(result["out"]) / "summary.md").read_text())
+        print(f"wall time {result['wall_time_s']:.1f} s; results in {result['out']}")
+    return 0
+
+
+def _add_run_options(parser: argparse.ArgumentParser) -> None:
+    from roboscript.bench.runner import default_jobs
+
+    parser.add_argument("--robot", choices=["panda", "ur5e"], default="panda")
+    parser.add_argument("--trials", type=int, default=10)
+    parser.add_argument("--seed", type=int, default=0, help="trial i uses seed + i for the world's randomisation")
+    parser.add_argument("--timeout", type=float, default=300.0, help="time limit of one program, wall seconds")
+    parser.add_argument("--jobs", type=int, default=default_jobs(), help="trials run at once (one process each)")
+    parser.add_argument("--json", action="store_true", help="print one JSON object")
+
+
 def build_parser() -> argparse.ArgumentParser:
     parser = argparse.ArgumentParser(prog="roboscript", description=__doc__)
     sub = parser.add_subparsers(dest="command", required=True)
@@ -117,6 +191,19 @@ def build_parser() -> argparse.ArgumentParser:
     render.add_argument("--randomize", action="store_true", help="jitter object poses (deterministic per seed)")
     render.add_argument("--settle", type=float, default=1.0, help="simulated seconds to settle first")
     render.set_defaults(func=cmd_render)
+    sub.add_parser("tasks", help="list the benchmark's tasks and instructions").set_defaults(func=cmd_tasks)
+    run = sub.add_parser("exec", help="run a program on a task's world and evaluate it")
+    run.add_argument("program", help="a Python file written against the tool API")
+    run.add_argument("--task", required=True, help="a task id (see `roboscript tasks`)")
+    run.add_argument("--video", default=None, help="record camera_left into this MP4 file")
+    _add_run_options(run)
+    run.set_defaults(func=cmd_exec)
+    bench = sub.add_parser("bench", help="run the benchmark (resumes an interrupted run in --out)")
+    bench.add_argument("--policy", default="reference", help="where programs come from: reference")
+    bench.add_argument("--tasks", default=None, help="comma-separated task ids; default: all")
+    bench.add_argument("--out", default=None, help="run directory; default out/bench/<policy>_<robot>")
+    _add_run_options(bench)
+    bench.set_defaults(func=cmd_bench)
     return parser
 
 

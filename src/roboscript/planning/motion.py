@@ -69,10 +69,14 @@ class MotionPlanner:
         start = self.sync()
         return self.planner.plan(start, goal, planner or self.default_planner, timeout or self.planning_timeout)
 
-    def ik(self, pose: Transform, reference: np.ndarray | None = None) -> np.ndarray:
-        """A collision-free configuration for the TCP at ``pose``, nearest ``reference`` (default: current)."""
+    def ik(
+        self, pose: Transform, reference: np.ndarray | None = None, attempts: int = 16, max_attempts: int = 150
+    ) -> np.ndarray:
+        """A collision-free configuration for the TCP at ``pose``, nearest ``reference`` (default: current).
+
+        Fewer ``attempts`` make a quick screen of many candidate poses; see :func:`solve_ik`."""
         reference = self.backend.joint_positions() if reference is None else reference
-        return solve_ik(self.kinematics, pose, reference, self.scene)
+        return solve_ik(self.kinematics, pose, reference, self.scene, attempts, max_attempts)
 
     def plan_to_pose(self, pose: Transform, planner: str | None = None, timeout: float | None = None) -> JointPath:
         start = self.sync()

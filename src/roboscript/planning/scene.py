@@ -185,6 +185,14 @@ class PlanningScene:
                     pairs.append(pair)
         return pairs
 
+    def touching(self, a: str, b: str, q: np.ndarray) -> bool:
+        """Whether ``a`` and ``b`` (names, or "gripper") are within the padding of each other with the arm at
+        ``q``, allowed or not."""
+        first, second = set(self._bodies_named(a)), set(self._bodies_named(b))
+        self._place(q)
+        mujoco.mj_collision(self.model, self.data)
+        return any((x in first and y in second) or (y in first and x in second) for x, y in self._contact_bodies())
+
     @functools.cached_property
     def lever_arms(self) -> np.ndarray:
         """An upper bound, per arm joint, of how far any point of the arm (and what it holds) is from that joint.

@@ -105,6 +105,10 @@ class GroundTruth:
             raise ValueError(f"{name!r} has no geometry")
         return geoms_box(self.model, self.data, geoms)
 
+    def geoms(self, name: str) -> np.ndarray:
+        """Ids of the geoms that make up ``name``'s shape."""
+        return self._entity_geoms[self.entity(name).name]
+
     def velocity(self, name: str) -> tuple[np.ndarray, np.ndarray]:
         """(linear, angular) velocity of the entity's body in the world frame."""
         body = self.entity(name).bodies[0]

@@ -163,7 +163,7 @@ def _bowl(bottom_radius: float, top_radius: float, height: float, z0: float = 0.
 def _footed_bowl() -> tuple[Part, ...]:
     foot = disk(0.045, 0.01)
     stem = Part("cylinder", (0.013, 0.02), (0.0, 0.0, 0.03))
-    return (foot, stem, *_bowl(0.05, 0.095, 0.065, z0=0.05))
+    return (foot, stem, *_bowl(0.05, 0.095, 0.085, z0=0.05))
 
 
 def _plate(radius: float, rim: float = 0.022, rim_height: float = 0.016) -> tuple[Part, ...]:
@@ -330,6 +330,18 @@ for _color in ("white", "blue", "red", "green", "yellow"):
             interior=((-0.08, -0.08, 0.008), (0.08, 0.08, 0.1)),
         )
     )
+_register(
+    ObjectType(
+        "white_serving_plate",
+        "plate",
+        "white",
+        _plate(0.16, rim=0.026),
+        1800,
+        "a large white serving plate, 32 cm across",
+        container=True,
+        interior=((-0.115, -0.115, 0.008), (0.115, 0.115, 0.1)),
+    )
+)
 for _color in ("white", "blue", "pink"):
     _register(
         ObjectType(
@@ -363,9 +375,9 @@ _register(
         "white",
         _footed_bowl(),
         1800,
-        "a white footed bowl on a short stem, 19 cm across",
+        "a white footed bowl on a short stem, 19 cm across, 8.5 cm deep",
         container=True,
-        interior=((-0.06, -0.06, 0.058), (0.06, 0.06, 0.16)),
+        interior=((-0.06, -0.06, 0.058), (0.06, 0.06, 0.18)),
     )
 )
 _register(

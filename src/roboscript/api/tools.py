@@ -1,0 +1,549 @@
+"""The tool API: the functions a generated program calls (DESIGN.md §3), on a backend, perception and planner.
+
+Every tool checks its arguments first and raises an error that names what was wrong and what would be valid; a
+failed tool leaves the world as it was (nothing moves before a motion has been planned in full).
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Sequence
+
+import numpy as np
+
+from roboscript.api.placement import (
+    PlacementError,
+    PlacementSpot,
+    ReceptacleFullError,
+    fits,
+    spot_at,
+    spots_in_receptacle,
+)
+from roboscript.api.pose import Pose
+from roboscript.api.signature import tool
+from roboscript.backends.base import Backend
+from roboscript.geometry import Box3D, Transform
+from roboscript.perception.base import Perception, Receptacle, UnknownObjectError
+from roboscript.perception.grasp_detection import GraspPreferences, GripperGeometry, detect_grasps
+from roboscript.perception.grasp_heuristics import GraspError, central_lift_grasps, horizontal_grasps
+from roboscript.planning.cartesian import arc_poses
+from roboscript.planning.errors import IKError, PlanningError
+from roboscript.planning.motion import MotionPlanner
+
+PRE_GRASP_DISTANCE = 0.1
+PLACE_IK_BUDGET = 48  # IK screens per parse_place_pose call (each costs a few milliseconds to ~0.1 s)
+TABLE = "table"
+# Where things may be put down on the table: in front of the robot, clear of its base.
+TABLE_REGION = (np.array([-0.3, -0.45]), np.array([0.28, 0.45]))
+TABLE_TOP = 0.82
+JOINT_TYPES = ("any", "revolute", "prismatic")
+
+
+class ToolAPI:
+    """The tools, bound to one robot. :meth:`namespace` is what a program sees."""
+
+    def __init__(self, backend: Backend, perception: Perception, motion: MotionPlanner, seed: int = 0):
+        self.backend = backend
+        self.perception = perception
+        self.motion = motion
+        self.seed = seed
+        self.gripper = GripperGeometry(max_width=backend.robot.gripper.max_width)
+        self.base_xy = np.asarray(motion.kinematics.mount.position[:2], dtype=float)
+        self._held: list[str] = []
+        # Names the gripper may touch until it has moved clear of them (what it grasped or just let go of).
+        self._touch_allowed: set[str] = set()
+
+    @classmethod
+    def for_simulation(cls, backend, seed: int = 0) -> ToolAPI:
+        """Ground-truth perception and a planning scene with the world's exact geometry."""
+        from roboscript.perception.ground_truth import GroundTruthPerception
+
+        return cls(backend, GroundTruthPerception(backend), MotionPlanner.for_mujoco(backend), seed)
+
+    # --- the program's view ----------------------------------------------------------------------------------
+
+    TOOL_NAMES = (
+        "get_object_name_list",
+        "detect_objects",
+        "get_object_center_position",
+        "get_object_pose",
+        "get_3d_bbox",
+        "get_object_joint_info",
+        "get_plane_normal",
+        "parse_central_lift_grasp_pose",
+        "parse_horizontal_grasp_pose",
+        "parse_adaptive_shape_grasp_pose",
+        "open_gripper",
+        "close_gripper",
+        "get_gripper_pose",
+        "move_to_pose",
+        "move_in_direction",
+        "generate_arc_path_around_joint",
+        "follow_path",
+        "grasp",
+        "parse_place_pose",
+        "attach_object",
+        "detach_object",
+    )
+
+    def namespace(self) -> dict[str, object]:
+        """The names a program may use: every tool, ``np`` and ``Pose``."""
+        names: dict[str, object] = {name: getattr(self, name) for name in self.TOOL_NAMES}
+        names["np"] = np
+        names["Pose"] = Pose
+        return names
+
+    # --- perception tools ------------------------------------------------------------------------------------
+
+    @tool
+    def get_object_name_list(self) -> list[str]:
+        """Names of the known objects and furniture parts (``cabinet.drawer_0``, ``cabinet.handle_0``, ...)."""
+        return list(self.perception.names())
+
+    @tool
+    def detect_objects(self, object_list: Sequence[str] | None = None) -> None:
+        """Runs perception for these categories (all if None); a no-op in ground-truth mode."""
+        if object_list is not None:
+            if isinstance(object_list, str) or not all(isinstance(n, str) for n in object_list):
+                raise TypeError(f"object_list must be a list of names, e.g. ['apple', 'bowl'], got {object_list!r}")
+            object_list = list(object_list)
+        self.perception.detect(object_list)
+
+    @tool
+    def get_object_center_position(self, object_name: str) -> np.ndarray:
+        """Centre of the object's 3D box, world frame, metres."""
+        return self.perception.box(self._name(object_name)).center
+
+    @tool
+    def get_object_pose(self, object_name: str) -> Pose:
+        """The object's pose (its frame: for objects the centre of the bottom face)."""
+        return Pose.from_transform(self.perception.pose(self._name(object_name)))
+
+    @tool
+    def get_3d_bbox(self, object_name: str) -> np.ndarray:
+        """``[x_min, y_min, z_min, x_max, y_max, z_max]`` of the object's world-aligned box."""
+        return self.perception.box(self._name(object_name)).as_array()
+
+    @tool
+    def get_object_joint_info(self, object_name: str, position: Sequence[float], type: str = "any") -> dict:  # noqa: A002
+        """The joint of the object closest to ``position``: ``{"joint_position", "joint_axis", "type"}``."""
+        name = self._name(object_name)
+        point = _vector(position, "position")
+        if type not in JOINT_TYPES:
+            raise ValueError(f"type must be one of {', '.join(JOINT_TYPES)}, got {type!r}")
+        joints = [j for j in self.perception.joints(name) if type in ("any", j.type)]
+        if not joints:
+            articulated = [n for n in self.perception.names() if self.perception.joints(n)]
+            kind = "" if type == "any" else f"{type} "
+            raise ValueError(
+                f"{name!r} has no {kind}joint; articulated objects: {', '.join(articulated) or 'none'}"
+            )
+        joint = min(joints, key=lambda j: float(np.linalg.norm(j.position - point)))
+        return {"joint_position": joint.position.copy(), "joint_axis": joint.axis.copy(), "type": joint.type}
+
+    @tool
+    def get_plane_normal(self, object_name: str, position: Sequence[float]) -> np.ndarray:
+        """Outward unit normal of the object's planar face closest to ``position``."""
+        return self.perception.plane_normal(self._name(object_name), _vector(position, "position"))
+
+    @tool
+    def parse_central_lift_grasp_pose(self, object_name: str, description: str = "top") -> Pose:
+        """A top-down grasp at the box centre in x, y; z near the top ("top") or at mid height ("center")."""
+        name = self._name(object_name)
+        candidates = central_lift_grasps(self.perception, name, description, self.gripper.max_width, self.base_xy)
+        return Pose.from_transform(self._first_reachable(name, candidates, "central lift"))
+
+    @tool
+    def parse_horizontal_grasp_pose(self, object_name: str, approach_direction: Sequence[float] | None = None) -> Pose:
+        """A grasp approaching horizontally (handles, upright objects), along ``approach_direction`` if given."""
+        name = self._name(object_name)
+        approach = None if approach_direction is None else _vector(approach_direction, "approach_direction")
+        candidates = horizontal_grasps(self.perception, name, approach, self.gripper.max_width, self.base_xy)
+        return Pose.from_transform(self._first_reachable(name, candidates, "horizontal"))
+
+    @tool
+    def parse_adaptive_shape_grasp_pose(
+        self,
+        object_name: str,
+        preferred_position: Sequence[float] | None = None,
+        preferred_approach_direction: Sequence[float] | None = None,
+        preferred_plane_normal: Sequence[float] | None = None,
+    ) -> Pose:
+        """The best reachable 6-DoF grasp from antipodal sampling over the object's observed points."""
+        name = self._name(object_name)
+        preferences = GraspPreferences(
+            position=None if preferred_position is None else _vector(preferred_position, "preferred_position"),
+            approach=None
+            if preferred_approach_direction is None
+            else _direction(preferred_approach_direction, "preferred_approach_direction"),
+            plane_normal=None
+            if preferred_plane_normal is None
+            else _direction(preferred_plane_normal, "preferred_plane_normal"),
+        )
+        cloud = self.perception.points(name)
+        if len(cloud.points) < 10:
+            raise GraspError(f"{name!r} is hardly visible to the cameras ({len(cloud.points)} points): no grasp detected")
+        candidates = detect_grasps(cloud, self.perception.scene_points(), self.gripper, preferences, seed=self.seed)
+        if not candidates:
+            raise GraspError(
+                f"no collision-free antipodal grasp found on {name!r} ({len(cloud.points)} points seen); "
+                "try parse_central_lift_grasp_pose or parse_horizontal_grasp_pose"
+            )
+        return Pose.from_transform(self._first_reachable(name, [c.pose for c in candidates[:12]], "adaptive"))
+
+    # --- motion tools ----------------------------------------------------------------------------------------
+
+    @tool
+    def open_gripper(self) -> None:
+        """Opens the gripper fully."""
+        self.backend.open_gripper()
+
+    @tool
+    def close_gripper(self) -> None:
+        """Closes the gripper until the fingers stop (on an object, or fully closed)."""
+        self.backend.close_gripper()
+
+    @tool
+    def get_gripper_pose(self) -> Pose:
+        """The present TCP pose (between the fingertips; z is the approach direction)."""
+        return Pose.from_transform(self.backend.tcp_pose())
+
+    @tool
+    def move_to_pose(self, pose: Pose) -> None:
+        """Collision-free motion of the TCP to ``pose``: a straight line when feasible, else a planned path."""
+        target = _pose(pose, "pose")
+        self._allow_start_contacts()
+        self._allow_touch_near(target.position)
+        self.motion.move_to_pose(target)
+        self._after_motion()
+
+    @tool
+    def move_in_direction(self, axis: Sequence[float], distance: float) -> None:
+        """Moves the TCP in a straight line along ``axis`` by ``distance`` metres, keeping its orientation."""
+        direction = _direction(axis, "axis")
+        distance = _number(distance, "distance")
+        if abs(distance) > 1.5:
+            raise ValueError(f"distance is in metres and must be within [-1.5, 1.5], got {distance}")
+        self._allow_start_contacts()
+        self.motion.move_in_direction(direction, distance)
+        self._after_motion()
+
+    @tool
+    def generate_arc_path_around_joint(
+        self, current_pose: Pose, joint_axis: Sequence[float], joint_position: Sequence[float], n: int, angle: float
+    ) -> list[Pose]:
+        """``n`` TCP poses turning ``current_pose`` about the joint axis by ``angle`` degrees in all."""
+        start = _pose(current_pose, "current_pose")
+        axis = _direction(joint_axis, "joint_axis")
+        pivot = _vector(joint_position, "joint_position")
+        if isinstance(n, bool) or not isinstance(n, (int, np.integer)) or not 1 <= n <= 1000:
+            raise ValueError(f"n must be a whole number of waypoints in [1, 1000], got {n!r}")
+        angle = _number(angle, "angle")
+        if abs(angle) > 360:
+            raise ValueError(f"angle is in degrees and must be within [-360, 360], got {angle}")
+        return [Pose.from_transform(t) for t in arc_poses(start, axis, pivot, int(n), math.radians(angle))]
+
+    @tool
+    def follow_path(self, path: Sequence[Pose]) -> None:
+        """Executes a list of poses as one Cartesian path."""
+        if isinstance(path, Pose) or not isinstance(path, (list, tuple)) or not path:
+            raise TypeError(f"path must be a non-empty list of Pose, got {type(path).__name__}")
+        targets = [_pose(p, f"path[{i}]") for i, p in enumerate(path)]
+        self._allow_start_contacts()
+        self.motion.follow(targets)
+        self._after_motion()
+
+    @tool
+    def grasp(self, grasp_pose: Pose) -> None:
+        """Moves to a pre-grasp pose 0.1 m back along the approach axis, then straight to ``grasp_pose``.
+
+        The gripper is not closed; call ``close_gripper()`` next.
+        """
+        target = _pose(grasp_pose, "grasp_pose")
+        approach = target.rotation[:, 2]
+        pre = Transform(target.position - PRE_GRASP_DISTANCE * approach, target.quaternion)
+        self._allow_start_contacts()
+        self._allow_touch_near(target.position)
+        self.motion.move_to_pose(pre)
+        self.motion.follow([target])
+        self._after_motion()
+
+    @tool
+    def parse_place_pose(
+        self, object_name: str, receptacle_name: str | None = None, position: Sequence[float] | None = None
+    ) -> Pose:
+        """A reachable gripper pose that puts the held object into/onto the receptacle, or at ``position``."""
+        name = self._name(object_name)
+        if (receptacle_name is None) == (position is None):
+            raise ValueError("give exactly one of receptacle_name (e.g. 'plate', 'cabinet.drawer_1') or position [x, y, z]")
+        if name not in self._held:
+            held = ", ".join(self._held) or "nothing"
+            raise ValueError(
+                f"parse_place_pose needs {name!r} in the gripper (it holds {held}): grasp it, close_gripper() and "
+                f"attach_object({name!r}) first"
+            )
+        tcp = self.backend.tcp_pose()
+        box = self.perception.box(name)
+        size = box.size
+        others = [self.perception.box(o) for o in self.perception.objects() if o not in (name, receptacle_name)]
+        if position is not None:
+            target = _vector(position, "position")
+            support = max(
+                [TABLE_TOP] + [b.upper[2] for b in others if _overlaps_xy(b, target[:2], size[:2] / 2)]
+            )
+            spots = [spot_at(target, size, support)]
+            where = f"at {np.round(target, 3).tolist()}"
+        else:
+            receptacle = self._receptacle(receptacle_name, name)
+            _, yaw, half = self.perception.footprint(name)
+            inside = [b for b in others if _within(b, receptacle)] if receptacle_name != TABLE else others
+            spots = spots_in_receptacle(receptacle, half, yaw, size[2], inside, self.base_xy)
+            if receptacle_name == TABLE:  # somewhere else than where it was picked up
+                spots = [s for s in spots if np.linalg.norm(s.center[:2] - box.center[:2]) > 0.15]
+            if not spots:
+                inside = [o for o in self.perception.objects() if o != name and _within(self.perception.box(o), receptacle)]
+                raise ReceptacleFullError(
+                    f"{receptacle_name!r} has no free spot for {name!r} ({size[0] * 100:.0f} x {size[1] * 100:.0f} cm); "
+                    f"it holds {', '.join(inside) or 'nothing'}"
+                )
+            where = f"in {receptacle_name!r}"
+        return Pose.from_transform(self._reachable_place(name, tcp, box, spots, where))
+
+    @tool
+    def attach_object(self, object_name: str) -> None:
+        """Makes the planning scene carry ``object_name`` with the gripper (after closing on it)."""
+        name = self._name(object_name)
+        if name in self._held:
+            return
+        if name in self.perception.objects():
+            self.motion.attach(name)
+        else:  # a drawer or door: it moves on its joint; the gripper may touch it and its handle
+            for part in self._part_family(name):
+                self.motion.scene.allow("gripper", part)
+        self._held.append(name)
+        self._touch_allowed.add(name)
+
+    @tool
+    def detach_object(self, object_name: str) -> None:
+        """Returns ``object_name`` to the planning scene's world (after opening the gripper)."""
+        name = self._name(object_name)
+        if name not in self._held:
+            raise ValueError(f"{name!r} is not attached; attached: {', '.join(self._held) or 'nothing'}")
+        self._held.remove(name)
+        if name in self.perception.objects():
+            self.motion.detach(name)
+            self.motion.scene.allow("gripper", name)
+        self._touch_allowed.add(name)
+
+    # --- internals -------------------------------------------------------------------------------------------
+
+    def _name(self, name: object) -> str:
+        return self.perception.require(name)
+
+    def _part_family(self, name: str) -> list[str]:
+        """A part with its handle and the part the handle is on (``cabinet.drawer_1`` <-> ``cabinet.handle_1``)."""
+        family = {name}
+        for joint in self.perception.joints(name):
+            family.add(joint.part)
+        prefix, _, part = name.rpartition(".")
+        if part.startswith(("drawer_", "door_", "handle_")):
+            for other in self.perception.names():
+                if other.startswith(prefix + ".") and any(j.part in family for j in self.perception.joints(other)):
+                    family.add(other)
+        return sorted(family)
+
+    def _receptacle(self, receptacle_name: str, held: str) -> Receptacle:
+        if receptacle_name == TABLE:
+            lower, upper = TABLE_REGION
+            return Receptacle(TABLE, Transform.identity(), np.array([*lower, TABLE_TOP]), np.array([*upper, 1.2]))
+        name = self._name(receptacle_name)
+        if name == held:
+            raise ValueError(f"cannot place {held!r} into itself")
+        receptacle = self.perception.receptacle(name)
+        if receptacle is None:
+            containers = [n for n in self.perception.names() if self.perception.receptacle(n) is not None]
+            raise ValueError(
+                f"{name!r} cannot hold things; receptacles here: {', '.join([*containers, TABLE])}; or pass position="
+            )
+        if receptacle.upper[0] - receptacle.lower[0] < 0.04 and ".drawer_" in name:
+            raise PlacementError(f"{name!r} is closed: open it before placing anything into it")
+        _, _, half = self.perception.footprint(held)
+        if not fits(receptacle, half):
+            inner = receptacle.upper - receptacle.lower
+            raise PlacementError(
+                f"{held!r} ({half[0] * 200:.0f} x {half[1] * 200:.0f} cm) does not fit into {name!r}, "
+                f"whose free interior is {inner[0] * 100:.0f} x {inner[1] * 100:.0f} cm"
+            )
+        return receptacle
+
+    def _first_reachable(self, name: str, candidates: list[Transform], kind: str) -> Transform:
+        """The first candidate whose grasp and pre-grasp poses have collision-free IK (the gripper may touch the
+        object itself); each is also tried turned half a turn about its approach axis."""
+        scene = self.motion.scene
+        q = self.motion.sync()
+        errors: list[str] = []
+        flip = Transform(np.zeros(3), np.array([0.0, 0.0, 1.0, 0.0]))
+        with _touch(scene, self._grasp_family(name)):
+            for candidate in candidates:
+                for pose in (candidate, candidate.compose(flip)):
+                    pre = Transform(pose.position - PRE_GRASP_DISTANCE * pose.rotation[:, 2], pose.quaternion)
+                    try:
+                        goal = self.motion.ik(pose, q, attempts=8, max_attempts=40)
+                        self.motion.ik(pre, goal, attempts=8, max_attempts=40)
+                        return pose
+                    except IKError as exc:
+                        errors.append(str(exc))
+        raise PlanningError(
+            f"none of the {len(candidates)} {kind} grasps of {name!r} (each also turned half a turn) can be reached "
+            f"without collision; first failure: {errors[0] if errors else 'none'}",
+        )
+
+    def _grasp_family(self, name: str) -> list[str]:
+        return self._part_family(name) if name not in self.perception.objects() else [name]
+
+    def _reachable_place(
+        self, name: str, tcp: Transform, box: Box3D, spots: list[PlacementSpot], where: str
+    ) -> Transform:
+        """The first spot (in order, skipping near-repeats of spots that failed) with a collision-free IK; each is
+        tried with the gripper turned half a turn, and released higher up so the hand clears a deep container's
+        walls."""
+        q = self.motion.sync()
+        tried: list[PlacementSpot] = []
+        first_error = ""
+        budget = PLACE_IK_BUDGET
+        for spot in spots:
+            if any(np.linalg.norm(spot.center - t.center) < 0.03 and abs(spot.yaw - t.yaw) < 0.1 for t in tried):
+                continue
+            tried.append(spot)
+            for lift in (0.0, 0.05, 0.1):
+                for dyaw in (0.0, math.pi):
+                    rotation = _yaw_matrix(spot.yaw + dyaw)
+                    # Turning the held object about world z around its centre turns the gripper with it.
+                    position = spot.center + [0.0, 0.0, lift] + rotation @ (tcp.position - box.center)
+                    pose = Transform.from_rotation(position, rotation @ tcp.rotation)
+                    budget -= 1
+                    try:
+                        self.motion.ik(pose, q, attempts=8, max_attempts=24)
+                        return pose
+                    except IKError as exc:
+                        first_error = first_error or str(exc)
+                    if budget <= 0:
+                        raise PlacementError(
+                            f"no reachable, collision-free pose puts {name!r} {where} ({len(tried)} spots tried): "
+                            f"{first_error}"
+                        )
+        raise PlacementError(f"no reachable, collision-free pose puts {name!r} {where} ({len(tried)} spots tried): {first_error}")
+
+    def _allow_touch_near(self, point: np.ndarray) -> None:
+        """Lets the fingers touch what lies at the goal (the object to be grasped); withdrawn once clear of it.
+
+        Not while holding something: then the goal is a place pose, and the fingers must keep clear of the
+        receptacle."""
+        if self._held:
+            return
+        scene = self.motion.scene
+        for name in self.perception.names():
+            box = self.perception.box(name)
+            gap = np.maximum(np.maximum(box.lower - point, point - box.upper), 0.0)
+            if float(np.linalg.norm(gap)) < 0.02 and name not in self._touch_allowed:
+                for part in self._grasp_family(name):
+                    scene.allow("gripper", part)
+                self._touch_allowed.add(name)
+
+    def _allow_start_contacts(self) -> None:
+        """Lets the gripper keep touching what it touches now (an object that settled against the fingers after
+        being let go) until it has moved clear: the motion that leaves a contact must be allowed to start in it."""
+        scene = self.motion.scene
+        q = self.motion.sync()
+        names = set(self.perception.names())
+        for pair in scene.collisions(q):
+            for name in pair:
+                if name in names and name not in self._touch_allowed and scene.touching("gripper", name, q):
+                    for part in self._grasp_family(name):
+                        scene.allow("gripper", part)
+                    self._touch_allowed.add(name)
+
+    def _after_motion(self) -> None:
+        """Withdraws touch allowances the gripper has moved clear of (never for what it holds)."""
+        scene = self.motion.scene
+        q = self.motion.sync()
+        for name in list(self._touch_allowed):
+            if name in self._held:
+                continue
+            family = self._grasp_family(name)
+            if not any(scene.touching("gripper", part, q) for part in family):
+                for part in family:
+                    scene.allow("gripper", part, False)
+                self._touch_allowed.discard(name)
+
+
+class _touch:
+    """Context: the gripper may touch these names while candidate grasps are checked."""
+
+    def __init__(self, scene, names: list[str]):
+        self.scene, self.names = scene, names
+        self.before: list[bool] = []
+
+    def __enter__(self):
+        for name in self.names:
+            self.scene.allow("gripper", name)
+
+    def __exit__(self, *exc):
+        for name in self.names:
+            self.scene.allow("gripper", name, False)
+
+
+def _yaw_matrix(yaw: float) -> np.ndarray:
+    c, s = math.cos(yaw), math.sin(yaw)
+    return np.array([[c, -s, 0.0], [s, c, 0.0], [0.0, 0.0, 1.0]])
+
+
+def _overlaps_xy(box: Box3D, center: np.ndarray, half: np.ndarray) -> bool:
+    return bool(np.all(np.abs(box.center[:2] - center) < box.size[:2] / 2 + half))
+
+
+def _within(box: Box3D, receptacle: Receptacle) -> bool:
+    """Whether an object's box centre lies in the receptacle's interior (in its frame)."""
+    local = receptacle.frame.inverse().apply(box.center[None])[0]
+    return bool(np.all(local >= receptacle.lower - 0.01) and np.all(local <= receptacle.upper + 0.01))
+
+
+def _number(value: object, field: str) -> float:
+    if isinstance(value, bool) or not isinstance(value, (int, float, np.integer, np.floating)):
+        raise TypeError(f"{field} must be a number, got {type(value).__name__} {value!r}")
+    if not math.isfinite(float(value)):
+        raise ValueError(f"{field} must be finite, got {value}")
+    return float(value)
+
+
+def _vector(value: object, field: str) -> np.ndarray:
+    if isinstance(value, Pose):
+        return value.position_array()
+    if isinstance(value, (str, bytes)) or value is None:
+        raise TypeError(f"{field} must be 3 numbers [x, y, z], got {type(value).__name__} {value!r}")
+    try:
+        array = np.asarray(value, dtype=float).reshape(-1)
+    except (TypeError, ValueError):
+        raise TypeError(f"{field} must be 3 numbers [x, y, z], got {type(value).__name__} {value!r}") from None
+    if array.shape != (3,):
+        raise ValueError(f"{field} must be 3 numbers [x, y, z], got {array.size}")
+    if not np.all(np.isfinite(array)):
+        raise ValueError(f"{field} must be finite, got {array.tolist()}")
+    return array
+
+
+def _direction(value: object, field: str) -> np.ndarray:
+    vector = _vector(value, field)
+    norm = float(np.linalg.norm(vector))
+    if norm < 1e-9:
+        raise ValueError(f"{field} must be a non-zero direction, got {vector.tolist()}")
+    return vector / norm
+
+
+def _pose(value: object, field: str) -> Transform:
+    if not isinstance(value, Pose):
+        raise TypeError(f"{field} must be a Pose (e.g. from get_gripper_pose() or a parse_* tool), got {type(value).__name__}")
+    return value.to_transform()
+
+
+__all__ = ["PlanningError", "ToolAPI", "UnknownObjectError"]

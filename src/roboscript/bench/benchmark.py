@@ -1,0 +1,101 @@
+"""The benchmark: tasks x trials for one policy and robot, resumable, with a summary in the paper's layout."""
+
+from __future__ import annotations
+
+import sys
+import time
+from collections.abc import Callable
+from pathlib import Path
+
+from roboscript.bench.metrics import task_result
+from roboscript.bench.results import RunDirectory, provenance
+from roboscript.bench.runner import run_isolated
+from roboscript.bench.tasks import TASKS, get_task
+from roboscript.bench.trial import TrialRecord, TrialSpec
+
+POLICIES = ("reference",)
+
+
+def policy_programs(policy: str, tasks: list[str]) -> dict[str, str]:
+    """The program each task runs under ``policy``."""
+    if policy == "reference":
+        return {t: get_task(t).reference_program() for t in tasks}
+    raise ValueError(f"unknown policy {policy!r}; policies: {', '.join(POLICIES)}")
+
+
+def trial_specs(
+    task: str, program: str, robot: str, trials: int, seed: int, timeout: float, video: str | None = None
+) -> list[TrialSpec]:
+    """Trial ``i`` uses seed ``seed + i``; with several trials, videos get a ``_trial<i>`` suffix."""
+    if trials < 1:
+        raise ValueError(f"trials must be at least 1, got {trials}")
+    specs = []
+    for i in range(trials):
+        path = None
+        if video:
+            path = video if trials == 1 else str(Path(video).with_name(f"{Path(video).stem}_trial{i}{Path(video).suffix}"))
+        specs.append(TrialSpec(task, robot, i, seed + i, program, timeout, path))
+    return specs
+
+
+def progress_printer(total: int, stream=sys.stderr) -> Callable[[TrialRecord], None]:
+    count = [0]
+
+    def report(record: TrialRecord) -> None:
+        count[0] += 1
+        status = "ok" if record.ok else f"error: {record.error.splitlines()[0] if record.error else '?'}"
+        print(
+            f"[{count[0]}/{total}] {record.task} trial {record.trial}: {record.passed}/{len(record.checks)} checks, "
+            f"{status} ({record.wall_time_s:.1f} s)",
+            file=stream,
+            flush=True,
+        )
+
+    return report
+
+
+def run_benchmark(
+    policy: str,
+    tasks: list[str] | None,
+    robot: str,
+    trials: int,
+    seed: int,
+    out: str | Path,
+    jobs: int,
+    timeout: float = 300.0,
+    progress: bool = True,
+) -> dict:
+    """Runs (or resumes) the benchmark in ``out``; returns ``{"tasks": {id: exec object}, "wall_time_s"}``."""
+    tasks = list(tasks or TASKS)
+    for t in tasks:
+        get_task(t)
+    started = time.perf_counter()
+    programs = policy_programs(policy, tasks)
+    run = RunDirectory(out, provenance(policy, robot, trials, seed, programs, "ground_truth"))
+    done = run.done()
+    specs = [
+        s
+        for t in tasks
+        for s in trial_specs(t, programs[t], robot, trials, seed, timeout)
+        if (s.task, s.robot, s.trial) not in done
+    ]
+    printer = progress_printer(len(specs)) if progress else None
+
+    def on_record(record: TrialRecord) -> None:
+        run.append(record)
+        run.write_summary(tasks)
+        if printer:
+            printer(record)
+
+    run_isolated(specs, jobs, on_record)
+    summary = run.write_summary(tasks)
+    records = run.records()
+    return {
+        "tasks": {
+            t: task_result(t, robot, [r for r in records if r.task == t and r.robot == robot and r.trial < trials])
+            for t in tasks
+        },
+        "wall_time_s": round(time.perf_counter() - started, 2),
+        "out": str(run.path),
+        "summary": summary["tasks"],
+    }

@@ -1,0 +1,87 @@
+"""The benchmark's checks, evaluated on ground-truth geometry at the end of a trial (DESIGN.md §5).
+
+``in(a, b)``: at least 80% of a's box volume inside b's box. ``on(a, b)``: a's bottom above b's bottom and at
+least 80% of a's footprint over b's. ``at(a, p)``: a's centre within 0.1 m of p. ``joint(j) > x``: a drawer or
+door opened beyond x (metres or radians).
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from roboscript.sim.ground_truth import GroundTruth
+
+FRACTION = 0.8
+AT_TOLERANCE = 0.1
+
+
+@dataclass(frozen=True)
+class CheckResult:
+    name: str
+    passed: bool
+    detail: str
+
+    def to_dict(self) -> dict:
+        return {"check": self.name, "passed": self.passed, "detail": self.detail}
+
+
+@dataclass(frozen=True)
+class Check:
+    """One check of a task; ``kind`` is in/on/at/joint."""
+
+    kind: str
+    subject: str
+    target: str = ""
+    point: tuple[float, float, float] | None = None
+    threshold: float = 0.0
+
+    @property
+    def name(self) -> str:
+        if self.kind == "at":
+            return f"at({self.subject}, [{', '.join(f'{v:.3f}' for v in self.point)}])"
+        if self.kind == "joint":
+            return f"joint({self.subject}) > {self.threshold:g}"
+        return f"{self.kind}({self.subject}, {self.target})"
+
+    def evaluate(self, gt: GroundTruth) -> CheckResult:
+        if self.kind == "in":
+            a, b = gt.box(self.subject), gt.box(self.target)
+            inside = a.intersection(b).volume / max(a.volume, 1e-12)
+            return CheckResult(self.name, inside >= FRACTION, f"{inside:.0%} of its volume inside")
+        if self.kind == "on":
+            a, b = gt.box(self.subject), gt.box(self.target)
+            overlap = np.prod(np.clip(np.minimum(a.upper[:2], b.upper[:2]) - np.maximum(a.lower[:2], b.lower[:2]), 0, None))
+            fraction = float(overlap / max(np.prod(a.size[:2]), 1e-12))
+            above = a.lower[2] >= b.lower[2] - 0.005
+            return CheckResult(
+                self.name, above and fraction >= FRACTION, f"{fraction:.0%} of its footprint over, above: {above}"
+            )
+        if self.kind == "at":
+            distance = float(np.linalg.norm(gt.box(self.subject).center - np.asarray(self.point)))
+            return CheckResult(self.name, distance <= AT_TOLERANCE, f"{distance:.3f} m away")
+        if self.kind == "joint":
+            value = gt.joint(self.subject).value
+            return CheckResult(self.name, value > self.threshold, f"at {value:.3f}")
+        raise ValueError(f"unknown check kind {self.kind!r}; kinds: in, on, at, joint")
+
+    def to_dict(self) -> dict:
+        return {"kind": self.kind, "subject": self.subject, "target": self.target, "point": self.point,
+                "threshold": self.threshold}
+
+
+def inside(a: str, b: str) -> Check:
+    return Check("in", a, b)
+
+
+def on(a: str, b: str) -> Check:
+    return Check("on", a, b)
+
+
+def at(a: str, point) -> Check:
+    return Check("at", a, point=tuple(float(v) for v in point))
+
+
+def joint_above(part: str, threshold: float) -> Check:
+    return Check("joint", part, threshold=threshold)

@@ -1,0 +1,158 @@
+"""A benchmark run's directory: per-trial records as JSON lines, provenance, and summary tables.
+
+``results.jsonl`` gets one line per trial as soon as it ends, so an interrupted run loses nothing that finished
+and resumes where it stopped. ``run.json`` holds the provenance (policy, programs' hashes, seeds, versions, git
+commit); resuming with different programs or settings is refused rather than mixed. ``summary.md``, ``.csv`` and
+``.json`` are rewritten after every trial.
+"""
+
+from __future__ import annotations
+
+import csv
+import hashlib
+import io
+import json
+import platform
+import subprocess
+import time
+from collections.abc import Iterable
+from importlib import metadata
+from pathlib import Path
+
+from roboscript.bench.metrics import METRICS, metrics
+from roboscript.bench.trial import TrialRecord
+
+LABELS = {
+    "grammar_correctness": "Grammar correctness",
+    "semantic_correctness": "Semantic correctness",
+    "finished_steps_ratio": "Finished steps ratio",
+    "whole_task_success": "Whole task success",
+}
+
+
+def program_hash(program: str) -> str:
+    return hashlib.sha256(program.encode()).hexdigest()[:16]
+
+
+def provenance(policy: str, robot: str, trials: int, seed: int, programs: dict[str, str], perception: str) -> dict:
+    """Everything that decides a run's results, to be stored beside them."""
+    versions = {"python": platform.python_version()}
+    for package in ("roboscript", "mujoco", "ompl", "mink", "numpy"):
+        try:
+            versions[package] = metadata.version(package)
+        except metadata.PackageNotFoundError:
+            versions[package] = "absent"
+    return {
+        "policy": policy,
+        "robot": robot,
+        "trials": trials,
+        "seed": seed,
+        "perception": perception,
+        "programs": {task: program_hash(p) for task, p in sorted(programs.items())},
+        "versions": versions,
+        "git_commit": _git_commit(),
+        "host": platform.node(),
+        "started": time.strftime("%Y-%m-%dT%H:%M:%S%z"),
+    }
+
+
+def _git_commit() -> str | None:
+    try:
+        out = subprocess.run(
+            ["git", "rev-parse", "HEAD"], capture_output=True, text=True, timeout=5, cwd=Path(__file__).parent
+        )
+        return out.stdout.strip() or None
+    except (OSError, subprocess.SubprocessError):
+        return None
+
+
+class RunDirectory:
+    """The files of one benchmark run; reopening it resumes the run."""
+
+    # Settings that must match for a run to be resumed.
+    FIXED = ("policy", "robot", "seed", "perception")
+
+    def __init__(self, path: str | Path, run: dict):
+        self.path = Path(path)
+        self.path.mkdir(parents=True, exist_ok=True)
+        self.results = self.path / "results.jsonl"
+        info = self.path / "run.json"
+        if info.exists():
+            previous = json.loads(info.read_text())
+            for key in self.FIXED:
+                if previous.get(key) != run.get(key):
+                    raise ValueError(
+                        f"{self.path} holds a run with {key}={previous.get(key)!r}, not {run.get(key)!r}; "
+                        "resume it with the same settings or choose another --out"
+                    )
+            for task, digest in run["programs"].items():
+                old = previous.get("programs", {}).get(task)
+                if old is not None and old != digest:
+                    raise ValueError(
+                        f"{self.path} holds results of another program for {task} ({old}, now {digest}); "
+                        "choose another --out"
+                    )
+            previous["programs"] = {**previous.get("programs", {}), **run["programs"]}
+            previous["trials"] = max(previous.get("trials", 0), run["trials"])
+            previous.setdefault("resumed", []).append(run["started"])
+            run = previous
+        info.write_text(json.dumps(run, indent=2))
+        self.run = run
+
+    def records(self) -> list[TrialRecord]:
+        """Records written so far; a line cut short by an interruption is ignored."""
+        if not self.results.exists():
+            return []
+        out = []
+        for line in self.results.read_text().splitlines():
+            try:
+                out.append(TrialRecord(**json.loads(line)))
+            except (json.JSONDecodeError, TypeError):
+                continue
+        return out
+
+    def done(self) -> set[tuple[str, str, int]]:
+        return {(r.task, r.robot, r.trial) for r in self.records()}
+
+    def append(self, record: TrialRecord) -> None:
+        with self.results.open("a") as f:
+            f.write(json.dumps(record.to_dict()) + "\n")
+            f.flush()
+
+    def write_summary(self, tasks: Iterable[str]) -> dict:
+        records = self.records()
+        summary = summarize(records, list(tasks), self.run)
+        (self.path / "summary.json").write_text(json.dumps(summary, indent=2))
+        (self.path / "summary.md").write_text(markdown_table(summary))
+        (self.path / "summary.csv").write_text(csv_table(summary))
+        return summary
+
+
+def summarize(records: list[TrialRecord], tasks: list[str], run: dict) -> dict:
+    by_task = {t: [r for r in records if r.task == t] for t in tasks}
+    return {
+        "provenance": run,
+        "tasks": {t: {"trials": len(rs), **metrics(rs)} for t, rs in by_task.items()},
+    }
+
+
+def markdown_table(summary: dict) -> str:
+    """Metrics as rows and tasks as columns, as in the paper's table."""
+    tasks = list(summary["tasks"])
+    run = summary["provenance"]
+    header = f"Policy `{run['policy']}`, robot `{run['robot']}`, perception `{run['perception']}`\n\n"
+    lines = ["| Metric | " + " | ".join(tasks) + " |", "|---|" + "---|" * len(tasks)]
+    for metric in METRICS:
+        cells = [f"{summary['tasks'][t][metric]:.2f}" for t in tasks]
+        lines.append(f"| {LABELS[metric]} | " + " | ".join(cells) + " |")
+    lines.append("| Trials | " + " | ".join(str(summary["tasks"][t]["trials"]) for t in tasks) + " |")
+    return header + "\n".join(lines) + "\n"
+
+
+def csv_table(summary: dict) -> str:
+    out = io.StringIO()
+    writer = csv.writer(out)
+    writer.writerow(["task", "trials", *METRICS])
+    for task, row in summary["tasks"].items():
+        writer.writerow([task, row["trials"], *(row[m] for m in METRICS)])
+    return out.getvalue()

@@ -1,0 +1,102 @@
+"""Runs trials in child processes, a few at a time, and hands each record over as soon as it is finished.
+
+Each trial runs in its own forked process: a program that crashes the interpreter, exhausts memory or never
+returns costs that trial only. The child enforces the program's time limit itself (so the world is still judged);
+the parent kills a child that outlives the limit by ``KILL_GRACE`` seconds (stuck in native code) and records it.
+"""
+
+from __future__ import annotations
+
+import multiprocessing as mp
+import os
+import sys
+import time
+from collections.abc import Callable, Iterable
+from multiprocessing.connection import wait
+
+from roboscript.bench.trial import TrialRecord, TrialSpec, run_trial
+
+KILL_GRACE = 60.0  # seconds beyond the program's limit for world building and judging
+
+
+def _child(spec: TrialSpec, conn) -> None:
+    try:
+        record = run_trial(spec)
+        conn.send(("ok", record.to_dict()))
+    except BaseException as exc:  # the world could not be built, or judging failed: report, do not hang
+        import traceback
+
+        conn.send(("error", f"{type(exc).__name__}: {exc}\n{traceback.format_exc(limit=4)}"))
+    finally:
+        conn.close()
+
+
+def _failed(spec: TrialSpec, error: str, started: float) -> TrialRecord:
+    return TrialRecord(
+        task=spec.task,
+        robot=spec.robot,
+        trial=spec.trial,
+        seed=spec.seed,
+        ok=False,
+        error=error,
+        checks=[],
+        wall_time_s=round(time.perf_counter() - started, 3),
+    )
+
+
+def default_jobs() -> int:
+    return max(1, min(os.cpu_count() or 1, 8))
+
+
+def run_isolated(
+    specs: Iterable[TrialSpec], jobs: int = 1, on_record: Callable[[TrialRecord], None] | None = None
+) -> list[TrialRecord]:
+    """Runs every trial in a child process, at most ``jobs`` at once; ``on_record`` gets each as it ends."""
+    if jobs < 1:
+        raise ValueError(f"jobs must be at least 1, got {jobs}")
+    context = mp.get_context("fork")
+    pending = list(specs)
+    running: dict[object, tuple[TrialSpec, object, float]] = {}
+    records: list[TrialRecord] = []
+
+    def finish(record: TrialRecord) -> None:
+        records.append(record)
+        if on_record is not None:
+            on_record(record)
+
+    while pending or running:
+        while pending and len(running) < jobs:
+            spec = pending.pop(0)
+            receiver, sender = context.Pipe(duplex=False)
+            process = context.Process(target=_child, args=(spec, sender), daemon=True)
+            sys.stdout.flush()
+            sys.stderr.flush()
+            process.start()
+            sender.close()
+            running[receiver] = (spec, process, time.perf_counter())
+        ready = wait(list(running), timeout=1.0)
+        for receiver in ready:
+            spec, process, started = running.pop(receiver)
+            try:
+                status, payload = receiver.recv()
+            except EOFError:
+                process.join(5)
+                finish(_failed(spec, f"the trial's process died (exit code {process.exitcode})", started))
+                continue
+            process.join(5)
+            if status == "ok":
+                finish(TrialRecord(**payload))
+            else:
+                finish(_failed(spec, f"the trial could not be run: {payload}", started))
+        now = time.perf_counter()
+        for receiver, (spec, process, started) in list(running.items()):
+            if now - started > spec.timeout + KILL_GRACE:
+                process.kill()
+                process.join(5)
+                running.pop(receiver)
+                finish(
+                    _failed(
+                        spec, f"TimeoutError: the program ran longer than its {spec.timeout:g} s limit (killed)", started
+                    )
+                )
+    return records

@@ -1,0 +1,54 @@
+"""Records what a camera sees during a trial into an MP4 file, so a person can watch it.
+
+Frames are rendered every ``1 / fps`` seconds of simulated time from a step callback, and piped to ffmpeg (the
+binary shipped with ``imageio-ffmpeg``, the ``video`` extra).
+"""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import numpy as np
+
+
+class VideoRecorder:
+    """Renders ``camera`` at ``fps`` (simulated time) into ``path`` while it is open."""
+
+    def __init__(self, backend, path: str | Path, camera: str = "camera_left", fps: int = 15, width: int = 480, height: int = 360):
+        try:
+            import imageio_ffmpeg
+        except ImportError:
+            raise RuntimeError("--video needs imageio-ffmpeg: pip install 'roboscript[video]'") from None
+        if camera not in backend.camera_names():
+            raise ValueError(f"no camera {camera!r} to record; cameras: {', '.join(backend.camera_names())}")
+        self.backend, self.camera, self.fps = backend, camera, fps
+        self.path = Path(path)
+        self.path.parent.mkdir(parents=True, exist_ok=True)
+        self._renderer = backend.renderer(width, height)
+        self._writer = imageio_ffmpeg.write_frames(
+            str(self.path), (width, height), fps=fps, codec="libx264", quality=6, macro_block_size=8,
+            output_params=["-pix_fmt", "yuv420p"],
+        )
+        self._writer.send(None)
+        self._next = backend.time()
+        self.frames = 0
+        backend.simulator.add_step_callback(self._on_step)
+        self._capture()
+
+    def _capture(self) -> None:
+        rgb = self._renderer.rgb(self.backend.sim_world.data, self.camera)
+        self._writer.send(np.ascontiguousarray(rgb).tobytes())
+        self.frames += 1
+        self._next += 1.0 / self.fps
+
+    def _on_step(self, simulator) -> None:
+        if simulator.time >= self._next:
+            self._capture()
+
+    def close(self) -> None:
+        if self._writer is None:
+            return
+        self.backend.simulator.remove_step_callback(self._on_step)
+        self._capture()
+        self._writer.close()
+        self._writer = None

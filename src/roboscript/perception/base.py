@@ -1,0 +1,122 @@
+"""What the tool API asks of perception: names, boxes, poses, joints, planes, object points, receptacles.
+
+Ground truth (from the simulator) and the perception pipeline (RGB-D, grounding, fusion) answer the same
+questions, so the tools and the benchmark's ablations switch between them without changing a line.
+"""
+
+from __future__ import annotations
+
+from abc import ABC, abstractmethod
+from dataclasses import dataclass
+
+import numpy as np
+
+from roboscript.geometry import Box3D, Transform
+
+
+class UnknownObjectError(KeyError):
+    """No object of that name is known; the message suggests the closest known names."""
+
+    def __init__(self, name: object, known: list[str]):
+        import difflib
+
+        self.name, self.known = name, list(known)
+        close = difflib.get_close_matches(str(name), self.known, n=3, cutoff=0.4)
+        hint = f"; did you mean {', '.join(repr(c) for c in close)}?" if close else ""
+        message = f"no object named {name!r}{hint} Known objects: {', '.join(self.known)}"
+        super().__init__(message)
+
+    def __str__(self) -> str:  # KeyError would print the message in quotes
+        return str(self.args[0])
+
+
+@dataclass(frozen=True)
+class ArticulationJoint:
+    """A joint of an articulated object in world coordinates; ``position`` is a point on its axis."""
+
+    part: str  # the moving part, e.g. ``cabinet.drawer_1``
+    type: str  # "prismatic" or "revolute"
+    position: np.ndarray
+    axis: np.ndarray  # for drawers: the opening direction; for doors: positive angles open
+    value: float
+    lower: float
+    upper: float
+
+
+@dataclass(frozen=True)
+class Receptacle:
+    """The free volume of a container or drawer: the box ``[lower, upper]`` in the frame ``frame``."""
+
+    name: str
+    frame: Transform
+    lower: np.ndarray
+    upper: np.ndarray
+
+    def corners(self) -> np.ndarray:
+        signs = np.array([[i, j, k] for i in (0, 1) for j in (0, 1) for k in (0, 1)], dtype=float)
+        local = self.lower + signs * (self.upper - self.lower)
+        return self.frame.apply(local)
+
+
+@dataclass(frozen=True)
+class ObjectPoints:
+    """Surface points of one object with outward normals, in the world frame."""
+
+    points: np.ndarray  # (N, 3)
+    normals: np.ndarray  # (N, 3), unit
+
+
+class Perception(ABC):
+    """The object store behind the perception tools."""
+
+    @abstractmethod
+    def detect(self, categories: list[str] | None = None) -> None:
+        """Looks at the scene and updates what is known (a no-op in ground-truth mode)."""
+
+    @abstractmethod
+    def names(self) -> list[str]:
+        """Objects and parts that tools may name."""
+
+    def require(self, name: object) -> str:
+        """``name`` if it is known, else :class:`UnknownObjectError` with the closest names."""
+        if not isinstance(name, str):
+            raise TypeError(f"an object name must be a string such as {self.names()[0]!r}, got {type(name).__name__} {name!r}")
+        if name not in self.names():
+            raise UnknownObjectError(name, self.names())
+        return name
+
+    @abstractmethod
+    def box(self, name: str) -> Box3D:
+        """World axis-aligned 3D box."""
+
+    @abstractmethod
+    def pose(self, name: str) -> Transform:
+        """Pose of the object's frame (for objects: the centre of the bottom face)."""
+
+    @abstractmethod
+    def footprint(self, name: str) -> tuple[np.ndarray, float, np.ndarray]:
+        """``(center_xy, yaw, half_extents_xy)``: the object's footprint as a rectangle turned by ``yaw``."""
+
+    @abstractmethod
+    def joints(self, name: str) -> list[ArticulationJoint]:
+        """Joints of an articulated object or part (a cabinet has one per drawer or door); empty if none."""
+
+    @abstractmethod
+    def plane_normal(self, name: str, position: np.ndarray) -> np.ndarray:
+        """Outward normal of the object's planar face closest to ``position``."""
+
+    @abstractmethod
+    def points(self, name: str) -> ObjectPoints:
+        """The object's observed surface points with normals."""
+
+    @abstractmethod
+    def scene_points(self) -> np.ndarray:
+        """Every observed surface point, (N, 3): for collision checks of grasp candidates."""
+
+    @abstractmethod
+    def receptacle(self, name: str) -> Receptacle | None:
+        """The volume where things put into ``name`` go, or ``None`` if it holds nothing (an apple)."""
+
+    @abstractmethod
+    def objects(self) -> list[str]:
+        """Movable objects (not furniture or its parts)."""

@@ -1,0 +1,161 @@
+"""An adaptive 6-DoF grasp detector that needs no learned weights.
+
+Antipodal sampling over an object's observed points: a seed point's normal gives a closing line; a point on the
+far side of the object along that line whose normal is roughly opposite closes the pair. Each pair becomes grasps
+with several approach directions perpendicular to its closing axis. Candidates are scored by contact quality (how
+well both normals lie inside the friction cone), rejected where the open fingers or the palm would hit observed
+points, and ranked by the caller's preferences (position, approach direction, plane normal).
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+import numpy as np
+
+from roboscript.geometry import Transform
+from roboscript.perception.base import ObjectPoints
+
+
+@dataclass(frozen=True)
+class GripperGeometry:
+    """Collision proxy of a parallel gripper in the TCP frame (z: approach, y: closing, origin between the tips)."""
+
+    max_width: float
+    finger_length: float = 0.045  # how far the fingers reach back from the TCP to the palm
+    finger_thickness: float = 0.012
+    finger_breadth: float = 0.02  # along x
+    palm_breadth: float = 0.06
+    palm_depth: float = 0.06
+
+
+@dataclass(frozen=True)
+class GraspCandidate:
+    """A grasp: TCP pose, the opening it needs, contact quality in [0, 1], and the ranking score."""
+
+    pose: Transform
+    width: float
+    quality: float
+    score: float
+
+
+@dataclass(frozen=True)
+class GraspPreferences:
+    """What the caller would like; each term adds to a candidate's score."""
+
+    position: np.ndarray | None = None
+    approach: np.ndarray | None = None
+    plane_normal: np.ndarray | None = None
+
+
+FRICTION_CONE = math.atan(0.5)  # a friction coefficient of 0.5, cautious for cardboard and plastic
+
+
+def _unit(v: np.ndarray) -> np.ndarray:
+    return v / np.linalg.norm(v, axis=-1, keepdims=True)
+
+
+def antipodal_pairs(
+    cloud: ObjectPoints, gripper: GripperGeometry, rng: np.random.Generator, seeds: int = 400, line_radius: float = 0.004
+) -> list[tuple[np.ndarray, np.ndarray, float, float]]:
+    """``(center, closing_axis, quality, width)`` of antipodal point pairs that fit between the open fingers."""
+    points, normals = cloud.points, cloud.normals
+    if len(points) < 10:
+        return []
+    out = []
+    cos_cone = math.cos(FRICTION_CONE)
+    for i in rng.choice(len(points), size=min(seeds, len(points)), replace=False):
+        p1, n1 = points[i], normals[i]
+        axis = -n1
+        rel = points - p1
+        along = rel @ axis
+        off_line = np.linalg.norm(rel - along[:, None] * axis, axis=1)
+        candidates = (off_line < line_radius) & (along > 0.005) & (along < gripper.max_width - 0.008)
+        candidates &= normals @ axis > cos_cone
+        if not candidates.any():
+            continue
+        j = np.flatnonzero(candidates)[np.argmax(along[candidates])]  # the outer surface on the far side
+        p2, n2 = points[j], normals[j]
+        closing = _unit(p2 - p1)
+        angle = max(math.acos(np.clip(-n1 @ closing, -1, 1)), math.acos(np.clip(n2 @ closing, -1, 1)))
+        if angle > FRICTION_CONE:
+            continue
+        out.append(((p1 + p2) / 2, closing, 1.0 - angle / FRICTION_CONE, float(np.linalg.norm(p2 - p1))))
+    return out
+
+
+def grasp_frames(center: np.ndarray, closing: np.ndarray, approaches: int = 12) -> list[np.ndarray]:
+    """Rotations ``[x, y, z]`` with y along ``closing`` and z (the approach) turning about it; never from below."""
+    helper = np.array([0.0, 0.0, 1.0]) if abs(closing[2]) < 0.9 else np.array([1.0, 0.0, 0.0])
+    u = _unit(np.cross(closing, helper))
+    v = np.cross(closing, u)
+    frames = []
+    for k in range(approaches):
+        theta = 2 * math.pi * k / approaches
+        z = math.cos(theta) * u + math.sin(theta) * v
+        if z[2] > 0.2:  # the approach would come up from under the table
+            continue
+        frames.append(np.column_stack([np.cross(closing, z), closing, z]))
+    return frames
+
+
+def collides(rotation: np.ndarray, center: np.ndarray, scene: np.ndarray, gripper: GripperGeometry, width: float) -> bool:
+    """Whether the open fingers (at ``width`` plus a margin) or the palm would contain any scene point."""
+    local = (scene - center) @ rotation
+    x, y, z = local[:, 0], local[:, 1], local[:, 2]
+    inner = width / 2 + 0.006
+    in_finger_x = np.abs(x) < gripper.finger_breadth / 2
+    fingers = in_finger_x & (np.abs(y) > inner) & (np.abs(y) < inner + gripper.finger_thickness)
+    fingers &= (z > -gripper.finger_length) & (z < 0.012)
+    palm = (np.abs(x) < gripper.palm_breadth / 2) & (np.abs(y) < inner + gripper.finger_thickness)
+    palm &= (z <= -gripper.finger_length) & (z > -gripper.finger_length - gripper.palm_depth)
+    return bool(fingers.any() or palm.any())
+
+
+def detect_grasps(
+    cloud: ObjectPoints,
+    scene_points: np.ndarray,
+    gripper: GripperGeometry,
+    preferences: GraspPreferences | None = None,
+    seed: int = 0,
+    max_candidates: int = 40,
+) -> list[GraspCandidate]:
+    """Collision-free antipodal grasps on ``cloud``, best first.
+
+    ``scene_points`` are every observed point (the object's own included): the fingers must clear all of them.
+    """
+    preferences = preferences or GraspPreferences()
+    rng = np.random.default_rng(seed)
+    pairs = antipodal_pairs(cloud, gripper, rng)
+    if not pairs:
+        return []
+    centre_of_object = cloud.points.mean(axis=0)
+    near = scene_points[np.linalg.norm(scene_points - centre_of_object, axis=1) < 0.3]
+    if len(near) > 6000:
+        near = near[rng.choice(len(near), size=6000, replace=False)]
+    out: list[GraspCandidate] = []
+    for center, closing, quality, width in pairs:
+        if width > gripper.max_width - 0.004:
+            continue
+        for rotation in grasp_frames(center, closing):
+            if collides(rotation, center, near, gripper, width):
+                continue
+            score = quality + _preference_score(center, rotation, preferences)
+            out.append(GraspCandidate(Transform.from_rotation(center, rotation), width, quality, score))
+    out.sort(key=lambda c: -c.score)
+    return out[:max_candidates]
+
+
+def _preference_score(center: np.ndarray, rotation: np.ndarray, preferences: GraspPreferences) -> float:
+    score = 0.0
+    approach, closing = rotation[:, 2], rotation[:, 1]
+    if preferences.position is not None:
+        score += 2.0 * math.exp(-float(np.linalg.norm(center - preferences.position)) / 0.03)
+    if preferences.approach is not None:
+        score += 2.0 * float(approach @ _unit(np.asarray(preferences.approach, dtype=float)))
+    else:  # top-down grasps are the easiest to reach and to place from
+        score += 0.5 * float(-approach[2])
+    if preferences.plane_normal is not None:
+        score += 1.0 * abs(float(closing @ _unit(np.asarray(preferences.plane_normal, dtype=float))))
+    return score

@@ -1,0 +1,127 @@
+"""Grasps from an object's box: the central lift (top-down) grasp and the horizontal grasp.
+
+Each returns candidate TCP poses, best first; the tool layer keeps the first one the arm can reach. A gripper pose's
+z axis is its approach direction and its y axis the direction in which the fingers close.
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from roboscript.geometry import Transform
+from roboscript.perception.base import Perception
+
+DOWN = np.array([0.0, 0.0, -1.0])
+# A horizontal grasp aims this far in from the outer surface of a handle (the bar's radius and a little more).
+HANDLE_DEPTH = 0.012
+
+
+class GraspError(ValueError):
+    """No grasp of the asked kind suits this object; the message says why and what to try instead."""
+
+
+def _frame(closing: np.ndarray, approach: np.ndarray, outward: np.ndarray) -> np.ndarray:
+    """Rotation [x, y, z] with z = approach and y = ±closing, the sign chosen so that x points along ``outward``
+    (away from the robot), which keeps the wrist near the middle of its range."""
+    y = closing / np.linalg.norm(closing)
+    z = approach / np.linalg.norm(approach)
+    x = np.cross(y, z)
+    if x @ outward < 0:
+        y, x = -y, -x
+    return np.column_stack([x, y, z])
+
+
+def central_lift_grasps(
+    perception: Perception, name: str, description: str, max_width: float, base_xy: np.ndarray
+) -> list[Transform]:
+    """Top-down grasps at the centre of the object's box, closing across its narrower side.
+
+    ``description`` is "top" (the TCP 3 cm below the top, or at mid height if the object is lower than 6 cm) or
+    "center" (at mid height).
+    """
+    if description not in ("top", "center"):
+        raise ValueError(f"description must be 'top' or 'center', got {description!r}")
+    box = perception.box(name)
+    center_xy, yaw, half = perception.footprint(name)
+    z = box.center[2] if description == "center" else max(box.center[2], box.upper[2] - 0.03)
+    axes = [np.array([math.cos(yaw), math.sin(yaw), 0.0]), np.array([-math.sin(yaw), math.cos(yaw), 0.0])]
+    order = np.argsort(half)  # close across the narrow side first
+    outward = np.append(center_xy - base_xy, 0.0)
+    outward = outward / (np.linalg.norm(outward) + 1e-9)
+    candidates = []
+    for k in order:
+        if 2 * half[k] > max_width - 0.003:
+            continue
+        candidates.append(Transform.from_rotation(np.array([*center_xy, z]), _frame(axes[k], DOWN, outward)))
+    if not candidates:
+        raise GraspError(
+            f"{name!r} is {2 * half.min() * 100:.1f} cm across its narrowest side, wider than the gripper's "
+            f"{max_width * 100:.1f} cm opening: no top-down grasp fits; try parse_adaptive_shape_grasp_pose"
+        )
+    return candidates
+
+
+def horizontal_grasps(
+    perception: Perception,
+    name: str,
+    approach_direction: np.ndarray | None,
+    max_width: float,
+    base_xy: np.ndarray,
+) -> list[Transform]:
+    """Grasps approaching horizontally; handles are gripped across their bar, other things across their width.
+
+    Without ``approach_direction`` a handle is approached against its part's opening direction and an object from
+    the robot's side; several nearby yaws follow, for the tool layer to pick a reachable one.
+    """
+    box = perception.box(name)
+    is_handle = ".handle_" in name
+    if approach_direction is not None:
+        approach = np.asarray(approach_direction, dtype=float).copy()
+        approach[2] = 0.0
+        if approach.shape != (3,) or np.linalg.norm(approach) < 1e-6:
+            raise ValueError(
+                f"approach_direction must be a 3-vector with a horizontal part, got {np.asarray(approach_direction).tolist()}"
+            )
+        yaws = [0.0]
+    else:
+        if is_handle:
+            joints = perception.joints(name)
+            opening = joints[0].axis if joints and joints[0].type == "prismatic" else perception.plane_normal(name, box.center + [1, 0, 0])
+            approach = -np.asarray(opening, dtype=float)
+            approach[2] = 0.0
+        else:
+            approach = np.append(box.center[:2] - base_xy, 0.0)
+        yaws = [0.0, 0.35, -0.35, 0.7, -0.7, 1.0, -1.0]
+    approach = approach / np.linalg.norm(approach)
+    size = box.size
+    candidates = []
+    for dyaw in yaws:
+        c, s = math.cos(dyaw), math.sin(dyaw)
+        a = np.array([c * approach[0] - s * approach[1], s * approach[0] + c * approach[1], 0.0])
+        if is_handle:
+            long_axis = np.eye(3)[int(np.argmax(size))]
+            closing = np.cross(a, long_axis)
+            if np.linalg.norm(closing) < 1e-6:
+                continue
+            # Aim just inside the bar's outer surface along the approach.
+            reach = float(np.abs(a) @ size) / 2
+            target = box.center - a * (reach - HANDLE_DEPTH)
+            up = np.array([0.0, 0.0, 1.0])
+            outward = up if abs(closing[2]) < 0.5 else np.cross(up, a)
+        else:
+            closing = np.cross(np.array([0.0, 0.0, 1.0]), a)
+            across = float(np.abs(closing) @ size)
+            if across > max_width - 0.003:
+                continue
+            target = box.center.copy()
+            target[2] = min(box.center[2], box.lower[2] + 0.06)
+            outward = np.array([0.0, 0.0, -1.0])
+        candidates.append(Transform.from_rotation(target, _frame(closing, a, outward)))
+    if not candidates:
+        raise GraspError(
+            f"{name!r} is wider than the gripper's {max_width * 100:.1f} cm opening from every horizontal approach "
+            "tried; give another approach_direction or use parse_adaptive_shape_grasp_pose"
+        )
+    return candidates

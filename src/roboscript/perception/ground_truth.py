@@ -1,0 +1,169 @@
+"""Ground-truth perception: the object store answered from the simulator (the default in simulation).
+
+Boxes, poses, joints and receptacles come from the simulated world's state. Object points, which the adaptive
+grasp detector works on, are taken the way a real rig would see them: from the cameras' depth images, selected by
+the simulator's segmentation, so the detector meets the same partial, noisy views it will meet on a robot.
+"""
+
+from __future__ import annotations
+
+import math
+
+import mujoco
+import numpy as np
+
+from roboscript.backends.base import Backend
+from roboscript.geometry import Box3D, Transform
+from roboscript.perception.base import ArticulationJoint, ObjectPoints, Perception, Receptacle, UnknownObjectError
+from roboscript.perception.points import entity_points, point_map
+from roboscript.sim.cameras import CameraFrame
+from roboscript.sim.furniture import drawer_interior
+
+# Room kept between the carcass front and where things are put into an open drawer: the panel above the drawer
+# overhangs that line and fingers need space.
+DRAWER_FRONT_CLEARANCE = 0.03
+
+
+class GroundTruthPerception(Perception):
+    """Perception from the simulator's state; needs a backend with ground truth (a simulation)."""
+
+    def __init__(self, backend: Backend, point_stride: int = 2):
+        if backend.ground_truth is None:
+            raise ValueError("ground-truth perception needs a simulated backend; this backend has no ground truth")
+        self.backend = backend
+        self.gt = backend.ground_truth
+        self.world = self.gt.world
+        self.point_stride = point_stride
+        self._frames: list[CameraFrame] | None = None
+        self._frames_time = -1.0
+
+    def detect(self, categories: list[str] | None = None) -> None:
+        self._frames = None  # the next point query looks again
+
+    def names(self) -> list[str]:
+        return self.gt.names()
+
+    def objects(self) -> list[str]:
+        return self.world.entity_names(("object",))
+
+    def _entity(self, name: str):
+        if name not in self.names():
+            raise UnknownObjectError(name, self.names())
+        return self.world.entity(name)
+
+    def box(self, name: str) -> Box3D:
+        self._entity(name)
+        return self.gt.box(name)
+
+    def pose(self, name: str) -> Transform:
+        self._entity(name)
+        return self.gt.pose(name)
+
+    def footprint(self, name: str) -> tuple[np.ndarray, float, np.ndarray]:
+        entity = self._entity(name)
+        box = self.gt.box(name)
+        pose = self.gt.pose(name)
+        rotation = pose.rotation
+        upright = rotation[2, 2] > math.cos(math.radians(15))
+        if entity.object_type is None or not upright:
+            return box.center[:2], 0.0, box.size[:2] / 2
+        lower, upper = entity.object_type.bounds
+        yaw = math.atan2(rotation[1, 0], rotation[0, 0])
+        center_local = (lower + upper) / 2
+        center = pose.apply(center_local[None])[0]
+        return center[:2], yaw, (upper - lower)[:2] / 2
+
+    def joints(self, name: str) -> list[ArticulationJoint]:
+        entity = self._entity(name)
+        if entity.kind == "furniture":
+            parts = [e.name for e in self.world.entities if e.kind == "part" and e.joint >= 0 and e.name.startswith(name + ".")]
+        elif entity.kind == "part":
+            parts = [name]
+        else:
+            return []
+        out = []
+        for part in parts:
+            info = self.gt.joint(part)
+            owner = part if self.world.entity(part).joint >= 0 else _moving_part(self.world, part)
+            out.append(
+                ArticulationJoint(owner, info.type, info.position, info.axis, info.value, info.lower, info.upper)
+            )
+        return out
+
+    def plane_normal(self, name: str, position: np.ndarray) -> np.ndarray:
+        self._entity(name)
+        model, data = self.world.model, self.world.data
+        position = np.asarray(position, dtype=float)
+        best, best_distance = None, math.inf
+        for g in self.gt.geoms(name):
+            if model.geom_type[g] != mujoco.mjtGeom.mjGEOM_BOX:
+                continue
+            rotation = data.geom_xmat[g].reshape(3, 3)
+            half = model.geom_size[g]
+            local = rotation.T @ (position - data.geom_xpos[g])
+            for axis in range(3):
+                for sign in (-1.0, 1.0):
+                    # Distance from the point to this face (a rectangle).
+                    on_face = np.clip(local, -half, half)
+                    on_face[axis] = sign * half[axis]
+                    distance = float(np.linalg.norm(local - on_face))
+                    if distance < best_distance:
+                        best_distance = distance
+                        best = sign * rotation[:, axis]
+        if best is None:  # no flat faces (a fruit): the normal of the box face nearest the point
+            box = self.gt.box(name)
+            gaps = np.concatenate([position - box.lower, box.upper - position])
+            k = int(np.argmin(np.abs(gaps)))
+            best = np.zeros(3)
+            best[k % 3] = -1.0 if k < 3 else 1.0
+        return np.asarray(best, dtype=float)
+
+    def _camera_frames(self) -> list[CameraFrame]:
+        now = self.backend.time()
+        if self._frames is None or now != self._frames_time:
+            self._frames = [self.backend.capture(c) for c in self.backend.camera_names()]
+            self._frames_time = now
+        return self._frames
+
+    def points(self, name: str) -> ObjectPoints:
+        entity = self._entity(name)
+        points, normals = entity_points(self._camera_frames(), entity.index, self.point_stride)
+        return ObjectPoints(points, normals)
+
+    def scene_points(self) -> np.ndarray:
+        clouds = []
+        robot = self.world.entity("robot").index
+        for frame in self._camera_frames():
+            world = point_map(frame)[:: self.point_stride, :: self.point_stride]
+            seg = frame.segmentation[:: self.point_stride, :: self.point_stride]
+            keep = np.isfinite(world).all(axis=-1) & (seg != robot)
+            clouds.append(world[keep])
+        return np.concatenate(clouds) if clouds else np.zeros((0, 3))
+
+    def receptacle(self, name: str) -> Receptacle | None:
+        entity = self._entity(name)
+        if entity.kind == "object":
+            kind = entity.object_type
+            if kind is None or not kind.container or kind.interior is None:
+                return None
+            lower, upper = (np.array(v, dtype=float) for v in kind.interior)
+            return Receptacle(name, self.gt.pose(name), lower, upper)
+        if entity.kind == "part" and entity.category == "drawer":
+            body = entity.bodies[0]
+            lower, upper = drawer_interior(self.world.model, name)
+            frame = Transform.from_rotation(self.world.data.xpos[body], self.world.data.xmat[body].reshape(3, 3))
+            opening = self.gt.joint(name).value
+            # The part still inside the carcass cannot be reached from above.
+            lower = lower.copy()
+            lower[0] = max(lower[0], -opening + DRAWER_FRONT_CLEARANCE)
+            return Receptacle(name, frame, lower, upper)
+        return None
+
+
+def _moving_part(world, part: str) -> str:
+    """The drawer or door a handle belongs to."""
+    model = world.model
+    body = world.entity(part).bodies[0]
+    while model.body_jntnum[body] == 0 and body > 0:
+        body = model.body_parentid[body]
+    return model.body(body).name

@@ -1,0 +1,67 @@
+"""Point clouds from RGB-D frames: back-projection, normals from the depth image, per-entity selection."""
+
+from __future__ import annotations
+
+import numpy as np
+
+from roboscript.sim.cameras import CameraFrame
+
+
+def point_map(frame: CameraFrame) -> np.ndarray:
+    """World coordinates of every pixel, (H, W, 3); NaN where the depth is 0 (nothing seen)."""
+    h, w = frame.depth.shape
+    k = frame.intrinsics
+    u, v = np.meshgrid(np.arange(w, dtype=float), np.arange(h, dtype=float))
+    z = frame.depth.astype(float)
+    camera = np.stack([(u - k[0, 2]) * z / k[0, 0], (v - k[1, 2]) * z / k[1, 1], z], axis=-1)
+    world = camera @ frame.extrinsics.rotation.T + frame.extrinsics.position
+    world[z <= 0] = np.nan
+    return world
+
+
+def normal_map(points: np.ndarray, camera_position: np.ndarray) -> np.ndarray:
+    """Unit normals from neighbouring pixels' points, turned towards the camera; NaN where undefined."""
+    du = np.full_like(points, np.nan)
+    dv = np.full_like(points, np.nan)
+    du[:, 1:-1] = points[:, 2:] - points[:, :-2]
+    dv[1:-1] = points[2:] - points[:-2]
+    n = np.cross(du, dv)
+    norm = np.linalg.norm(n, axis=-1, keepdims=True)
+    with np.errstate(invalid="ignore", divide="ignore"):
+        n = n / norm
+    flip = np.einsum("hwk,hwk->hw", n, camera_position - points) < 0
+    n[flip] *= -1
+    return n
+
+
+def entity_points(frames: list[CameraFrame], entity: int, stride: int = 1) -> tuple[np.ndarray, np.ndarray]:
+    """Points and normals of the pixels segmented as ``entity`` in every frame.
+
+    Pixels on the segment's outline are dropped: their neighbours lie on the background, so their normals are
+    meaningless.
+    """
+    points, normals = [], []
+    for frame in frames:
+        if frame.segmentation is None:
+            raise ValueError(f"frame {frame.name!r} has no segmentation; ground-truth points need it")
+        mask = frame.segmentation == entity
+        inner = mask.copy()
+        inner[1:] &= mask[:-1]
+        inner[:-1] &= mask[1:]
+        inner[:, 1:] &= mask[:, :-1]
+        inner[:, :-1] &= mask[:, 1:]
+        if stride > 1:
+            keep = np.zeros_like(inner)
+            keep[::stride, ::stride] = True
+            inner &= keep
+        if not inner.any():
+            continue
+        world = point_map(frame)
+        n = normal_map(world, frame.extrinsics.position)
+        p, nn = world[inner], n[inner]
+        ok = np.isfinite(p).all(axis=1) & np.isfinite(nn).all(axis=1)
+        points.append(p[ok])
+        normals.append(nn[ok])
+    if not points:
+        return np.zeros((0, 3)), np.zeros((0, 3))
+    return np.concatenate(points), np.concatenate(normals)
