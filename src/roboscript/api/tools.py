@@ -26,7 +26,7 @@ from roboscript.geometry import Box3D, Transform
 from roboscript.perception.base import Perception, Receptacle, UnknownObjectError
 from roboscript.perception.grasp_detection import GraspPreferences, GripperGeometry, detect_grasps
 from roboscript.perception.grasp_heuristics import GraspError, central_lift_grasps, horizontal_grasps
-from roboscript.planning.cartesian import arc_poses
+from roboscript.planning.cartesian import arc_poses, cartesian_path
 from roboscript.planning.errors import IKError, PlanningError
 from roboscript.planning.motion import MotionPlanner
 
@@ -264,8 +264,14 @@ class ToolAPI:
         pre = Transform(target.position - PRE_GRASP_DISTANCE * approach, target.quaternion)
         self._allow_start_contacts()
         self._allow_touch_near(target.position)
-        self.motion.move_to_pose(pre)
-        self.motion.follow([target])
+        # The pre-grasp configuration is solved next to the grasp's, so that the straight final approach stays
+        # on one IK branch (from an arbitrary pre-grasp branch the line can run into a self-collision).
+        q = self.motion.sync()
+        goal = self.motion.ik(target, q)
+        self.motion.move_to_joints(self.motion.ik(pre, goal))
+        line = self.motion.cartesian([target])
+        # Should the straight approach be blocked after all (the world moved), a planned one is the fallback.
+        self.motion.execute(line.waypoints if line.fraction >= 1.0 else self.motion.plan_to_joints(goal))
         self._after_motion()
 
     @tool
@@ -389,10 +395,14 @@ class ToolAPI:
                     pre = Transform(pose.position - PRE_GRASP_DISTANCE * pose.rotation[:, 2], pose.quaternion)
                     try:
                         goal = self.motion.ik(pose, q, attempts=8, max_attempts=40)
-                        self.motion.ik(pre, goal, attempts=8, max_attempts=40)
-                        return pose
+                        q_pre = self.motion.ik(pre, goal, attempts=8, max_attempts=40)
                     except IKError as exc:
                         errors.append(str(exc))
+                        continue
+                    line = cartesian_path(self.motion.kinematics, scene, q_pre, [pose])
+                    if line.fraction >= 1.0:
+                        return pose
+                    errors.append(f"the straight approach from the pre-grasp pose is blocked: {line.reason}")
         raise PlanningError(
             f"none of the {len(candidates)} {kind} grasps of {name!r} (each also turned half a turn) can be reached "
             f"without collision; first failure: {errors[0] if errors else 'none'}",

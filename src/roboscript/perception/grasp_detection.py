@@ -49,6 +49,7 @@ class GraspPreferences:
     plane_normal: np.ndarray | None = None
 
 
+GRASP_DEPTHS = (0.025, 0.015, 0.0)  # how far past the contact pair, along the approach, the TCP may go
 FRICTION_CONE = math.atan(0.5)  # a friction coefficient of 0.5, cautious for cardboard and plastic
 
 
@@ -71,7 +72,7 @@ def antipodal_pairs(
         rel = points - p1
         along = rel @ axis
         off_line = np.linalg.norm(rel - along[:, None] * axis, axis=1)
-        candidates = (off_line < line_radius) & (along > 0.005) & (along < gripper.max_width - 0.008)
+        candidates = (off_line < line_radius) & (along > 0.002) & (along < gripper.max_width - 0.008)
         candidates &= normals @ axis > cos_cone
         if not candidates.any():
             continue
@@ -113,6 +114,17 @@ def collides(rotation: np.ndarray, center: np.ndarray, scene: np.ndarray, grippe
     return bool(fingers.any() or palm.any())
 
 
+def pad_contact(rotation: np.ndarray, tcp: np.ndarray, points: np.ndarray, width: float, pad: float = 0.025) -> float:
+    """How far, along the approach, the object extends between the finger pads (metres)."""
+    local = (points - tcp) @ rotation
+    between = (np.abs(local[:, 0]) < 0.01) & (np.abs(local[:, 1]) < width / 2 + 0.004)
+    between &= (local[:, 2] > -pad) & (local[:, 2] < 0.012)
+    if not between.any():
+        return 0.0
+    z = local[between, 2]
+    return float(z.max() - z.min())
+
+
 def detect_grasps(
     cloud: ObjectPoints,
     scene_points: np.ndarray,
@@ -130,7 +142,8 @@ def detect_grasps(
     pairs = antipodal_pairs(cloud, gripper, rng)
     if not pairs:
         return []
-    centre_of_object = cloud.points.mean(axis=0)
+    centre_of_object = (cloud.points.min(axis=0) + cloud.points.max(axis=0)) / 2
+    radius = max(float(np.linalg.norm(cloud.points.max(axis=0)[:2] - centre_of_object[:2])), 0.03)
     near = scene_points[np.linalg.norm(scene_points - centre_of_object, axis=1) < 0.3]
     if len(near) > 6000:
         near = near[rng.choice(len(near), size=6000, replace=False)]
@@ -139,10 +152,20 @@ def detect_grasps(
         if width > gripper.max_width - 0.004:
             continue
         for rotation in grasp_frames(center, closing):
-            if collides(rotation, center, near, gripper, width):
+            # As deep as the fingers go without touching anything: more of the pads on the object (a mug's rim
+            # held by its top few millimetres slips out).
+            for depth in GRASP_DEPTHS:
+                tcp = center + depth * rotation[:, 2]
+                if not collides(rotation, tcp, near, gripper, width):
+                    break
+            else:
                 continue
-            score = quality + _preference_score(center, rotation, preferences)
-            out.append(GraspCandidate(Transform.from_rotation(center, rotation), width, quality, score))
+            # Grasps far from the middle (a mug's handle) let the object swing and slip; grasps with little of the
+            # object between the finger pads (the top millimetres of a rim) slip out.
+            offset = float(np.linalg.norm(tcp[:2] - centre_of_object[:2])) / radius
+            held = pad_contact(rotation, tcp, cloud.points, width)
+            score = quality - offset + 1.5 * min(held / 0.025, 1.0) + _preference_score(tcp, rotation, preferences)
+            out.append(GraspCandidate(Transform.from_rotation(tcp, rotation), width, quality, score))
     out.sort(key=lambda c: -c.score)
     return out[:max_candidates]
 

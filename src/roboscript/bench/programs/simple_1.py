@@ -2,7 +2,7 @@
 # Plan:
 # 1. Detect the objects and find the plates.
 # 2. A plate is empty when no other object's centre lies over it; pick that plate.
-# 3. Grasp the brown cup from above, close the gripper, attach it and lift it.
+# 3. Grasp the brown cup by its rim from above (it is as wide as the open gripper), attach it and lift it.
 # 4. Place it on the empty plate and release it; move the gripper up.
 detect_objects()
 names = get_object_name_list()
@@ -21,7 +21,7 @@ for plate in plates:
         empty_plate = plate
         break
 open_gripper()
-grasp_pose = parse_central_lift_grasp_pose(object_name='brown_cup', description='top')
+grasp_pose = parse_adaptive_shape_grasp_pose(object_name='brown_cup', preferred_approach_direction=[0, 0, -1])
 grasp(grasp_pose)
 close_gripper()
 attach_object('brown_cup')
