@@ -15,7 +15,7 @@ import numpy as np
 from roboscript.geometry import Box3D
 from roboscript.perception.base import Receptacle
 
-MARGIN = 0.01  # clearance kept from walls and from other objects
+MARGIN = 0.007  # clearance kept from walls and from other objects
 DROP = 0.012  # the object is released this far above its support
 
 
@@ -61,12 +61,14 @@ def spots_in_receptacle(
     obstacles: list[Box3D],
     corner_xy: np.ndarray,
     step: float = 0.015,
+    near_xy: np.ndarray | None = None,
 ) -> list[PlacementSpot]:
     """Free spots inside the receptacle's interior, filled from the corner nearest ``corner_xy`` outwards.
 
     The object (footprint half-extents ``half_xy`` in its own frame, turned by ``object_yaw``) is turned square to
     the receptacle in each of four ways. Filling from one corner, like packing a box, leaves the most room for
-    what comes next; the corner nearest the robot keeps the arm's reach short.
+    what comes next; the corner nearest the robot keeps the arm's reach short. With ``near_xy`` (putting
+    something aside on the table) the spots nearest that point come first instead.
     """
     lower, upper = receptacle.lower, receptacle.upper
     rotation = receptacle.frame.rotation
@@ -93,7 +95,10 @@ def spots_in_receptacle(
                     continue
                 center = np.array([world[0], world[1], bottom + height / 2 + DROP])
                 # Nearest the corner first; among equals, the smaller turn.
-                score = -float(np.abs(np.array([x, y]) - corner).sum()) - 0.01 * abs(turn)
+                if near_xy is None:
+                    score = -float(np.abs(np.array([x, y]) - corner).sum()) - 0.01 * abs(turn)
+                else:
+                    score = -float(np.linalg.norm(world[:2] - near_xy)) - 0.01 * abs(turn)
                 out.append(PlacementSpot(center, turn, score))
     out.sort(key=lambda s: -s.clearance)
     return out

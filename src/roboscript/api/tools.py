@@ -27,10 +27,11 @@ from roboscript.perception.base import Perception, Receptacle, UnknownObjectErro
 from roboscript.perception.grasp_detection import GraspPreferences, GripperGeometry, detect_grasps
 from roboscript.perception.grasp_heuristics import GraspError, central_lift_grasps, horizontal_grasps
 from roboscript.planning.cartesian import arc_poses, cartesian_path
-from roboscript.planning.errors import IKError, PlanningError
+from roboscript.planning.errors import CartesianPathIncompleteError, IKError, PlanningError
 from roboscript.planning.motion import MotionPlanner
 
 PRE_GRASP_DISTANCE = 0.1
+PULL_CHECK = 0.25  # metres a drawer handle grasp must be able to pull
 PLACE_IK_BUDGET = 48  # IK screens per parse_place_pose call (each costs a few milliseconds to ~0.1 s)
 TABLE = "table"
 # Where things may be put down on the table: in front of the robot, clear of its base.
@@ -225,7 +226,16 @@ class ToolAPI:
         if abs(distance) > 1.5:
             raise ValueError(f"distance is in metres and must be within [-1.5, 1.5], got {distance}")
         self._allow_start_contacts()
-        self.motion.move_in_direction(direction, distance)
+        current = self.backend.tcp_pose()
+        target = Transform(current.position + direction * distance, current.quaternion)
+        try:
+            self.motion.follow([target])
+        except CartesianPathIncompleteError as exc:
+            # The line passes a singularity or a joint limit (not an obstacle it could go around): a planned
+            # collision-free motion to the same end pose instead.
+            if "collision" in str(exc):
+                raise
+            self.motion.execute(self.motion.plan_to_pose(target))
         self._after_motion()
 
     @tool
@@ -263,12 +273,14 @@ class ToolAPI:
         approach = target.rotation[:, 2]
         pre = Transform(target.position - PRE_GRASP_DISTANCE * approach, target.quaternion)
         self._allow_start_contacts()
-        self._allow_touch_near(target.position)
         # The pre-grasp configuration is solved next to the grasp's, so that the straight final approach stays
-        # on one IK branch (from an arbitrary pre-grasp branch the line can run into a self-collision).
+        # on one IK branch (from an arbitrary pre-grasp branch the line can run into a self-collision). The
+        # fingers may touch the object only on that final approach, not on the way to the pre-grasp pose.
         q = self.motion.sync()
-        goal = self.motion.ik(target, q)
+        with _touch(self.motion.scene, self._new_touches(target.position)):
+            goal = self.motion.ik(target, q)
         self.motion.move_to_joints(self.motion.ik(pre, goal))
+        self._allow_touch_near(target.position)
         line = self.motion.cartesian([target])
         # Should the straight approach be blocked after all (the world moved), a planned one is the fallback.
         self.motion.execute(line.waypoints if line.fraction >= 1.0 else self.motion.plan_to_joints(goal))
@@ -302,12 +314,21 @@ class ToolAPI:
         else:
             receptacle = self._receptacle(receptacle_name, name)
             _, yaw, half = self.perception.footprint(name)
-            inside = [b for b in others if _within(b, receptacle)] if receptacle_name != TABLE else others
-            spots = spots_in_receptacle(receptacle, half, yaw, size[2], inside, self.base_xy)
-            if receptacle_name == TABLE:  # somewhere else than where it was picked up
+            if receptacle_name == TABLE:  # aside: clear of objects and furniture, near but not where it was
+                furniture = [self.perception.box(n) for n in self.perception.names() if _is_furniture(n, self.perception)]
+                spots = spots_in_receptacle(
+                    receptacle, half, yaw, size[2], others + furniture, self.base_xy, near_xy=box.center[:2]
+                )
                 spots = [s for s in spots if np.linalg.norm(s.center[:2] - box.center[:2]) > 0.15]
+            else:
+                inside = [b for b in others if _within(b, receptacle)]
+                spots = spots_in_receptacle(receptacle, half, yaw, size[2], inside, self._fill_corner(receptacle))
             if not spots:
-                inside = [o for o in self.perception.objects() if o != name and _within(self.perception.box(o), receptacle)]
+                inside = [
+                    o
+                    for o in self.perception.objects()
+                    if o not in (name, receptacle_name) and _within(self.perception.box(o), receptacle)
+                ]
                 raise ReceptacleFullError(
                     f"{receptacle_name!r} has no free spot for {name!r} ({size[0] * 100:.0f} x {size[1] * 100:.0f} cm); "
                     f"it holds {', '.join(inside) or 'nothing'}"
@@ -389,7 +410,9 @@ class ToolAPI:
         q = self.motion.sync()
         errors: list[str] = []
         flip = Transform(np.zeros(3), np.array([0.0, 0.0, 1.0, 0.0]))
-        with _touch(scene, self._grasp_family(name)):
+        fallback: Transform | None = None
+        new = [n for n in self._grasp_family(name) if n not in self._touch_allowed and n not in self._held]
+        with _touch(scene, new):
             for candidate in candidates:
                 for pose in (candidate, candidate.compose(flip)):
                     pre = Transform(pose.position - PRE_GRASP_DISTANCE * pose.rotation[:, 2], pose.quaternion)
@@ -400,16 +423,52 @@ class ToolAPI:
                         errors.append(str(exc))
                         continue
                     line = cartesian_path(self.motion.kinematics, scene, q_pre, [pose])
-                    if line.fraction >= 1.0:
-                        return pose
-                    errors.append(f"the straight approach from the pre-grasp pose is blocked: {line.reason}")
+                    if line.fraction < 1.0:
+                        # Reachable, but grasp() will have to plan its final approach: kept as a last resort.
+                        fallback = fallback or pose
+                        errors.append(f"the straight approach from the pre-grasp pose is blocked: {line.reason}")
+                        continue
+                    pull = self._pull_check(name, pose, goal)
+                    if pull:
+                        errors.append(pull)
+                        continue
+                    return pose
+        if fallback is not None:
+            return fallback
         raise PlanningError(
             f"none of the {len(candidates)} {kind} grasps of {name!r} (each also turned half a turn) can be reached "
             f"without collision; first failure: {errors[0] if errors else 'none'}",
         )
 
+    def _pull_check(self, name: str, pose: Transform, q: np.ndarray) -> str:
+        """For the handle of a drawer: why the arm could not pull it ``PULL_CHECK`` metres open from this grasp
+        (empty if it could). A handle is grasped to be pulled, and a grasp that cannot pull is no use."""
+        if ".handle_" not in name:
+            return ""
+        joints = self.perception.joints(name)
+        if not joints or joints[0].type != "prismatic":
+            return ""
+        remaining = joints[0].upper - joints[0].value
+        distance = min(PULL_CHECK, remaining)
+        if distance < 0.02:
+            return ""
+        target = Transform(pose.position + joints[0].axis * distance, pose.quaternion)
+        line = cartesian_path(self.motion.kinematics, self.motion.scene, q, [target])
+        if line.fraction >= 1.0:
+            return ""
+        return f"from this grasp the drawer can be pulled only {line.fraction * distance * 100:.0f} cm: {line.reason}"
+
     def _grasp_family(self, name: str) -> list[str]:
         return self._part_family(name) if name not in self.perception.objects() else [name]
+
+    def _fill_corner(self, receptacle: Receptacle) -> np.ndarray:
+        """Where filling starts: the corner nearest the robot; for a drawer, the front corner nearest the robot
+        (the back of an open drawer is under the carcass, where the arm has no room)."""
+        if ".drawer_" not in receptacle.name:
+            return self.base_xy
+        lower, upper = receptacle.lower, receptacle.upper
+        fronts = receptacle.frame.apply(np.array([[upper[0], lower[1], 0.0], [upper[0], upper[1], 0.0]]))[:, :2]
+        return fronts[int(np.argmin(np.linalg.norm(fronts - self.base_xy, axis=1)))]
 
     def _reachable_place(
         self, name: str, tcp: Transform, box: Box3D, spots: list[PlacementSpot], where: str
@@ -452,13 +511,28 @@ class ToolAPI:
         if self._held:
             return
         scene = self.motion.scene
-        for name in self.perception.names():
-            box = self.perception.box(name)
-            gap = np.maximum(np.maximum(box.lower - point, point - box.upper), 0.0)
-            if float(np.linalg.norm(gap)) < 0.02 and name not in self._touch_allowed:
+        for name in self._near(point):
+            if name not in self._touch_allowed:
                 for part in self._grasp_family(name):
                     scene.allow("gripper", part)
                 self._touch_allowed.add(name)
+
+    def _near(self, point: np.ndarray, distance: float = 0.02) -> list[str]:
+        """Names whose box is within ``distance`` of ``point``."""
+        out = []
+        for name in self.perception.names():
+            box = self.perception.box(name)
+            gap = np.maximum(np.maximum(box.lower - point, point - box.upper), 0.0)
+            if float(np.linalg.norm(gap)) < distance:
+                out.append(name)
+        return out
+
+    def _new_touches(self, point: np.ndarray) -> list[str]:
+        """Parts near ``point`` the gripper may not touch yet (for a temporary allowance)."""
+        if self._held:
+            return []
+        names = [n for n in self._near(point) if n not in self._touch_allowed]
+        return sorted({part for n in names for part in self._grasp_family(n)})
 
     def _allow_start_contacts(self) -> None:
         """Lets the gripper keep touching what it touches now (an object that settled against the fingers after
@@ -501,6 +575,10 @@ class _touch:
     def __exit__(self, *exc):
         for name in self.names:
             self.scene.allow("gripper", name, False)
+
+
+def _is_furniture(name: str, perception: Perception) -> bool:
+    return "." not in name and name not in perception.objects()
 
 
 def _yaw_matrix(yaw: float) -> np.ndarray:

@@ -14,8 +14,8 @@ from roboscript.geometry import Transform
 from roboscript.perception.base import Perception
 
 DOWN = np.array([0.0, 0.0, -1.0])
-# A horizontal grasp aims this far in from the outer surface of a handle (the bar's radius and a little more).
-HANDLE_DEPTH = 0.012
+# A handle grasp aims this far in from the handle's outer surface: the middle of its bar.
+HANDLE_BAR_RADIUS = 0.008
 
 
 class GraspError(ValueError):
@@ -63,6 +63,17 @@ def central_lift_grasps(
     return candidates
 
 
+def _handle_normal(perception: Perception, name: str, box) -> np.ndarray:
+    """The horizontal direction a handle faces: its part's opening direction, or its front's normal."""
+    joints = perception.joints(name) if ".handle_" in name else []
+    if joints and joints[0].type == "prismatic":
+        normal = np.asarray(joints[0].axis, dtype=float).copy()
+    else:
+        normal = np.asarray(perception.plane_normal(name, box.center + np.array([1.0, 0.0, 0.0])), dtype=float).copy()
+    normal[2] = 0.0
+    return normal / max(float(np.linalg.norm(normal)), 1e-9)
+
+
 def horizontal_grasps(
     perception: Perception,
     name: str,
@@ -87,14 +98,12 @@ def horizontal_grasps(
         yaws = [0.0]
     else:
         if is_handle:
-            joints = perception.joints(name)
-            opening = joints[0].axis if joints and joints[0].type == "prismatic" else perception.plane_normal(name, box.center + [1, 0, 0])
-            approach = -np.asarray(opening, dtype=float)
-            approach[2] = 0.0
+            approach = -_handle_normal(perception, name, box)
         else:
             approach = np.append(box.center[:2] - base_xy, 0.0)
-        yaws = [0.0, 0.35, -0.35, 0.7, -0.7, 1.0, -1.0]
+        yaws = [0.0, 0.35, -0.35, 0.7, -0.7, 1.0, -1.0, 1.3, -1.3]
     approach = approach / np.linalg.norm(approach)
+    outward_normal = -approach if approach_direction is None else _handle_normal(perception, name, box)
     size = box.size
     candidates = []
     for dyaw in yaws:
@@ -105,9 +114,9 @@ def horizontal_grasps(
             closing = np.cross(a, long_axis)
             if np.linalg.norm(closing) < 1e-6:
                 continue
-            # Aim just inside the bar's outer surface along the approach.
-            reach = float(np.abs(a) @ size) / 2
-            target = box.center - a * (reach - HANDLE_DEPTH)
+            # Aim at the bar: just inside the handle's outermost surface along the part's opening direction.
+            reach = float(np.abs(outward_normal) @ size) / 2
+            target = box.center + outward_normal * (reach - HANDLE_BAR_RADIUS)
             up = np.array([0.0, 0.0, 1.0])
             outward = up if abs(closing[2]) < 0.5 else np.cross(up, a)
         else:

@@ -64,14 +64,14 @@ class GroundTruthPerception(Perception):
         box = self.gt.box(name)
         pose = self.gt.pose(name)
         rotation = pose.rotation
-        upright = rotation[2, 2] > math.cos(math.radians(15))
+        upright = rotation[2, 2] > math.cos(math.radians(35))
         if entity.object_type is None or not upright:
             return box.center[:2], 0.0, box.size[:2] / 2
-        lower, upper = entity.object_type.bounds
         yaw = math.atan2(rotation[1, 0], rotation[0, 0])
-        center_local = (lower + upper) / 2
-        center = pose.apply(center_local[None])[0]
-        return center[:2], yaw, (upper - lower)[:2] / 2
+        frame = Transform.from_rotation(pose.position, _yaw_rotation(yaw))
+        local = self.gt.local_box(name, frame)
+        center = frame.apply(local.center[None])[0]
+        return center[:2], yaw, local.size[:2] / 2
 
     def joints(self, name: str) -> list[ArticulationJoint]:
         entity = self._entity(name)
@@ -158,6 +158,11 @@ class GroundTruthPerception(Perception):
             lower[0] = max(lower[0], -opening + DRAWER_FRONT_CLEARANCE)
             return Receptacle(name, frame, lower, upper)
         return None
+
+
+def _yaw_rotation(yaw: float) -> np.ndarray:
+    c, s = math.cos(yaw), math.sin(yaw)
+    return np.array([[c, -s, 0.0], [s, c, 0.0], [0.0, 0.0, 1.0]])
 
 
 def _moving_part(world, part: str) -> str:

@@ -41,11 +41,16 @@ class Contact:
     normal_force: float
 
 
-def geoms_box(model: mujoco.MjModel, data: mujoco.MjData, geoms: np.ndarray) -> Box3D:
-    """World axis-aligned box of the given geoms: exact half-extents for primitives, whose rotated local boxes
-    would overstate them (a capsule rolled by 45 degrees by 41 percent); rotated local boxes for meshes."""
+def geoms_box(model: mujoco.MjModel, data: mujoco.MjData, geoms: np.ndarray, frame: Transform | None = None) -> Box3D:
+    """Axis-aligned box of the given geoms, in world axes or in ``frame``'s: exact half-extents for primitives,
+    whose rotated local boxes would overstate them (a capsule rolled by 45 degrees by 41 percent); rotated local
+    boxes for meshes."""
     rot = data.geom_xmat[geoms].reshape(-1, 3, 3)
     center = data.geom_xpos[geoms].copy()
+    if frame is not None:
+        inverse = frame.rotation.T
+        rot = np.einsum("ij,njk->nik", inverse, rot)
+        center = (center - frame.position) @ inverse.T
     size = model.geom_size[geoms]
     types = model.geom_type[geoms]
     half = np.zeros((len(geoms), 3))
@@ -104,6 +109,13 @@ class GroundTruth:
         if len(geoms) == 0:
             raise ValueError(f"{name!r} has no geometry")
         return geoms_box(self.model, self.data, geoms)
+
+    def local_box(self, name: str, frame: Transform) -> Box3D:
+        """Tight box around every geom of ``name`` in the axes of ``frame`` (exact for primitives)."""
+        geoms = self._entity_geoms[self.entity(name).name]
+        if len(geoms) == 0:
+            raise ValueError(f"{name!r} has no geometry")
+        return geoms_box(self.model, self.data, geoms, frame)
 
     def geoms(self, name: str) -> np.ndarray:
         """Ids of the geoms that make up ``name``'s shape."""

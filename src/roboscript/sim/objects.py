@@ -339,7 +339,7 @@ _register(
         1800,
         "a large white serving plate, 32 cm across",
         container=True,
-        interior=((-0.115, -0.115, 0.008), (0.115, 0.115, 0.1)),
+        interior=((-0.12, -0.12, 0.008), (0.12, 0.12, 0.1)),
     )
 )
 for _color in ("white", "blue", "pink"):

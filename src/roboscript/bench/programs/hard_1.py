@@ -11,7 +11,10 @@ banana_position = get_object_center_position(obj_name='banana')
 
 def pick(name):
     open_gripper()
-    grasp_pose = parse_central_lift_grasp_pose(object_name=name, description='center')
+    if name == 'banana':  # curved: the adaptive grasp finds where its body is
+        grasp_pose = parse_adaptive_shape_grasp_pose(object_name=name, preferred_approach_direction=[0, 0, -1])
+    else:
+        grasp_pose = parse_central_lift_grasp_pose(object_name=name, description='center')
     grasp(grasp_pose)
     close_gripper()
     attach_object(name)

@@ -15,7 +15,7 @@ axis = joint_info['joint_axis']
 move_in_direction(axis, distance=0.22)
 open_gripper()
 detach_object('cabinet.drawer_1')
-move_in_direction(axis, distance=0.08)
+move_in_direction(axis, distance=0.03)
 boxes = [name for name in get_object_name_list() if name.endswith('_box')]
 for box in boxes:
     grasp_pose = parse_central_lift_grasp_pose(object_name=box, description='center')

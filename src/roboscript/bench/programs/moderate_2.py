@@ -16,7 +16,7 @@ axis = joint_info['joint_axis']
 move_in_direction(axis, distance=0.22)
 open_gripper()
 detach_object('cabinet.drawer_1')
-move_in_direction(axis, distance=0.08)
+move_in_direction(axis, distance=0.03)
 grasp_pose = parse_adaptive_shape_grasp_pose(object_name='mug', preferred_approach_direction=[0, 0, -1])
 grasp(grasp_pose)
 close_gripper()
