@@ -62,6 +62,7 @@ def spots_in_receptacle(
     corner_xy: np.ndarray,
     step: float = 0.015,
     near_xy: np.ndarray | None = None,
+    wall_margin: float = MARGIN,
 ) -> list[PlacementSpot]:
     """Free spots inside the receptacle's interior, filled from the corner nearest ``corner_xy`` outwards.
 
@@ -81,13 +82,13 @@ def spots_in_receptacle(
     for quarter in range(4):
         aligned = frame_yaw + quarter * math.pi / 2
         turn = math.remainder(aligned - object_yaw, 2 * math.pi)
-        half = (half_xy if quarter % 2 == 0 else half_xy[::-1]) + MARGIN
+        half = (half_xy if quarter % 2 == 0 else half_xy[::-1]) + wall_margin
         lo, hi = lower[:2] + half, upper[:2] - half
         if np.any(hi < lo - 1e-9):
             continue
         xs = np.arange(lo[0], hi[0] + 1e-9, step) if hi[0] - lo[0] > step else np.array([(lo[0] + hi[0]) / 2])
         ys = np.arange(lo[1], hi[1] + 1e-9, step) if hi[1] - lo[1] > step else np.array([(lo[1] + hi[1]) / 2])
-        world_half = _rotated_half(half - MARGIN, frame_yaw)
+        world_half = _rotated_half(half - wall_margin, frame_yaw)
         for x in xs:
             for y in ys:
                 world = receptacle.frame.apply(np.array([[x, y, 0.0]]))[0]

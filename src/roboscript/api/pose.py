@@ -84,7 +84,9 @@ class Pose:
 
     __slots__ = ("_orientation", "_position")
 
-    def __init__(self, position: Point | Sequence[float] | None = None, orientation: Quaternion | Sequence[float] | None = None):
+    def __init__(
+        self, position: Point | Sequence[float] | None = None, orientation: Quaternion | Sequence[float] | None = None
+    ):
         self.position = Point() if position is None else position
         self.orientation = Quaternion() if orientation is None else orientation
 

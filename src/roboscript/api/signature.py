@@ -26,7 +26,9 @@ def tool(function: Callable) -> Callable:
         for key, value in kwargs.items():
             target = ALIASES.get(key, key) if key not in signature.parameters else key
             if target in renamed:
-                raise ToolCallError(f"{function.__name__}() got {target!r} twice (as {key!r} and {target!r}); use {usage}")
+                raise ToolCallError(
+                    f"{function.__name__}() got {target!r} twice (as {key!r} and {target!r}); use {usage}"
+                )
             renamed[target] = value
         try:
             bound = signature.bind(self, *args, **renamed)

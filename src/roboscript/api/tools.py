@@ -12,6 +12,7 @@ from collections.abc import Sequence
 import numpy as np
 
 from roboscript.api.placement import (
+    MARGIN,
     PlacementError,
     PlacementSpot,
     ReceptacleFullError,
@@ -32,7 +33,8 @@ from roboscript.planning.motion import MotionPlanner
 
 PRE_GRASP_DISTANCE = 0.1
 PULL_CHECK = 0.25  # metres a drawer handle grasp must be able to pull
-PLACE_IK_BUDGET = 48  # IK screens per parse_place_pose call (each costs a few milliseconds to ~0.1 s)
+DRAWER_WALL_MARGIN = 0.025
+PLACE_IK_BUDGET = 96  # IK screens per parse_place_pose call (each costs a few milliseconds to ~0.1 s)
 TABLE = "table"
 # Where things may be put down on the table: in front of the robot, clear of its base.
 TABLE_REGION = (np.array([-0.3, -0.45]), np.array([0.28, 0.45]))
@@ -126,7 +128,7 @@ class ToolAPI:
         return self.perception.box(self._name(object_name)).as_array()
 
     @tool
-    def get_object_joint_info(self, object_name: str, position: Sequence[float], type: str = "any") -> dict:  # noqa: A002
+    def get_object_joint_info(self, object_name: str, position: Sequence[float], type: str = "any") -> dict:
         """The joint of the object closest to ``position``: ``{"joint_position", "joint_axis", "type"}``."""
         name = self._name(object_name)
         point = _vector(position, "position")
@@ -136,9 +138,7 @@ class ToolAPI:
         if not joints:
             articulated = [n for n in self.perception.names() if self.perception.joints(n)]
             kind = "" if type == "any" else f"{type} "
-            raise ValueError(
-                f"{name!r} has no {kind}joint; articulated objects: {', '.join(articulated) or 'none'}"
-            )
+            raise ValueError(f"{name!r} has no {kind}joint; articulated objects: {', '.join(articulated) or 'none'}")
         joint = min(joints, key=lambda j: float(np.linalg.norm(j.position - point)))
         return {"joint_position": joint.position.copy(), "joint_axis": joint.axis.copy(), "type": joint.type}
 
@@ -183,7 +183,9 @@ class ToolAPI:
         )
         cloud = self.perception.points(name)
         if len(cloud.points) < 10:
-            raise GraspError(f"{name!r} is hardly visible to the cameras ({len(cloud.points)} points): no grasp detected")
+            raise GraspError(
+                f"{name!r} is hardly visible to the cameras ({len(cloud.points)} points): no grasp detected"
+            )
         candidates = detect_grasps(cloud, self.perception.scene_points(), self.gripper, preferences, seed=self.seed)
         if not candidates:
             raise GraspError(
@@ -230,11 +232,9 @@ class ToolAPI:
         target = Transform(current.position + direction * distance, current.quaternion)
         try:
             self.motion.follow([target])
-        except CartesianPathIncompleteError as exc:
-            # The line passes a singularity or a joint limit (not an obstacle it could go around): a planned
-            # collision-free motion to the same end pose instead.
-            if "collision" in str(exc):
-                raise
+        except CartesianPathIncompleteError:
+            # The line passes a singularity or a joint limit, or the IK branch it follows swings a link into
+            # something: a planned collision-free motion to the same end pose instead.
             self.motion.execute(self.motion.plan_to_pose(target))
         self._after_motion()
 
@@ -293,7 +293,9 @@ class ToolAPI:
         """A reachable gripper pose that puts the held object into/onto the receptacle, or at ``position``."""
         name = self._name(object_name)
         if (receptacle_name is None) == (position is None):
-            raise ValueError("give exactly one of receptacle_name (e.g. 'plate', 'cabinet.drawer_1') or position [x, y, z]")
+            raise ValueError(
+                "give exactly one of receptacle_name (e.g. 'plate', 'cabinet.drawer_1') or position [x, y, z]"
+            )
         if name not in self._held:
             held = ", ".join(self._held) or "nothing"
             raise ValueError(
@@ -306,23 +308,27 @@ class ToolAPI:
         others = [self.perception.box(o) for o in self.perception.objects() if o not in (name, receptacle_name)]
         if position is not None:
             target = _vector(position, "position")
-            support = max(
-                [TABLE_TOP] + [b.upper[2] for b in others if _overlaps_xy(b, target[:2], size[:2] / 2)]
-            )
+            support = max([TABLE_TOP] + [b.upper[2] for b in others if _overlaps_xy(b, target[:2], size[:2] / 2)])
             spots = [spot_at(target, size, support)]
             where = f"at {np.round(target, 3).tolist()}"
         else:
             receptacle = self._receptacle(receptacle_name, name)
             _, yaw, half = self.perception.footprint(name)
             if receptacle_name == TABLE:  # aside: clear of objects and furniture, near but not where it was
-                furniture = [self.perception.box(n) for n in self.perception.names() if _is_furniture(n, self.perception)]
+                furniture = [
+                    self.perception.box(n) for n in self.perception.names() if _is_furniture(n, self.perception)
+                ]
                 spots = spots_in_receptacle(
                     receptacle, half, yaw, size[2], others + furniture, self.base_xy, near_xy=box.center[:2]
                 )
                 spots = [s for s in spots if np.linalg.norm(s.center[:2] - box.center[:2]) > 0.15]
             else:
                 inside = [b for b in others if _within(b, receptacle)]
-                spots = spots_in_receptacle(receptacle, half, yaw, size[2], inside, self._fill_corner(receptacle))
+                # A drawer's front and walls stand high around a held object that may swing a little.
+                wall_margin = DRAWER_WALL_MARGIN if ".drawer_" in receptacle.name else MARGIN
+                spots = spots_in_receptacle(
+                    receptacle, half, yaw, size[2], inside, self._fill_corner(receptacle), wall_margin=wall_margin
+                )
             if not spots:
                 inside = [
                     o
@@ -330,7 +336,8 @@ class ToolAPI:
                     if o not in (name, receptacle_name) and _within(self.perception.box(o), receptacle)
                 ]
                 raise ReceptacleFullError(
-                    f"{receptacle_name!r} has no free spot for {name!r} ({size[0] * 100:.0f} x {size[1] * 100:.0f} cm); "
+                    f"{receptacle_name!r} has no free spot for {name!r} "
+                    f"({size[0] * 100:.0f} x {size[1] * 100:.0f} cm); "
                     f"it holds {', '.join(inside) or 'nothing'}"
                 )
             where = f"in {receptacle_name!r}"
@@ -481,7 +488,7 @@ class ToolAPI:
         first_error = ""
         budget = PLACE_IK_BUDGET
         for spot in spots:
-            if any(np.linalg.norm(spot.center - t.center) < 0.03 and abs(spot.yaw - t.yaw) < 0.1 for t in tried):
+            if any(np.linalg.norm(spot.center - t.center) < 0.05 and abs(spot.yaw - t.yaw) < 0.1 for t in tried):
                 continue
             tried.append(spot)
             for lift in (0.0, 0.05, 0.1):
@@ -501,7 +508,9 @@ class ToolAPI:
                             f"no reachable, collision-free pose puts {name!r} {where} ({len(tried)} spots tried): "
                             f"{first_error}"
                         )
-        raise PlacementError(f"no reachable, collision-free pose puts {name!r} {where} ({len(tried)} spots tried): {first_error}")
+        raise PlacementError(
+            f"no reachable, collision-free pose puts {name!r} {where} ({len(tried)} spots tried): {first_error}"
+        )
 
     def _allow_touch_near(self, point: np.ndarray) -> None:
         """Lets the fingers touch what lies at the goal (the object to be grasped); withdrawn once clear of it.
@@ -630,7 +639,9 @@ def _direction(value: object, field: str) -> np.ndarray:
 
 def _pose(value: object, field: str) -> Transform:
     if not isinstance(value, Pose):
-        raise TypeError(f"{field} must be a Pose (e.g. from get_gripper_pose() or a parse_* tool), got {type(value).__name__}")
+        raise TypeError(
+            f"{field} must be a Pose (e.g. from get_gripper_pose() or a parse_* tool), got {type(value).__name__}"
+        )
     return value.to_transform()
 
 

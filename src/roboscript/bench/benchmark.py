@@ -33,7 +33,9 @@ def trial_specs(
     for i in range(trials):
         path = None
         if video:
-            path = video if trials == 1 else str(Path(video).with_name(f"{Path(video).stem}_trial{i}{Path(video).suffix}"))
+            path = (
+                video if trials == 1 else str(Path(video).with_name(f"{Path(video).stem}_trial{i}{Path(video).suffix}"))
+            )
         specs.append(TrialSpec(task, robot, i, seed + i, program, timeout, path))
     return specs
 

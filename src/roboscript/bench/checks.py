@@ -52,7 +52,9 @@ class Check:
             return CheckResult(self.name, inside >= FRACTION, f"{inside:.0%} of its volume inside")
         if self.kind == "on":
             a, b = gt.box(self.subject), gt.box(self.target)
-            overlap = np.prod(np.clip(np.minimum(a.upper[:2], b.upper[:2]) - np.maximum(a.lower[:2], b.lower[:2]), 0, None))
+            overlap = np.prod(
+                np.clip(np.minimum(a.upper[:2], b.upper[:2]) - np.maximum(a.lower[:2], b.lower[:2]), 0, None)
+            )
             fraction = float(overlap / max(np.prod(a.size[:2]), 1e-12))
             above = a.lower[2] >= b.lower[2] - 0.005
             return CheckResult(
@@ -67,8 +69,13 @@ class Check:
         raise ValueError(f"unknown check kind {self.kind!r}; kinds: in, on, at, joint")
 
     def to_dict(self) -> dict:
-        return {"kind": self.kind, "subject": self.subject, "target": self.target, "point": self.point,
-                "threshold": self.threshold}
+        return {
+            "kind": self.kind,
+            "subject": self.subject,
+            "target": self.target,
+            "point": self.point,
+            "threshold": self.threshold,
+        }
 
 
 def inside(a: str, b: str) -> Check:

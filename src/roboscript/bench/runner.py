@@ -96,7 +96,9 @@ def run_isolated(
                 running.pop(receiver)
                 finish(
                     _failed(
-                        spec, f"TimeoutError: the program ran longer than its {spec.timeout:g} s limit (killed)", started
+                        spec,
+                        f"TimeoutError: the program ran longer than its {spec.timeout:g} s limit (killed)",
+                        started,
                     )
                 )
     return records

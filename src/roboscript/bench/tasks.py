@@ -63,22 +63,54 @@ def _table_objects(gt: GroundTruth, container: str) -> list[str]:
 TASKS: dict[str, Task] = {
     t.id: t
     for t in [
-        Task("simple_0", "world_2_pick_and_place", "Place the apple into the footed bowl",
-             lambda gt: [inside("apple", "footed_bowl")]),
-        Task("simple_1", "world_3_mug_to_empty_plate", "Place the brown cup into an empty plate",
-             lambda gt: [on("brown_cup", _empty_plate(gt))]),
-        Task("moderate_0", "world_1_table_sort", "Open the second top cabinet drawer and place all boxes into it",
-             lambda gt: [inside(b, "cabinet.drawer_1") for b in _boxes(gt)]),
-        Task("moderate_1", "world_6_mug_to_same_color_plate", "Move the white mug into a container with the same color",
-             lambda gt: [on("white_mug", "white_plate")]),
-        Task("moderate_2", "world_5_mug_to_cabinet", "Place the mug into the second top drawer",
-             lambda gt: [inside("mug", "cabinet.drawer_1")]),
-        Task("hard_0", "world_1_table_sort", "Place all fruits on the table into the white plate",
-             lambda gt: [on(f, "white_plate") for f in _fruits(gt)]),
-        Task("hard_1", "world_1_table_sort", "Exchange the position of the apple and the banana on the table",
-             lambda gt: [at("apple", gt.box("banana").center), at("banana", gt.box("apple").center)]),
-        Task("hard_2", "world_4_clear_table_to_basket", "Clear the table by moving all table objects into the basket",
-             lambda gt: [inside(o, "basket") for o in _table_objects(gt, "basket")]),
+        Task(
+            "simple_0",
+            "world_2_pick_and_place",
+            "Place the apple into the footed bowl",
+            lambda gt: [inside("apple", "footed_bowl")],
+        ),
+        Task(
+            "simple_1",
+            "world_3_mug_to_empty_plate",
+            "Place the brown cup into an empty plate",
+            lambda gt: [on("brown_cup", _empty_plate(gt))],
+        ),
+        Task(
+            "moderate_0",
+            "world_1_table_sort",
+            "Open the second top cabinet drawer and place all boxes into it",
+            lambda gt: [inside(b, "cabinet.drawer_1") for b in _boxes(gt)],
+        ),
+        Task(
+            "moderate_1",
+            "world_6_mug_to_same_color_plate",
+            "Move the white mug into a container with the same color",
+            lambda gt: [on("white_mug", "white_plate")],
+        ),
+        Task(
+            "moderate_2",
+            "world_5_mug_to_cabinet",
+            "Place the mug into the second top drawer",
+            lambda gt: [inside("mug", "cabinet.drawer_1")],
+        ),
+        Task(
+            "hard_0",
+            "world_1_table_sort",
+            "Place all fruits on the table into the white plate",
+            lambda gt: [on(f, "white_plate") for f in _fruits(gt)],
+        ),
+        Task(
+            "hard_1",
+            "world_1_table_sort",
+            "Exchange the position of the apple and the banana on the table",
+            lambda gt: [at("apple", gt.box("banana").center), at("banana", gt.box("apple").center)],
+        ),
+        Task(
+            "hard_2",
+            "world_4_clear_table_to_basket",
+            "Clear the table by moving all table objects into the basket",
+            lambda gt: [inside(o, "basket") for o in _table_objects(gt, "basket")],
+        ),
     ]
 }
 

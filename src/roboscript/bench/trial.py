@@ -18,7 +18,7 @@ PROGRAM_FILENAME = "<program>"
 MAX_OUTPUT = 4000  # characters of a program's printed output kept in its record
 
 
-class ProgramTimeout(BaseException):  # noqa: N818 - not an Exception, so a program's ``except Exception`` cannot hide it
+class ProgramTimeout(BaseException):  # not an Exception, so that a program's ``except Exception`` cannot hide it
     """The program ran past its time limit."""
 
 

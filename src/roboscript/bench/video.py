@@ -14,7 +14,9 @@ import numpy as np
 class VideoRecorder:
     """Renders ``camera`` at ``fps`` (simulated time) into ``path`` while it is open."""
 
-    def __init__(self, backend, path: str | Path, camera: str = "camera_left", fps: int = 15, width: int = 480, height: int = 360):
+    def __init__(
+        self, backend, path: str | Path, camera: str = "camera_left", fps: int = 15, width: int = 480, height: int = 360
+    ):
         try:
             import imageio_ffmpeg
         except ImportError:
@@ -26,7 +28,12 @@ class VideoRecorder:
         self.path.parent.mkdir(parents=True, exist_ok=True)
         self._renderer = backend.renderer(width, height)
         self._writer = imageio_ffmpeg.write_frames(
-            str(self.path), (width, height), fps=fps, codec="libx264", quality=6, macro_block_size=8,
+            str(self.path),
+            (width, height),
+            fps=fps,
+            codec="libx264",
+            quality=6,
+            macro_block_size=8,
             output_params=["-pix_fmt", "yuv420p"],
         )
         self._writer.send(None)

@@ -80,7 +80,9 @@ class Perception(ABC):
     def require(self, name: object) -> str:
         """``name`` if it is known, else :class:`UnknownObjectError` with the closest names."""
         if not isinstance(name, str):
-            raise TypeError(f"an object name must be a string such as {self.names()[0]!r}, got {type(name).__name__} {name!r}")
+            raise TypeError(
+                f"an object name must be a string such as {self.names()[0]!r}, got {type(name).__name__} {name!r}"
+            )
         if name not in self.names():
             raise UnknownObjectError(name, self.names())
         return name

@@ -58,7 +58,11 @@ def _unit(v: np.ndarray) -> np.ndarray:
 
 
 def antipodal_pairs(
-    cloud: ObjectPoints, gripper: GripperGeometry, rng: np.random.Generator, seeds: int = 400, line_radius: float = 0.004
+    cloud: ObjectPoints,
+    gripper: GripperGeometry,
+    rng: np.random.Generator,
+    seeds: int = 400,
+    line_radius: float = 0.004,
 ) -> list[tuple[np.ndarray, np.ndarray, float, float]]:
     """``(center, closing_axis, quality, width)`` of antipodal point pairs that fit between the open fingers."""
     points, normals = cloud.points, cloud.normals
@@ -101,7 +105,9 @@ def grasp_frames(center: np.ndarray, closing: np.ndarray, approaches: int = 12) 
     return frames
 
 
-def collides(rotation: np.ndarray, center: np.ndarray, scene: np.ndarray, gripper: GripperGeometry, width: float) -> bool:
+def collides(
+    rotation: np.ndarray, center: np.ndarray, scene: np.ndarray, gripper: GripperGeometry, width: float
+) -> bool:
     """Whether the open fingers (at ``width`` plus a margin) or the palm would contain any scene point."""
     local = (scene - center) @ rotation
     x, y, z = local[:, 0], local[:, 1], local[:, 2]

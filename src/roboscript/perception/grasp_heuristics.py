@@ -93,14 +93,13 @@ def horizontal_grasps(
         approach[2] = 0.0
         if approach.shape != (3,) or np.linalg.norm(approach) < 1e-6:
             raise ValueError(
-                f"approach_direction must be a 3-vector with a horizontal part, got {np.asarray(approach_direction).tolist()}"
+                "approach_direction must be a 3-vector with a horizontal part, got "
+                f"{np.asarray(approach_direction).tolist()}"
             )
         yaws = [0.0]
     else:
-        if is_handle:
-            approach = -_handle_normal(perception, name, box)
-        else:
-            approach = np.append(box.center[:2] - base_xy, 0.0)
+        # A handle is approached against its part's opening direction, anything else from the robot's side.
+        approach = -_handle_normal(perception, name, box) if is_handle else np.append(box.center[:2] - base_xy, 0.0)
         yaws = [0.0, 0.35, -0.35, 0.7, -0.7, 1.0, -1.0, 1.3, -1.3]
     approach = approach / np.linalg.norm(approach)
     outward_normal = -approach if approach_direction is None else _handle_normal(perception, name, box)

@@ -76,7 +76,11 @@ class GroundTruthPerception(Perception):
     def joints(self, name: str) -> list[ArticulationJoint]:
         entity = self._entity(name)
         if entity.kind == "furniture":
-            parts = [e.name for e in self.world.entities if e.kind == "part" and e.joint >= 0 and e.name.startswith(name + ".")]
+            parts = [
+                e.name
+                for e in self.world.entities
+                if e.kind == "part" and e.joint >= 0 and e.name.startswith(name + ".")
+            ]
         elif entity.kind == "part":
             parts = [name]
         else:

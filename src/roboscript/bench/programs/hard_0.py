@@ -1,6 +1,6 @@
 # Task: place all fruits on the table into the white plate.
 # Plan:
-# 1. Detect the objects; the fruits are the apple, the banana, the lemon and the orange.
+# 1. Detect the objects and pick out the fruits among them.
 # 2. Take the largest fruit (the banana) first, so that the round fruits fill the room left beside it.
 # 3. For each fruit: grasp it (round fruits from above at their centre; the curved banana with the adaptive
 #    grasp, which finds where its body actually is), lift it, place it on the white plate, release it, move up.

@@ -1,0 +1,126 @@
+"""The benchmark: checks on ground truth, metrics, resumable run directories, and ``roboscript exec`` on
+programs that fail in every way a program can (run through the real command, in child processes)."""
+
+import json
+import subprocess
+import sys
+
+import numpy as np
+import pytest
+
+from roboscript.backends.mujoco_backend import MujocoBackend
+from roboscript.bench.checks import at, inside, joint_above, on
+from roboscript.bench.metrics import metrics
+from roboscript.bench.results import RunDirectory, provenance
+from roboscript.bench.tasks import TASKS, get_task
+from roboscript.bench.trial import TrialRecord
+
+
+def record(trial, ok, passed, total=2):
+    checks = [{"check": f"c{i}", "passed": i < passed, "detail": ""} for i in range(total)]
+    return TrialRecord("simple_0", "panda", trial, trial, ok, None if ok else "boom", checks)
+
+
+def test_checks_on_ground_truth():
+    backend = MujocoBackend("world_3_mug_to_empty_plate", settle=0.5)
+    gt = backend.ground_truth
+    assert on("apple", "white_plate").evaluate(gt).passed
+    assert not on("apple", "blue_plate").evaluate(gt).passed
+    assert not inside("apple", "blue_plate").evaluate(gt).passed
+    apple = gt.box("apple").center
+    assert at("apple", apple).evaluate(gt).passed
+    assert not at("apple", apple + np.array([0.15, 0, 0])).evaluate(gt).passed
+    backend.close()
+    cabinet = MujocoBackend("world_5_mug_to_cabinet", settle=0.2)
+    result = joint_above("cabinet.drawer_1", 0.1).evaluate(cabinet.ground_truth)
+    assert not result.passed and "at 0.000" in result.detail
+    cabinet.close()
+
+
+def test_tasks_build_their_checks_from_the_starting_world():
+    assert len(TASKS) == 8
+    backend = MujocoBackend(get_task("simple_1").world, settle=0.2)
+    (check,) = get_task("simple_1").build_checks(backend.ground_truth)
+    assert check.name == "on(brown_cup, blue_plate)"  # the white plate holds the apple
+    assert "objects = [" in get_task("simple_1").query(backend.ground_truth)
+    backend.close()
+    with pytest.raises(KeyError, match="did you mean simple_0"):
+        get_task("simple0")
+
+
+def test_metrics():
+    m = metrics([record(0, True, 2), record(1, False, 1), record(2, True, 0)])
+    assert m == {
+        "grammar_correctness": pytest.approx(2 / 3, abs=1e-4),
+        "semantic_correctness": 1.0,
+        "finished_steps_ratio": pytest.approx(0.5),
+        "whole_task_success": pytest.approx(1 / 3, abs=1e-4),
+    }
+    assert metrics([record(0, True, 1)])["semantic_correctness"] == 0.0
+
+
+def test_run_directory_resumes_and_refuses_mixing(tmp_path):
+    run = provenance("reference", "panda", 3, 0, {"simple_0": "program A"}, "ground_truth")
+    directory = RunDirectory(tmp_path, run)
+    directory.append(record(0, True, 2))
+    with directory.results.open("a") as f:
+        f.write('{"task": "simple_0", "rob')  # a line cut short by an interruption
+    again = RunDirectory(tmp_path, provenance("reference", "panda", 3, 0, {"simple_0": "program A"}, "ground_truth"))
+    assert again.done() == {("simple_0", "panda", 0)}
+    summary = again.write_summary(["simple_0"])
+    assert summary["tasks"]["simple_0"]["whole_task_success"] == 1.0
+    assert "| Whole task success | 1.00 |" in (tmp_path / "summary.md").read_text()
+    assert (tmp_path / "summary.csv").read_text().startswith("task,trials,grammar_correctness")
+    with pytest.raises(ValueError, match="another program for simple_0"):
+        RunDirectory(tmp_path, provenance("reference", "panda", 3, 0, {"simple_0": "program B"}, "ground_truth"))
+    with pytest.raises(ValueError, match="robot='panda', not 'ur5e'"):
+        RunDirectory(tmp_path, provenance("reference", "ur5e", 3, 0, {"simple_0": "program A"}, "ground_truth"))
+
+
+def exec_json(tmp_path, source, *args):
+    program = tmp_path / "program.py"
+    program.write_text(source)
+    out = subprocess.run(
+        [sys.executable, "-m", "roboscript.cli", "exec", str(program), "--task", "simple_0", "--json", *args],
+        capture_output=True,
+        text=True,
+        timeout=600,
+    )
+    assert out.returncode == 0, out.stderr
+    return json.loads(out.stdout.strip().splitlines()[-1])
+
+
+@pytest.mark.parametrize(
+    ("source", "error"),
+    [
+        ("open_gripper(\n", "SyntaxError"),
+        (
+            "x = get_object_center_position('aple')\n",
+            "UnknownObjectError: no object named 'aple'; did you mean 'apple'",
+        ),
+        ("while True:\n    pass\n", "TimeoutError: the program ran longer than its 3 s limit"),
+    ],
+)
+def test_exec_reports_each_failing_trial_as_a_grammar_failure_and_goes_on(tmp_path, source, error):
+    result = exec_json(tmp_path, source, "--trials", "2", "--timeout", "3", "--jobs", "2")
+    assert result["task"] == "simple_0" and result["trials"] == 2
+    assert result["grammar_correctness"] == 0.0 and result["whole_task_success"] == 0.0
+    assert [t["trial"] for t in result["per_trial"]] == [0, 1]
+    for trial in result["per_trial"]:
+        assert trial["ok"] is False and error in trial["error"]
+        assert trial["checks"] and trial["checks"][0]["passed"] is False
+        assert trial["wall_time_s"] < 60
+    if "line" in error or error == "SyntaxError":
+        assert "(program line 1)" in result["per_trial"][0]["error"]
+
+
+def test_exec_runs_the_reference_program_and_records_a_video(tmp_path):
+    video = tmp_path / "trial.mp4"
+    source = get_task("simple_0").reference_program()
+    result = exec_json(tmp_path, source, "--trials", "1", "--video", str(video))
+    (trial,) = result["per_trial"]
+    assert trial["ok"], trial["error"]
+    assert result["whole_task_success"] == 1.0
+    assert trial["sim_time_s"] > trial["wall_time_s"] * 0.5  # far from a crawl even with the recorder on
+    data = video.read_bytes()
+    assert len(data) > 10_000 and b"ftyp" in data[:64]

@@ -1,0 +1,191 @@
+"""The tool API in ground-truth mode: aliases, results, and a clear error per tool for bad input."""
+
+import numpy as np
+import pytest
+
+from roboscript.api import Pose, ToolAPI
+from roboscript.api.placement import PlacementError, ReceptacleFullError
+from roboscript.api.signature import ToolCallError
+from roboscript.backends.mujoco_backend import MujocoBackend
+from roboscript.perception.base import UnknownObjectError
+from roboscript.perception.grasp_heuristics import GraspError
+from roboscript.planning.errors import PlanningError
+from roboscript.sim.world_file import parse_world
+
+
+@pytest.fixture(scope="module")
+def tools():
+    """world_2: apple, footed bowl, blue bowl, plum, baseball, lemon (tests here do not move the arm)."""
+    backend = MujocoBackend("world_2_pick_and_place", robot="panda", settle=0.5)
+    yield ToolAPI.for_simulation(backend)
+    backend.close()
+
+
+@pytest.fixture(scope="module")
+def cabinet_tools():
+    """A saucer already holding an apple, a plum to pick, and a cabinet with closed drawers."""
+    world = parse_world(
+        {
+            "name": "tools_test",
+            "objects": [
+                {"name": "white_saucer", "type": "white_saucer", "position": [0.1, -0.2]},
+                {"name": "apple", "type": "apple", "on": "white_saucer"},
+                {"name": "plum", "type": "plum", "position": [-0.1, -0.15]},
+            ],
+            "furniture": [{"name": "cabinet", "type": "cabinet", "position": [-0.36, 0.56], "rows": ["drawer"] * 3}],
+        }
+    )
+    backend = MujocoBackend(world, robot="panda", settle=0.5)
+    yield ToolAPI.for_simulation(backend)
+    backend.close()
+
+
+def test_namespace_holds_every_tool_np_and_pose(tools):
+    names = tools.namespace()
+    assert names["np"] is np and names["Pose"] is Pose
+    assert set(ToolAPI.TOOL_NAMES) <= set(names)
+
+
+def test_unknown_object_names_suggest_the_closest(tools):
+    with pytest.raises(UnknownObjectError, match=r"no object named 'aple'; did you mean 'apple'"):
+        tools.get_object_center_position("aple")
+    with pytest.raises(TypeError, match="object name must be a string"):
+        tools.get_3d_bbox(3)
+
+
+def test_perception_tools_and_aliases(tools):
+    gt = tools.backend.ground_truth
+    center = tools.get_object_center_position(obj_name="apple")
+    np.testing.assert_allclose(center, gt.box("apple").center)
+    bbox = tools.get_3d_bbox(object_name="footed_bowl")
+    assert bbox.shape == (6,) and np.all(bbox[:3] < bbox[3:])
+    pose = tools.get_object_pose("apple")
+    assert isinstance(pose, Pose) and pose.position.x == pytest.approx(gt.pose("apple").position[0])
+    assert "apple" in tools.get_object_name_list()
+    tools.detect_objects(category_list=["apple"])
+    with pytest.raises(TypeError, match="object_list must be a list of names"):
+        tools.detect_objects("apple")
+
+
+def test_unknown_keywords_name_the_signature(tools):
+    with pytest.raises(
+        ToolCallError, match=r"unexpected keyword argument 'name'.*get_object_center_position\(object_name\)"
+    ):
+        tools.get_object_center_position(name="apple")
+    with pytest.raises(ToolCallError, match="missing a required argument"):
+        tools.move_in_direction([0, 0, 1])
+
+
+def test_joint_info_and_plane_normal(cabinet_tools):
+    handle = cabinet_tools.get_object_center_position("cabinet.handle_1")
+    info = cabinet_tools.get_object_joint_info(obj_name="cabinet", position=handle, type="prismatic")
+    np.testing.assert_allclose(info["joint_axis"], [1.0, 0.0, 0.0], atol=1e-9)
+    assert info["type"] == "prismatic"
+    assert abs(info["joint_position"][2] - handle[2]) < 0.01  # the second drawer's joint, not another one
+    with pytest.raises(ValueError, match="type must be one of any, revolute, prismatic"):
+        cabinet_tools.get_object_joint_info("cabinet", handle, type="slider")
+    with pytest.raises(ValueError, match=r"'apple' has no joint; articulated objects: cabinet"):
+        cabinet_tools.get_object_joint_info("apple", handle)
+    with pytest.raises(ValueError, match=r"no revolute joint"):
+        cabinet_tools.get_object_joint_info("cabinet", handle, type="revolute")
+    front = cabinet_tools.get_3d_bbox("cabinet.drawer_1")
+    normal = cabinet_tools.get_plane_normal(
+        "cabinet.drawer_1", [front[3] + 0.05, (front[1] + front[4]) / 2, (front[2] + front[5]) / 2]
+    )
+    np.testing.assert_allclose(normal, [1.0, 0.0, 0.0], atol=1e-9)
+    with pytest.raises(ValueError, match=r"position must be 3 numbers"):
+        cabinet_tools.get_plane_normal("cabinet.drawer_1", [0.1, 0.2])
+
+
+def test_grasp_parsers(tools):
+    box = tools.get_3d_bbox("apple")
+    lift = tools.parse_central_lift_grasp_pose(object_name="apple", description="center")
+    np.testing.assert_allclose(lift.position_array(), (box[:3] + box[3:]) / 2, atol=1e-6)
+    assert lift.rotation_matrix()[2, 2] < -0.99  # approaching from above
+    with pytest.raises(ValueError, match="description must be 'top' or 'center'"):
+        tools.parse_central_lift_grasp_pose("apple", description="side")
+    with pytest.raises(GraspError, match="wider than the gripper"):
+        tools.parse_central_lift_grasp_pose("blue_bowl")
+    side = tools.parse_horizontal_grasp_pose("lemon", approach_direction=[1, 0, 0])
+    assert side.rotation_matrix()[:, 2] @ [1, 0, 0] > 0.99
+    with pytest.raises(ValueError, match="approach_direction must be a 3-vector with a horizontal part"):
+        tools.parse_horizontal_grasp_pose("lemon", approach_direction=[0, 0, 1])
+    adaptive = tools.parse_adaptive_shape_grasp_pose("apple", preferred_approach_direction=[0, 0, -1])
+    assert np.all(adaptive.position_array() > box[:3] - 0.01) and np.all(adaptive.position_array() < box[3:] + 0.01)
+    with pytest.raises(ValueError, match="preferred_approach_direction must be a non-zero direction"):
+        tools.parse_adaptive_shape_grasp_pose("apple", preferred_approach_direction=[0, 0, 0])
+
+
+def test_motion_tools_reject_bad_input_and_leave_the_arm_alone(tools):
+    q = tools.backend.joint_positions()
+    with pytest.raises(TypeError, match="pose must be a Pose"):
+        tools.move_to_pose([0.1, 0.2, 0.3])
+    far = Pose()
+    far.position.x, far.position.z = 2.0, 1.0
+    with pytest.raises(PlanningError, match="no IK solution"):
+        tools.move_to_pose(far)
+    with pytest.raises(ValueError, match="axis must be a non-zero direction"):
+        tools.move_in_direction(direction=[0, 0, 0], distance=0.1)
+    with pytest.raises(TypeError, match="distance must be a number"):
+        tools.move_in_direction([0, 0, 1], "far")
+    with pytest.raises(ValueError, match="distance is in metres"):
+        tools.move_in_direction([0, 0, 1], 25)
+    with pytest.raises(TypeError, match="path must be a non-empty list of Pose"):
+        tools.follow_path([])
+    with pytest.raises(TypeError, match="grasp_pose must be a Pose"):
+        tools.grasp(None)
+    with pytest.raises(ValueError, match="n must be a whole number"):
+        tools.generate_arc_path_around_joint(tools.get_gripper_pose(), [0, 0, 1], [0, 0, 0], 0, 30)
+    arc = tools.generate_arc_path_around_joint(tools.get_gripper_pose(), [0, 0, 1], [0, 0, 0.8], 5, 30)
+    assert len(arc) == 5 and all(isinstance(p, Pose) for p in arc)
+    with pytest.raises(ValueError, match="is not attached"):
+        tools.detach_object("apple")
+    with pytest.raises(UnknownObjectError):
+        tools.attach_object("banana")
+    np.testing.assert_allclose(tools.backend.joint_positions(), q, atol=1e-3)
+
+
+def test_place_pose_errors(tools):
+    with pytest.raises(ValueError, match="needs 'apple' in the gripper"):
+        tools.parse_place_pose("apple", "footed_bowl")
+    with pytest.raises(ValueError, match="exactly one of receptacle_name"):
+        tools.parse_place_pose("apple", "footed_bowl", position=[0, 0, 1])
+
+
+def test_a_program_in_the_original_style_moves_the_arm(tools):
+    program = """
+pose = get_gripper_pose()
+target = Pose()
+target.position.x = pose.position.x
+target.position.y = pose.position.y
+target.position.z = pose.position.z - 0.05
+target.orientation = pose.orientation
+move_to_pose(target)
+move_in_direction(direction=[0, 0, 1], distance=0.05)
+"""
+    start = tools.backend.tcp_pose().position
+    exec(program, tools.namespace())
+    np.testing.assert_allclose(tools.backend.tcp_pose().position, start, atol=0.005)
+
+
+def test_full_receptacle_and_closed_drawer(cabinet_tools):
+    t = cabinet_tools
+    t.open_gripper()
+    t.grasp(t.parse_central_lift_grasp_pose(obj_name="plum", description="center"))
+    t.close_gripper()
+    t.attach_object("plum")
+    t.move_in_direction([0, 0, 1], 0.1)
+    with pytest.raises(ReceptacleFullError, match=r"'white_saucer' has no free spot for 'plum'.*holds apple"):
+        t.parse_place_pose("plum", receptacle_name="white_saucer")
+    with pytest.raises(PlacementError, match=r"'cabinet.drawer_1' is closed"):
+        t.parse_place_pose("plum", receptacle_name="cabinet.drawer_1")
+    with pytest.raises(ValueError, match=r"'apple' cannot hold things; receptacles here: white_saucer"):
+        t.parse_place_pose("plum", receptacle_name="apple")
+    place = t.parse_place_pose("plum", position=[0.0, 0.0, 0.9])
+    t.move_to_pose(place)
+    t.open_gripper()
+    t.detach_object("plum")
+    t.move_in_direction([0, 0, 1], 0.1)
+    t.backend.wait(0.5)
+    plum = t.get_object_center_position("plum")
+    assert np.linalg.norm(plum[:2]) < 0.03
