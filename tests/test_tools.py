@@ -88,6 +88,11 @@ def test_joint_info_and_plane_normal(cabinet_tools):
         cabinet_tools.get_object_joint_info("apple", handle)
     with pytest.raises(ValueError, match=r"no revolute joint"):
         cabinet_tools.get_object_joint_info("cabinet", handle, type="revolute")
+    grasp = cabinet_tools.parse_horizontal_grasp_pose("cabinet.handle_1")
+    rotation = grasp.rotation_matrix()
+    assert rotation[:, 2] @ [-1, 0, 0] > 0.2 and abs(rotation[2, 2]) < 1e-6  # horizontal, towards the front
+    assert abs(rotation[2, 1]) > 0.99  # the fingers close vertically around the horizontal bar
+    assert np.linalg.norm(grasp.position_array() - handle) < 0.03
     front = cabinet_tools.get_3d_bbox("cabinet.drawer_1")
     normal = cabinet_tools.get_plane_normal(
         "cabinet.drawer_1", [front[3] + 0.05, (front[1] + front[4]) / 2, (front[2] + front[5]) / 2]
@@ -106,12 +111,14 @@ def test_grasp_parsers(tools):
         tools.parse_central_lift_grasp_pose("apple", description="side")
     with pytest.raises(GraspError, match="wider than the gripper"):
         tools.parse_central_lift_grasp_pose("blue_bowl")
-    side = tools.parse_horizontal_grasp_pose("lemon", approach_direction=[1, 0, 0])
-    assert side.rotation_matrix()[:, 2] @ [1, 0, 0] > 0.99
+    # A lemon lying on the table is too low for a horizontal grasp: the hand would hit the table.
+    with pytest.raises(PlanningError, match=r"horizontal grasps of 'lemon'.*with table"):
+        tools.parse_horizontal_grasp_pose("lemon", approach_direction=[1, 0, 0])
     with pytest.raises(ValueError, match="approach_direction must be a 3-vector with a horizontal part"):
         tools.parse_horizontal_grasp_pose("lemon", approach_direction=[0, 0, 1])
-    adaptive = tools.parse_adaptive_shape_grasp_pose("apple", preferred_approach_direction=[0, 0, -1])
-    assert np.all(adaptive.position_array() > box[:3] - 0.01) and np.all(adaptive.position_array() < box[3:] + 0.01)
+    plum = tools.get_3d_bbox("plum")
+    adaptive = tools.parse_adaptive_shape_grasp_pose("plum", preferred_approach_direction=[0, 0, -1])
+    assert np.all(adaptive.position_array() > plum[:3] - 0.01) and np.all(adaptive.position_array() < plum[3:] + 0.01)
     with pytest.raises(ValueError, match="preferred_approach_direction must be a non-zero direction"):
         tools.parse_adaptive_shape_grasp_pose("apple", preferred_approach_direction=[0, 0, 0])
 

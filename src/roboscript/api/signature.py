@@ -25,6 +25,8 @@ def tool(function: Callable) -> Callable:
         renamed = {}
         for key, value in kwargs.items():
             target = ALIASES.get(key, key) if key not in signature.parameters else key
+            if target not in signature.parameters or target == "self":
+                raise ToolCallError(f"{function.__name__}() got an unexpected keyword argument {key!r}; use {usage}")
             if target in renamed:
                 raise ToolCallError(
                     f"{function.__name__}() got {target!r} twice (as {key!r} and {target!r}); use {usage}"
