@@ -34,7 +34,7 @@ class PlacementSpot:
 
     center: np.ndarray
     yaw: float
-    clearance: float
+    score: float
 
 
 def _rotated_half(half_xy: np.ndarray, yaw: float) -> np.ndarray:
@@ -101,7 +101,7 @@ def spots_in_receptacle(
                 else:
                     score = -float(np.linalg.norm(world[:2] - near_xy)) - 0.01 * abs(turn)
                 out.append(PlacementSpot(center, turn, score))
-    out.sort(key=lambda s: -s.clearance)
+    out.sort(key=lambda s: -s.score)
     return out
 
 

@@ -20,15 +20,15 @@ from roboscript.api.placement import (
     spot_at,
     spots_in_receptacle,
 )
-from roboscript.api.pose import Pose
+from roboscript.api.pose import Pose, _real
 from roboscript.api.signature import tool
 from roboscript.backends.base import Backend
-from roboscript.geometry import Box3D, Transform
+from roboscript.geometry import Box3D, Transform, quat_from_yaw, quat_to_matrix
 from roboscript.perception.base import Perception, Receptacle, UnknownObjectError
 from roboscript.perception.grasp_detection import GraspPreferences, GripperGeometry, detect_grasps
 from roboscript.perception.grasp_heuristics import GraspError, central_lift_grasps, horizontal_grasps
 from roboscript.planning.cartesian import arc_poses, cartesian_path
-from roboscript.planning.errors import CartesianPathIncompleteError, IKError, PlanningError
+from roboscript.planning.errors import IKError, PlanningError
 from roboscript.planning.motion import MotionPlanner
 
 PRE_GRASP_DISTANCE = 0.1
@@ -224,18 +224,11 @@ class ToolAPI:
     def move_in_direction(self, axis: Sequence[float], distance: float) -> None:
         """Moves the TCP in a straight line along ``axis`` by ``distance`` metres, keeping its orientation."""
         direction = _direction(axis, "axis")
-        distance = _number(distance, "distance")
+        distance = _real(distance, "distance")
         if abs(distance) > 1.5:
             raise ValueError(f"distance is in metres and must be within [-1.5, 1.5], got {distance}")
         self._allow_start_contacts()
-        current = self.backend.tcp_pose()
-        target = Transform(current.position + direction * distance, current.quaternion)
-        try:
-            self.motion.follow([target])
-        except CartesianPathIncompleteError:
-            # The line passes a singularity or a joint limit, or the IK branch it follows swings a link into
-            # something: a planned collision-free motion to the same end pose instead.
-            self.motion.execute(self.motion.plan_to_pose(target))
+        self.motion.move_in_direction(direction, distance, plan_if_blocked=True)
         self._after_motion()
 
     @tool
@@ -248,7 +241,7 @@ class ToolAPI:
         pivot = _vector(joint_position, "joint_position")
         if isinstance(n, bool) or not isinstance(n, (int, np.integer)) or not 1 <= n <= 1000:
             raise ValueError(f"n must be a whole number of waypoints in [1, 1000], got {n!r}")
-        angle = _number(angle, "angle")
+        angle = _real(angle, "angle")
         if abs(angle) > 360:
             raise ValueError(f"angle is in degrees and must be within [-360, 360], got {angle}")
         return [Pose.from_transform(t) for t in arc_poses(start, axis, pivot, int(n), math.radians(angle))]
@@ -493,7 +486,7 @@ class ToolAPI:
             tried.append(spot)
             for lift in (0.0, 0.05, 0.1):
                 for dyaw in (0.0, math.pi):
-                    rotation = _yaw_matrix(spot.yaw + dyaw)
+                    rotation = quat_to_matrix(quat_from_yaw(spot.yaw + dyaw))
                     # Turning the held object about world z around its centre turns the gripper with it.
                     position = spot.center + [0.0, 0.0, lift] + rotation @ (tcp.position - box.center)
                     pose = Transform.from_rotation(position, rotation @ tcp.rotation)
@@ -575,7 +568,6 @@ class _touch:
 
     def __init__(self, scene, names: list[str]):
         self.scene, self.names = scene, names
-        self.before: list[bool] = []
 
     def __enter__(self):
         for name in self.names:
@@ -590,11 +582,6 @@ def _is_furniture(name: str, perception: Perception) -> bool:
     return "." not in name and name not in perception.objects()
 
 
-def _yaw_matrix(yaw: float) -> np.ndarray:
-    c, s = math.cos(yaw), math.sin(yaw)
-    return np.array([[c, -s, 0.0], [s, c, 0.0], [0.0, 0.0, 1.0]])
-
-
 def _overlaps_xy(box: Box3D, center: np.ndarray, half: np.ndarray) -> bool:
     return bool(np.all(np.abs(box.center[:2] - center) < box.size[:2] / 2 + half))
 
@@ -603,14 +590,6 @@ def _within(box: Box3D, receptacle: Receptacle) -> bool:
     """Whether an object's box centre lies in the receptacle's interior (in its frame)."""
     local = receptacle.frame.inverse().apply(box.center[None])[0]
     return bool(np.all(local >= receptacle.lower - 0.01) and np.all(local <= receptacle.upper + 0.01))
-
-
-def _number(value: object, field: str) -> float:
-    if isinstance(value, bool) or not isinstance(value, (int, float, np.integer, np.floating)):
-        raise TypeError(f"{field} must be a number, got {type(value).__name__} {value!r}")
-    if not math.isfinite(float(value)):
-        raise ValueError(f"{field} must be finite, got {value}")
-    return float(value)
 
 
 def _vector(value: object, field: str) -> np.ndarray:

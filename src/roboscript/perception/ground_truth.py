@@ -13,7 +13,7 @@ import mujoco
 import numpy as np
 
 from roboscript.backends.base import Backend
-from roboscript.geometry import Box3D, Transform
+from roboscript.geometry import Box3D, Transform, quat_from_yaw
 from roboscript.perception.base import ArticulationJoint, ObjectPoints, Perception, Receptacle, UnknownObjectError
 from roboscript.perception.points import entity_points, point_map
 from roboscript.sim.cameras import CameraFrame
@@ -68,7 +68,7 @@ class GroundTruthPerception(Perception):
         if entity.object_type is None or not upright:
             return box.center[:2], 0.0, box.size[:2] / 2
         yaw = math.atan2(rotation[1, 0], rotation[0, 0])
-        frame = Transform.from_rotation(pose.position, _yaw_rotation(yaw))
+        frame = Transform(pose.position, quat_from_yaw(yaw))
         local = self.gt.local_box(name, frame)
         center = frame.apply(local.center[None])[0]
         return center[:2], yaw, local.size[:2] / 2
@@ -162,11 +162,6 @@ class GroundTruthPerception(Perception):
             lower[0] = max(lower[0], -opening + DRAWER_FRONT_CLEARANCE)
             return Receptacle(name, frame, lower, upper)
         return None
-
-
-def _yaw_rotation(yaw: float) -> np.ndarray:
-    c, s = math.cos(yaw), math.sin(yaw)
-    return np.array([[c, -s, 0.0], [s, c, 0.0], [0.0, 0.0, 1.0]])
 
 
 def _moving_part(world, part: str) -> str:

@@ -117,15 +117,26 @@ class MotionPlanner:
             raise CartesianPathIncompleteError(result.fraction, result.reason)
         return self.execute(result.waypoints)
 
-    def move_in_direction(self, direction: np.ndarray, distance: float, min_fraction: float = 1.0) -> ExecutionReport:
-        """Moves the TCP in a straight line by ``distance`` metres along ``direction``, orientation kept."""
+    def move_in_direction(
+        self, direction: np.ndarray, distance: float, min_fraction: float = 1.0, plan_if_blocked: bool = False
+    ) -> ExecutionReport:
+        """Moves the TCP in a straight line by ``distance`` metres along ``direction``, orientation kept.
+
+        With ``plan_if_blocked``, a line that cannot be followed (a singularity, a joint limit, or the IK branch
+        swinging a link into something) gives way to a planned collision-free motion to the same end pose.
+        """
         direction = np.asarray(direction, dtype=float)
         norm = float(np.linalg.norm(direction))
         if direction.shape != (3,) or norm < 1e-9:
             raise ValueError(f"direction must be a non-zero 3-vector, got {direction.tolist()}")
         current = self.backend.tcp_pose()
         target = Transform(current.position + direction / norm * distance, current.quaternion)
-        return self.follow([target], min_fraction)
+        try:
+            return self.follow([target], min_fraction)
+        except CartesianPathIncompleteError:
+            if not plan_if_blocked:
+                raise
+            return self.execute(self.plan_to_pose(target))
 
     def arc(self, axis: np.ndarray, pivot: np.ndarray, angle: float, n: int = 20, min_fraction: float = 1.0):
         """Turns the TCP about a revolute joint (a door's hinge) by ``angle`` radians."""
