@@ -1,5 +1,6 @@
 """Trajectory tracking, grasping and articulated furniture, with both arms."""
 
+import mujoco
 import numpy as np
 import pytest
 
@@ -169,3 +170,23 @@ def test_sleeping_can_be_switched_off():
     backend.wait(1.5)
     model, data = backend.sim_world.model, backend.sim_world.data
     assert data.tree_asleep[model.body_treeid[model.body("cube").id]] < 0
+
+
+def test_panda_grip_force_hardly_depends_on_the_objects_width():
+    """A grasp presses with a set force (the real hand's), not in proportion to the width: a mug's 6 mm rim is
+    held as firmly as a box; and closing on nothing stops at the fingers' limits instead of pushing through."""
+    backend = MujocoBackend(cube_world(), robot="panda", settle=0.0)
+    model, data = backend.sim_world.model, backend.sim_world.data
+    actuator = backend.simulator.robot.gripper_actuator
+    joints = [model.joint(name).qposadr[0] for name in ("robot/finger_joint1", "robot/finger_joint2")]
+    backend.set_gripper(1.0)
+    assert backend.gripper_width() < 0.001
+    assert min(data.qpos[j] for j in joints) > -0.001, "the fingers must not be pushed through their limits"
+    squeeze = []
+    for width in (0.006, 0.05):
+        data.qpos[joints] = width / 2
+        data.qvel[:] = 0
+        mujoco.mj_forward(model, data)
+        squeeze.append(-data.actuator_force[actuator] / 2)  # the tendon's force is shared by the two fingers
+    assert squeeze[0] >= 12.0, f"only {squeeze[0]:.1f} N per finger on a 6 mm rim"
+    assert squeeze[1] <= 25.0 and squeeze[0] >= 0.6 * squeeze[1], squeeze

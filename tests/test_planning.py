@@ -15,6 +15,7 @@ from roboscript.planning import (
     UnknownPlannerError,
     arc_poses,
     cartesian_path,
+    ik_solutions,
     planner_names,
     solve_ik,
     time_parameterize,
@@ -228,3 +229,32 @@ def test_contacts_allowed_at_pickup_are_withdrawn_once_the_object_leaves_them():
     scene.update(state)  # the box (carried along) has left the table
     assert not scene.is_valid(grasp), "back on the table, the box now collides with it"
     assert ("box", "table") in scene.collisions(grasp)
+
+
+def test_ik_solutions_are_distinct_and_nearest_first(table_world):
+    backend, motion = table_world
+    home = backend.joint_positions()
+    target = Transform(np.array([0.0, -0.3, TABLE + 0.1]), DOWN)
+    solutions = ik_solutions(motion.kinematics, target, home, motion.scene, wanted_solutions=4)
+    assert len(solutions) >= 2
+    distances = [float(np.sum((q - home) ** 2)) for q in solutions]
+    assert distances == sorted(distances)
+    for i, q in enumerate(solutions):
+        np.testing.assert_allclose(motion.kinematics.fk(q).position, target.position, atol=1e-3)
+        assert all(not np.allclose(q, other, atol=1e-3) for other in solutions[i + 1 :])
+
+
+@pytest.mark.parametrize("robot", ROBOTS)
+def test_straight_approach_ends_on_the_targets_branch_along_a_line(robot):
+    """Near the base, a vertical approach passes close to a singularity: the approach must still be a line."""
+    _, motion = planner_for(objects_world(), robot)
+    target = Transform(np.array([-0.15, -0.1, TABLE + 0.03]), DOWN)
+    goal, approach = motion.straight_approach(target, 0.1)
+    assert approach is not None
+    np.testing.assert_allclose(approach[-1], goal)
+    start = motion.kinematics.fk(approach[0]).position
+    np.testing.assert_allclose(start, target.position + np.array([0, 0, 0.1]), atol=1e-3)
+    assert np.max(np.abs(np.diff(approach, axis=0))) <= 0.2
+    for q in approach:
+        offset = motion.kinematics.fk(q).position - target.position
+        assert np.linalg.norm(offset[:2]) < 1e-3, "every waypoint lies on the vertical line"

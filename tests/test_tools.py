@@ -9,6 +9,8 @@ from roboscript.api.signature import ToolCallError
 from roboscript.backends.mujoco_backend import MujocoBackend
 from roboscript.perception.base import UnknownObjectError
 from roboscript.perception.grasp_heuristics import GraspError
+from roboscript.perception.ground_truth import GroundTruthPerception
+from roboscript.planning import MotionPlanner
 from roboscript.planning.errors import PlanningError
 from roboscript.sim.world_file import parse_world
 
@@ -196,3 +198,22 @@ def test_full_receptacle_and_closed_drawer(cabinet_tools):
     t.backend.wait(0.5)
     plum = t.get_object_center_position("plum")
     assert np.linalg.norm(plum[:2]) < 0.03
+
+
+def test_a_motion_may_leave_a_contact_it_starts_in_but_not_make_new_ones():
+    """An arm can end a motion inside the planning padding of something (tracking is not exact); the next motion
+    must still be able to start, while everything it did not start in keeps blocking it."""
+    backend = MujocoBackend("world_2_pick_and_place", robot="panda", settle=0.5)
+    low = Pose()
+    low.position.x, low.position.z = 0.3, 0.845
+    low.orientation.x, low.orientation.w = 1.0, 0.0
+    ToolAPI.for_simulation(backend).move_to_pose(low)
+    # A planner with a 3 cm padding sees the arm's own links 5 and 7 in collision in this configuration.
+    padded = ToolAPI(backend, GroundTruthPerception(backend), MotionPlanner.for_mujoco(backend, padding=0.03))
+    start = padded.motion.sync()
+    assert padded.motion.scene.collisions(start) == [("robot/link5", "robot/link7")]
+    padded.move_in_direction([0, 0, 1], 0.1)
+    assert backend.tcp_pose().position[2] == pytest.approx(0.945, abs=0.005)
+    with pytest.raises(PlanningError, match="table"):
+        padded.move_in_direction([0, 0, -1], 0.2)
+    backend.close()

@@ -55,13 +55,14 @@ class ToolAPI:
         self._held: list[str] = []
         # Names the gripper may touch until it has moved clear of them (what it grasped or just let go of).
         self._touch_allowed: set[str] = set()
+        self._link_contacts: set[tuple[str, str]] = set()  # arm links allowed to leave a contact they start in
 
     @classmethod
     def for_simulation(cls, backend, seed: int = 0) -> ToolAPI:
         """Ground-truth perception and a planning scene with the world's exact geometry."""
         from roboscript.perception.ground_truth import GroundTruthPerception
 
-        return cls(backend, GroundTruthPerception(backend), MotionPlanner.for_mujoco(backend), seed)
+        return cls(backend, GroundTruthPerception(backend), MotionPlanner.for_mujoco(backend, seed=seed), seed)
 
     # --- the program's view ----------------------------------------------------------------------------------
 
@@ -263,20 +264,21 @@ class ToolAPI:
         The gripper is not closed; call ``close_gripper()`` next.
         """
         target = _pose(grasp_pose, "grasp_pose")
-        approach = target.rotation[:, 2]
-        pre = Transform(target.position - PRE_GRASP_DISTANCE * approach, target.quaternion)
+        pre = Transform(target.position - PRE_GRASP_DISTANCE * target.rotation[:, 2], target.quaternion)
         self._allow_start_contacts()
-        # The pre-grasp configuration is solved next to the grasp's, so that the straight final approach stays
-        # on one IK branch (from an arbitrary pre-grasp branch the line can run into a self-collision). The
-        # fingers may touch the object only on that final approach, not on the way to the pre-grasp pose.
+        # The fingers may touch the object only on the final straight approach, not on the way to its start.
         q = self.motion.sync()
         with _touch(self.motion.scene, self._new_touches(target.position)):
-            goal = self.motion.ik(target, q)
-        self.motion.move_to_joints(self.motion.ik(pre, goal))
+            goal, approach = self.motion.straight_approach(target, PRE_GRASP_DISTANCE, q)
+        self.motion.move_to_joints(approach[0] if approach is not None else self.motion.ik(pre, goal))
         self._allow_touch_near(target.position)
-        line = self.motion.cartesian([target])
-        # Should the straight approach be blocked after all (the world moved), a planned one is the fallback.
-        self.motion.execute(line.waypoints if line.fraction >= 1.0 else self.motion.plan_to_joints(goal))
+        if approach is not None:
+            approach[0] = self.motion.sync()
+            self.motion.execute(approach)
+        else:
+            line = self.motion.cartesian([target])
+            # Should the straight approach be blocked after all (the world moved), a planned one is the fallback.
+            self.motion.execute(line.waypoints if line.fraction >= 1.0 else self.motion.plan_to_joints(goal))
         self._after_motion()
 
     @tool
@@ -415,18 +417,17 @@ class ToolAPI:
         with _touch(scene, new):
             for candidate in candidates:
                 for pose in (candidate, candidate.compose(flip)):
-                    pre = Transform(pose.position - PRE_GRASP_DISTANCE * pose.rotation[:, 2], pose.quaternion)
                     try:
-                        goal = self.motion.ik(pose, q, attempts=8, max_attempts=40)
-                        q_pre = self.motion.ik(pre, goal, attempts=8, max_attempts=40)
+                        goal, approach = self.motion.straight_approach(
+                            pose, PRE_GRASP_DISTANCE, q, attempts=8, max_attempts=40, branches=3
+                        )
                     except IKError as exc:
                         errors.append(str(exc))
                         continue
-                    line = cartesian_path(self.motion.kinematics, scene, q_pre, [pose])
-                    if line.fraction < 1.0:
+                    if approach is None:
                         # Reachable, but grasp() will have to plan its final approach: kept as a last resort.
                         fallback = fallback or pose
-                        errors.append(f"the straight approach from the pre-grasp pose is blocked: {line.reason}")
+                        errors.append("the straight approach from the pre-grasp pose is blocked on every IK branch")
                         continue
                     pull = self._pull_check(name, pose, goal)
                     if pull:
@@ -548,11 +549,20 @@ class ToolAPI:
                     for part in self._grasp_family(name):
                         scene.allow("gripper", part)
                     self._touch_allowed.add(name)
+        # An arm link can end a motion a few millimetres nearer furniture than planned (tracking), inside the
+        # scene's padding; without this the next motion could not start at all.
+        for pair in scene.collisions(q):
+            scene.allow(*pair)
+            self._link_contacts.add(pair)
 
     def _after_motion(self) -> None:
         """Withdraws touch allowances the gripper has moved clear of (never for what it holds)."""
         scene = self.motion.scene
         q = self.motion.sync()
+        for pair in list(self._link_contacts):
+            if not scene.touching(*pair, q):
+                scene.allow(*pair, False)
+                self._link_contacts.discard(pair)
         for name in list(self._touch_allowed):
             if name in self._held:
                 continue

@@ -11,7 +11,7 @@ from roboscript.planning.errors import (
     TrackingError,
     UnknownPlannerError,
 )
-from roboscript.planning.ik import solve_ik
+from roboscript.planning.ik import ik_solutions, solve_ik
 from roboscript.planning.kinematics import ArmKinematics
 from roboscript.planning.motion import MotionPlanner
 from roboscript.planning.planner import JointPath, JointPlanner, planner_names
@@ -35,6 +35,7 @@ __all__ = [
     "UnknownPlannerError",
     "arc_poses",
     "cartesian_path",
+    "ik_solutions",
     "planner_names",
     "solve_ik",
     "time_parameterize",

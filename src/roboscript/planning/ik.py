@@ -28,6 +28,20 @@ def solve_ik(
     Among the solutions found, the one nearest ``reference`` is returned. Raises :class:`IKError` with the
     nearest pose reached, or with the collisions of the solutions.
     """
+    return ik_solutions(kinematics, target, reference, scene, attempts, max_attempts, wanted_solutions, seed)[0]
+
+
+def ik_solutions(
+    kinematics: ArmKinematics,
+    target: Transform,
+    reference: np.ndarray,
+    scene: PlanningScene | None = None,
+    attempts: int = 16,
+    max_attempts: int = 150,
+    wanted_solutions: int = 3,
+    seed: int = 0,
+) -> list[np.ndarray]:
+    """Up to ``wanted_solutions`` collision-free solutions, nearest ``reference`` first; see :func:`solve_ik`."""
     reference = np.asarray(reference, dtype=float)
     rng = np.random.default_rng(seed)
     solutions: list[np.ndarray] = []
@@ -48,11 +62,13 @@ def solve_ik(
                 if pair not in colliding:
                     colliding.append(pair)
             continue
+        if any(np.allclose(q, other, atol=1e-3) for other in solutions):
+            continue
         solutions.append(q)
         if len(solutions) >= wanted_solutions:
             break
     if solutions:
-        return min(solutions, key=lambda q: float(np.sum((q - reference) ** 2)))
+        return sorted(solutions, key=lambda q: float(np.sum((q - reference) ** 2)))
     if colliding:
         raise IKError(target.position, best_position, best_angle, "every solution found is in collision", colliding)
     raise IKError(

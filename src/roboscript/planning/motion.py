@@ -13,9 +13,9 @@ from roboscript.backends.base import Backend
 from roboscript.geometry import Transform
 from roboscript.planning.cartesian import CartesianResult, arc_poses, cartesian_path
 from roboscript.planning.errors import CartesianPathIncompleteError, TrackingError
-from roboscript.planning.ik import solve_ik
+from roboscript.planning.ik import ik_solutions, solve_ik
 from roboscript.planning.kinematics import ArmKinematics
-from roboscript.planning.planner import JointPath, JointPlanner
+from roboscript.planning.planner import JointPath, JointPlanner, seed_sampling
 from roboscript.planning.scene import PlanningScene
 from roboscript.planning.timing import time_parameterize
 from roboscript.sim.simulator import ExecutionReport
@@ -32,7 +32,11 @@ class MotionPlanner:
         world_state: Callable[[], np.ndarray],
         speed_scale: float = 0.5,
         tracking_tolerance: float = 0.02,
+        seed: int | None = None,
     ):
+        """``seed`` seeds the sampling planners, for repeatable runs (see :func:`seed_sampling`)."""
+        if seed is not None:
+            seed_sampling(seed)
         self.backend = backend
         self.scene = scene
         self.kinematics = kinematics
@@ -77,6 +81,28 @@ class MotionPlanner:
         Fewer ``attempts`` make a quick screen of many candidate poses; see :func:`solve_ik`."""
         reference = self.backend.joint_positions() if reference is None else reference
         return solve_ik(self.kinematics, pose, reference, self.scene, attempts, max_attempts)
+
+    def straight_approach(
+        self, target: Transform, distance: float, reference: np.ndarray | None = None, attempts: int = 16,
+        max_attempts: int = 150, branches: int = 4,
+    ) -> tuple[np.ndarray, np.ndarray | None]:
+        """A configuration at ``target`` and a straight approach to it from ``distance`` back along the TCP's z.
+
+        The approach is found backwards, by backing out of the target along the line, so that it ends on the
+        target's own IK branch: a configuration solved for the start of the line on its own may sit on another
+        branch, from which no straight line leads to the target. Near a singularity (the hand above the base)
+        some branches cannot follow the line at all, so up to ``branches`` IK solutions are tried, nearest
+        ``reference`` first. Returns the configuration and the approach's joint waypoints, or the nearest
+        solution and None when every line is blocked; raises :class:`IKError` if ``target`` has no solution.
+        """
+        reference = self.backend.joint_positions() if reference is None else reference
+        solutions = ik_solutions(self.kinematics, target, reference, self.scene, attempts, max_attempts, branches)
+        start = Transform(target.position - distance * target.rotation[:, 2], target.quaternion)
+        for q in solutions:
+            line = cartesian_path(self.kinematics, self.scene, q, [start])
+            if line.fraction >= 1.0:
+                return q, line.waypoints[::-1].copy()
+        return solutions[0], None
 
     def plan_to_pose(self, pose: Transform, planner: str | None = None, timeout: float | None = None) -> JointPath:
         start = self.sync()

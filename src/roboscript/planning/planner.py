@@ -36,6 +36,21 @@ def _ompl():
     return _OMPL
 
 
+_SEEDED = False
+
+
+def seed_sampling(seed: int) -> None:
+    """Seeds OMPL's random sampling for this process, so that a run can be repeated exactly.
+
+    OMPL fixes its seed when it first samples, so only the first call in a process counts, and only if it comes
+    before the first plan (as in each forked benchmark trial); later calls do nothing.
+    """
+    global _SEEDED
+    if not _SEEDED:
+        _ompl()[2].RNG.setSeed(int(seed) % (2**31 - 1) + 1)
+        _SEEDED = True
+
+
 # Name -> OMPL class name. The original system exposed twelve planners through MoveIt; these are the ones the
 # ompl 2.0.1 Python wheel binds, under their MoveIt-style names and OMPL's own.
 _PLANNER_CLASSES = {

@@ -15,10 +15,14 @@ from roboscript.robots.description import (
 
 # Fingertip pad centres sit 0.1034 m from the hand frame along its z axis.
 TCP_OFFSET = 0.1034
-# Grip stiffness of the finger tendon, N/m. Menagerie's 100 N/m squeezes a 5 cm object with about 2.5 N;
-# 1000 N/m gives about 25 N, within the real hand's 70 N continuous force.
-FINGER_KP = 1000.0
-FINGER_KV = 15.0
+# The finger servo: stiff, with its force capped. The tendon's force is shared by the two fingers. A soft servo
+# squeezes in proportion to the object's width (Menagerie's 100 N/m: 2.5 N on a 5 cm box; even 1000 N/m gives
+# 1.5 N per finger on a mug's 6 mm rim, and the mug turns about the pads). The real hand grasps with a set force:
+# at 10000 N/m the cap is reached from 8 mm of width on, 20 N per finger, within the hand's 70 N. The target stays
+# at fully closed, because the fingers' joint limits are soft and a target past them would push them through.
+FINGER_KP = 10000.0
+FINGER_KV = 300.0
+FINGER_FORCE_LIMIT = 40.0
 FINGER_STROKE = 0.04
 
 
@@ -32,6 +36,7 @@ def build_spec() -> mujoco.MjSpec:
     finger.gainprm[0] = FINGER_STROKE * FINGER_KP / 255.0
     finger.biasprm[1] = -FINGER_KP
     finger.biasprm[2] = -FINGER_KV
+    finger.forcerange = [-FINGER_FORCE_LIMIT, FINGER_FORCE_LIMIT]
     return spec
 
 

@@ -26,4 +26,4 @@ place_pose = parse_place_pose(object_name='mug', receptacle_name='cabinet.drawer
 move_to_pose(place_pose)
 open_gripper()
 detach_object('mug')
-move_in_direction(direction=[0, 0, 1], distance=0.08)
+move_in_direction(direction=[0, 0, 1], distance=0.05)
