@@ -154,7 +154,9 @@ def cmd_bench(args: argparse.Namespace) -> int:
     from roboscript.bench.benchmark import run_benchmark
 
     tasks = [t.strip() for t in args.tasks.split(",") if t.strip()] if args.tasks else None
-    out = args.out or f"out/bench/{args.policy}_{args.robot}"
+    from roboscript.bench.benchmark import default_out
+
+    out = args.out or default_out(args.policy, args.robot)
     result = run_benchmark(
         args.policy, tasks, args.robot, args.trials, args.seed, out, args.jobs, args.timeout, progress=not args.json
     )
@@ -163,6 +165,32 @@ def cmd_bench(args: argparse.Namespace) -> int:
     else:
         print((Path(result["out"]) / "summary.md").read_text())
         print(f"wall time {result['wall_time_s']:.1f} s; results in {result['out']}")
+    return 0
+
+
+def cmd_run(args: argparse.Namespace) -> int:
+    from roboscript.bench.benchmark import trial_specs
+    from roboscript.bench.metrics import task_result
+    from roboscript.bench.runner import run_isolated
+    from roboscript.bench.tasks import get_task
+    from roboscript.llm import make_llm
+
+    get_task(args.task)
+    llm = make_llm(args.llm)  # fails here, clearly, when no LLM is configured
+    specs = trial_specs(
+        args.task, "", args.robot, args.trials, args.seed, args.timeout, args.video, llm=args.llm or llm.name,
+        instruction=args.instruction,
+    )
+    records = run_isolated(specs, args.jobs)
+    result = task_result(args.task, args.robot, records)
+    if args.json:
+        print(json.dumps({**result, "programs": [r.program for r in records]}))
+        return 0
+    for record in records:
+        print(f"trial {record.trial}: {record.outcome}" + (f": {record.error}" if record.error else ""))
+        if args.show_code and record.program is not None:
+            print(record.program)
+    _print_result(result)
     return 0
 
 
@@ -198,8 +226,19 @@ def build_parser() -> argparse.ArgumentParser:
     run.add_argument("--video", default=None, help="record camera_left into this MP4 file")
     _add_run_options(run)
     run.set_defaults(func=cmd_exec)
+    ask = sub.add_parser("run", help="have an LLM write a program for an instruction, run it and evaluate it")
+    ask.add_argument("instruction", help="what the robot should do, in words")
+    ask.add_argument("--task", required=True, help="the task whose world (and checks) to use")
+    ask.add_argument("--llm", default=None, help="openai:MODEL[@URL] | llama:PATH.gguf | replay:DIR=NAME | "
+                     "record:DIR=SPEC | cache:DIR=SPEC; default: $ROBOSCRIPT_LLM or $ROBOSCRIPT_LLM_MODEL")
+    ask.add_argument("--show-code", action="store_true", help="print the generated program")
+    ask.add_argument("--video", default=None, help="record camera_left into this MP4 file")
+    _add_run_options(ask)
+    ask.set_defaults(func=cmd_run, trials=1)
     bench = sub.add_parser("bench", help="run the benchmark (resumes an interrupted run in --out)")
-    bench.add_argument("--policy", default="reference", help="where programs come from: reference")
+    bench.add_argument(
+        "--policy", default="reference", help="where programs come from: reference, or llm:SPEC (see `run --llm`)"
+    )
     bench.add_argument("--tasks", default=None, help="comma-separated task ids; default: all")
     bench.add_argument("--out", default=None, help="run directory; default out/bench/<policy>_<robot>")
     _add_run_options(bench)
@@ -209,12 +248,13 @@ def build_parser() -> argparse.ArgumentParser:
 
 def main(argv: list[str] | None = None) -> int:
     args = build_parser().parse_args(argv)
+    from roboscript.llm import LLMError
     from roboscript.robots.assets import AssetNotFoundError
     from roboscript.sim.world_file import WorldFileError
 
     try:
         return args.func(args)
-    except (WorldFileError, AssetNotFoundError, KeyError, ValueError) as exc:
+    except (WorldFileError, AssetNotFoundError, KeyError, ValueError, LLMError) as exc:
         message = exc.args[0] if isinstance(exc, KeyError) and exc.args else str(exc)
         print(f"roboscript: error: {message}", file=sys.stderr)
         return 2

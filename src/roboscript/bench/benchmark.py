@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import re
 import sys
 import time
 from collections.abc import Callable
@@ -13,18 +14,41 @@ from roboscript.bench.runner import run_isolated
 from roboscript.bench.tasks import TASKS, get_task
 from roboscript.bench.trial import TrialRecord, TrialSpec
 
-POLICIES = ("reference",)
+POLICIES = ("reference", "llm:SPEC")
+
+
+def policy_llm(policy: str) -> str | None:
+    """The LLM spec of an ``llm:SPEC`` policy, None for the reference programs."""
+    if policy == "reference":
+        return None
+    if policy.startswith("llm:") and len(policy) > 4:
+        return policy[4:]
+    raise ValueError(f"unknown policy {policy!r}; policies: {', '.join(POLICIES)} (e.g. llm:openai:gpt-4o)")
 
 
 def policy_programs(policy: str, tasks: list[str]) -> dict[str, str]:
-    """The program each task runs under ``policy``."""
-    if policy == "reference":
+    """The program each task runs under ``policy`` (for an LLM policy: what generates it)."""
+    llm = policy_llm(policy)
+    if llm is None:
         return {t: get_task(t).reference_program() for t in tasks}
-    raise ValueError(f"unknown policy {policy!r}; policies: {', '.join(POLICIES)}")
+    return {t: f"generated in each trial by {llm}" for t in tasks}
+
+
+def default_out(policy: str, robot: str) -> str:
+    """``out/bench/<policy>_<robot>``, the policy made safe for a directory name."""
+    return f"out/bench/{re.sub(r'[^A-Za-z0-9._-]+', '_', policy)}_{robot}"
 
 
 def trial_specs(
-    task: str, program: str, robot: str, trials: int, seed: int, timeout: float, video: str | None = None
+    task: str,
+    program: str,
+    robot: str,
+    trials: int,
+    seed: int,
+    timeout: float,
+    video: str | None = None,
+    llm: str | None = None,
+    instruction: str | None = None,
 ) -> list[TrialSpec]:
     """Trial ``i`` uses seed ``seed + i``; with several trials, videos get a ``_trial<i>`` suffix."""
     if trials < 1:
@@ -36,7 +60,7 @@ def trial_specs(
             path = (
                 video if trials == 1 else str(Path(video).with_name(f"{Path(video).stem}_trial{i}{Path(video).suffix}"))
             )
-        specs.append(TrialSpec(task, robot, i, seed + i, program, timeout, path))
+        specs.append(TrialSpec(task, robot, i, seed + i, program, timeout, path, llm=llm, instruction=instruction))
     return specs
 
 
@@ -78,7 +102,7 @@ def run_benchmark(
     specs = [
         s
         for t in tasks
-        for s in trial_specs(t, programs[t], robot, trials, seed, timeout)
+        for s in trial_specs(t, programs[t], robot, trials, seed, timeout, llm=policy_llm(policy))
         if (s.task, s.robot, s.trial) not in done
     ]
     printer = progress_printer(len(specs)) if progress else None

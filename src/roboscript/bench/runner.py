@@ -9,12 +9,14 @@ from __future__ import annotations
 
 import multiprocessing as mp
 import os
+import signal
 import sys
 import time
 from collections.abc import Callable, Iterable
 from multiprocessing.connection import wait
 
 from roboscript.bench.trial import TrialRecord, TrialSpec, run_trial
+from roboscript.codegen.outcomes import Outcome
 
 KILL_GRACE = 60.0  # seconds beyond the program's limit for world building and judging
 
@@ -31,7 +33,7 @@ def _child(spec: TrialSpec, conn) -> None:
         conn.close()
 
 
-def _failed(spec: TrialSpec, error: str, started: float) -> TrialRecord:
+def _failed(spec: TrialSpec, error: str, started: float, outcome: Outcome = Outcome.RUNTIME_ERROR) -> TrialRecord:
     return TrialRecord(
         task=spec.task,
         robot=spec.robot,
@@ -41,7 +43,15 @@ def _failed(spec: TrialSpec, error: str, started: float) -> TrialRecord:
         error=error,
         checks=[],
         wall_time_s=round(time.perf_counter() - started, 3),
+        outcome=outcome.value,
     )
+
+
+def _death(spec: TrialSpec, exitcode: int | None, started: float) -> TrialRecord:
+    if exitcode == -signal.SIGXCPU:  # the sandbox's CPU-time backstop (a C-level loop the timer cannot stop)
+        error = f"TimeoutError: the program ran past its CPU-time limit ({spec.timeout:g} s and a margin; killed)"
+        return _failed(spec, error, started, Outcome.TIMEOUT)
+    return _failed(spec, f"the trial's process died (exit code {exitcode})", started)
 
 
 def default_jobs() -> int:
@@ -81,7 +91,7 @@ def run_isolated(
                 status, payload = receiver.recv()
             except EOFError:
                 process.join(5)
-                finish(_failed(spec, f"the trial's process died (exit code {process.exitcode})", started))
+                finish(_death(spec, process.exitcode, started))
                 continue
             process.join(5)
             if status == "ok":
@@ -99,6 +109,7 @@ def run_isolated(
                         spec,
                         f"TimeoutError: the program ran longer than its {spec.timeout:g} s limit (killed)",
                         started,
+                        Outcome.TIMEOUT,
                     )
                 )
     return records

@@ -21,9 +21,9 @@ class Task:
     instruction: str
     build_checks: Callable[[GroundTruth], list[Check]]
 
-    def query(self, gt: GroundTruth) -> str:
-        """The task query given to an LLM: ``objects = [...] ; # <instruction>``."""
-        return f"objects = {gt.world.entity_names(('object',))!r} ; # {self.instruction}"
+    def query(self, gt: GroundTruth, instruction: str | None = None) -> str:
+        """The task query given to an LLM: ``objects = [...] ; # <instruction>`` (the task's own by default)."""
+        return f"objects = {gt.world.entity_names(('object',))!r} ; # {instruction or self.instruction}"
 
     def reference_program(self) -> str:
         """The verified program for this task, written against the tool API only."""

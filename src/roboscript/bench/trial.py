@@ -6,25 +6,24 @@ process so that a crash or a hang in a program cannot take the runner down.
 
 from __future__ import annotations
 
-import io
-import signal
 import time
-import traceback
 from dataclasses import asdict, dataclass, field
 
 from roboscript.bench.tasks import get_task
+from roboscript.codegen.checker import check_program
+from roboscript.codegen.outcomes import Outcome
+from roboscript.codegen.sandbox import ExecutionResult, Limits, execute
 
-PROGRAM_FILENAME = "<program>"
 MAX_OUTPUT = 4000  # characters of a program's printed output kept in its record
-
-
-class ProgramTimeout(BaseException):  # not an Exception, so that a program's ``except Exception`` cannot hide it
-    """The program ran past its time limit."""
 
 
 @dataclass(frozen=True)
 class TrialSpec:
-    """What to run: a program on a task's world with one robot and one seed."""
+    """What to run: a program on a task's world with one robot and one seed.
+
+    With ``llm`` (an LLM spec, see :func:`roboscript.llm.make_llm`) the program is generated in the trial from the
+    task's query, and ``program`` is ignored.
+    """
 
     task: str
     robot: str
@@ -34,11 +33,15 @@ class TrialSpec:
     timeout: float = 300.0
     video: str | None = None
     video_camera: str = "camera_left"
+    memory_limit: int = 2 * 1024**3
+    llm: str | None = None
+    instruction: str | None = None  # asked of the LLM instead of the task's own instruction
 
 
 @dataclass
 class TrialRecord:
-    """What happened: ``ok`` is true when the program ran to its end without an exception."""
+    """What happened: ``ok`` is true when the program ran to its end without an exception; ``outcome`` names the
+    category (:class:`~roboscript.codegen.outcomes.Outcome`)."""
 
     task: str
     robot: str
@@ -50,6 +53,9 @@ class TrialRecord:
     sim_time_s: float = 0.0
     wall_time_s: float = 0.0
     output: str = ""
+    outcome: str = Outcome.OK.value
+    program: str | None = None  # the generated program (LLM policies)
+    llm_exchanges: list[dict] = field(default_factory=list)  # every prompt and raw response behind it
 
     @property
     def passed(self) -> int:
@@ -63,26 +69,8 @@ class TrialRecord:
         return asdict(self)
 
 
-def describe_exception(exc: BaseException) -> str:
-    """``Type: message (program line N)``, the line being the deepest one in the program itself."""
-    line = None
-    for frame in traceback.extract_tb(exc.__traceback__):
-        if frame.filename == PROGRAM_FILENAME:
-            line = frame.lineno
-    if isinstance(exc, SyntaxError) and exc.filename == PROGRAM_FILENAME:
-        line = exc.lineno
-        message = f"SyntaxError: {exc.msg}"
-    else:
-        message = f"{type(exc).__name__}: {exc}"
-    return message + (f" (program line {line})" if line else "")
-
-
-def _on_alarm(signum, frame):
-    raise ProgramTimeout
-
-
 def run_trial(spec: TrialSpec) -> TrialRecord:
-    """Runs one trial in this process; the program's time limit is enforced with a timer signal."""
+    """Runs one trial in this process, the program in the sandbox (:mod:`roboscript.codegen.sandbox`)."""
     from roboscript.api import ToolAPI
     from roboscript.backends.mujoco_backend import MujocoBackend
 
@@ -98,20 +86,30 @@ def run_trial(spec: TrialSpec) -> TrialRecord:
 
             recorder = VideoRecorder(backend, spec.video, camera=spec.video_camera)
         sim_start = backend.time()
-        error = _execute(spec.program, tools.namespace(), spec.timeout, output := io.StringIO())
+        program, exchanges = spec.program, []
+        if spec.llm is not None:
+            program, exchanges, result = _generate(spec.llm, task.query(backend.ground_truth, spec.instruction))
+        if program is not None:
+            result = check_and_execute(program, tools.namespace(), Limits(spec.timeout, spec.memory_limit))
         backend.wait(1.0)  # let what was let go come to rest before judging
         results = [c.evaluate(backend.ground_truth).to_dict() for c in checks]
+        outcome = result.outcome
+        if outcome is Outcome.OK and not all(r["passed"] for r in results):
+            outcome = Outcome.CHECKS_FAILED
         return TrialRecord(
             task=spec.task,
             robot=spec.robot,
             trial=spec.trial,
             seed=spec.seed,
-            ok=error is None,
-            error=error,
+            ok=result.error is None,
+            error=result.error,
             checks=results,
             sim_time_s=round(backend.time() - sim_start, 3),
             wall_time_s=round(time.perf_counter() - started, 3),
-            output=output.getvalue()[:MAX_OUTPUT],
+            output=result.output[:MAX_OUTPUT],
+            outcome=outcome.value,
+            program=program if spec.llm is not None else None,
+            llm_exchanges=exchanges,
         )
     finally:
         if recorder is not None:
@@ -119,23 +117,23 @@ def run_trial(spec: TrialSpec) -> TrialRecord:
         backend.close()
 
 
-def _execute(program: str, namespace: dict, timeout: float, output: io.StringIO) -> str | None:
-    """Runs ``program`` in ``namespace``; returns ``None`` or the error that stopped it."""
+def check_and_execute(program: str, namespace: dict, limits: Limits) -> ExecutionResult:
+    """The static checker first; only a program it passes runs."""
+    findings = check_program(program)
+    if findings:
+        error = "; ".join(f"{f.message} (program line {f.line})" for f in findings[:5])
+        return ExecutionResult(findings[0].outcome, error, "")
+    return execute(program, namespace, limits)
+
+
+def _generate(llm_spec: str, query: str) -> tuple[str | None, list[dict], ExecutionResult | None]:
+    """The program an LLM writes for ``query``, the exchanges behind it, and the result if there is no program."""
+    from roboscript.codegen.agent import CodeAgent
+    from roboscript.llm import LLMError, make_llm
+
     try:
-        code = compile(program, PROGRAM_FILENAME, "exec")
-    except SyntaxError as exc:
-        return describe_exception(exc)
-    namespace = dict(namespace)
-    namespace["print"] = lambda *args, sep=" ", end="\n", **_: output.write(sep.join(map(str, args)) + end)
-    previous = signal.signal(signal.SIGALRM, _on_alarm)
-    signal.setitimer(signal.ITIMER_REAL, timeout)
-    try:
-        exec(code, namespace)
-        return None
-    except ProgramTimeout:
-        return f"TimeoutError: the program ran longer than its {timeout:g} s limit"
-    except Exception as exc:
-        return describe_exception(exc)
-    finally:
-        signal.setitimer(signal.ITIMER_REAL, 0)
-        signal.signal(signal.SIGALRM, previous)
+        agent = CodeAgent(make_llm(llm_spec))
+        generation = agent.write_program(query)
+    except LLMError as exc:
+        return None, [], ExecutionResult(Outcome.LLM_ERROR, f"LLMError: {exc}", "")
+    return generation.program, generation.exchanges, None

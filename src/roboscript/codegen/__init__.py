@@ -1,0 +1,1 @@
+"""Code generation: prompts, the main and function-generating agents, the static checker, the sandbox, repair."""

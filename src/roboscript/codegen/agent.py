@@ -1,0 +1,78 @@
+"""The main agent writes a program for a task query; the function-generating sub-agent writes every function the
+program calls but neither gets nor defines, recursively (with a depth bound, and each name asked for once)."""
+
+from __future__ import annotations
+
+import ast
+import contextlib
+from dataclasses import dataclass, field
+
+from roboscript.codegen.checker import undefined_calls
+from roboscript.codegen.extract import extract_code
+from roboscript.codegen.prompt import Example, function_messages, program_messages
+from roboscript.llm.base import LLM, LLMRequest
+
+
+@dataclass
+class Generation:
+    """A generated program with everything that went into it (for the trial's record)."""
+
+    program: str
+    exchanges: list[dict] = field(default_factory=list)  # {"purpose", "messages", "response"}
+    helpers: list[str] = field(default_factory=list)  # names the sub-agent defined
+    unresolved: list[str] = field(default_factory=list)  # names it could not define (depth bound, no definition)
+
+
+class CodeAgent:
+    """Writes programs with ``llm``. ``max_depth``: how many levels of helpers the sub-agent may generate."""
+
+    def __init__(self, llm: LLM, examples: list[Example] | None = None, max_depth: int = 3, max_tokens: int = 2048):
+        self.llm, self.examples, self.max_depth, self.max_tokens = llm, examples, max_depth, max_tokens
+
+    def write_program(self, query: str) -> Generation:
+        messages = program_messages(query, self.examples)
+        text = self._ask(messages)
+        generation = Generation(extract_code(text), [{"purpose": "program", "messages": messages, "response": text}])
+        self.define_missing(generation)
+        return generation
+
+    def define_missing(self, generation: Generation) -> None:
+        """Adds definitions for called-but-undefined names, breadth first, up to ``max_depth`` levels."""
+        asked: set[str] = set()
+        for _ in range(self.max_depth):
+            try:
+                missing = [site for site in undefined_calls(generation.program) if site.name not in asked]
+            except SyntaxError:
+                return  # the checker will report it
+            if not missing:
+                return
+            for site in missing:
+                asked.add(site.name)
+                messages = function_messages(site.name, site.source, generation.program)
+                text = self._ask(messages)
+                exchange = {"purpose": f"function {site.name}", "messages": messages, "response": text}
+                generation.exchanges.append(exchange)
+                definitions = _function_definitions(extract_code(text), site.name)
+                if definitions is None:
+                    generation.unresolved.append(site.name)
+                    continue
+                generation.program = definitions + "\n\n" + generation.program
+                generation.helpers.append(site.name)
+        with contextlib.suppress(SyntaxError):
+            generation.unresolved += [s.name for s in undefined_calls(generation.program) if s.name not in asked]
+
+    def _ask(self, messages: list[dict]) -> str:
+        return self.llm.complete(LLMRequest(tuple(messages), max_tokens=self.max_tokens)).text
+
+
+def _function_definitions(code: str, name: str) -> str | None:
+    """The function definitions in ``code`` if one of them defines ``name``; other statements are dropped (a model
+    may add example calls)."""
+    try:
+        tree = ast.parse(code)
+    except SyntaxError:
+        return None
+    functions = [node for node in tree.body if isinstance(node, ast.FunctionDef)]
+    if not any(f.name == name for f in functions):
+        return None
+    return "\n\n".join(ast.get_source_segment(code, f) for f in functions) + "\n"

@@ -1,0 +1,185 @@
+"""The static checker: every call is bound to a tool's signature or to a function the program defines, before
+anything runs. Findings carry their line and category; unknown names come with the closest known ones."""
+
+from __future__ import annotations
+
+import ast
+import builtins
+import difflib
+import inspect
+from collections.abc import Callable, Mapping
+from dataclasses import dataclass
+
+from roboscript.api.signature import ALIASES
+from roboscript.codegen.guard import find_violations
+from roboscript.codegen.outcomes import Outcome
+from roboscript.codegen.sandbox import _SAFE_BUILTIN_NAMES, safe_numpy
+
+
+@dataclass(frozen=True)
+class Finding:
+    line: int
+    outcome: Outcome
+    message: str
+
+    def __str__(self) -> str:
+        return f"line {self.line}: {self.message}"
+
+
+@dataclass(frozen=True)
+class CallSite:
+    """A call of a name the program neither defines nor gets: what the function-generating agent is asked for."""
+
+    name: str
+    line: int
+    source: str  # the statement the call is in
+
+
+def tool_signatures() -> dict[str, inspect.Signature]:
+    """The tool API's signatures (without ``self``), and ``Pose``'s constructor."""
+    from roboscript.api import Pose, ToolAPI
+
+    signatures = {}
+    for name in ToolAPI.TOOL_NAMES:
+        signatures[name] = _plain(inspect.signature(getattr(ToolAPI, name)), drop_first=True)
+    signatures["Pose"] = _plain(inspect.signature(Pose))
+    return signatures
+
+
+def _plain(signature: inspect.Signature, drop_first: bool = False) -> inspect.Signature:
+    """Without annotations, so that messages show ``f(a, b=1)`` as a program would write it."""
+    params = list(signature.parameters.values())[1 if drop_first else 0 :]
+    params = [p.replace(annotation=inspect.Parameter.empty) for p in params]
+    return signature.replace(parameters=params, return_annotation=inspect.Signature.empty)
+
+
+def check_program(program: str, tools: Mapping[str, inspect.Signature] | None = None) -> list[Finding]:
+    """Every problem found without running ``program``; empty when it may run."""
+    tools = tool_signatures() if tools is None else tools
+    try:
+        tree = ast.parse(program)
+    except SyntaxError as exc:
+        return [Finding(exc.lineno or 0, Outcome.SYNTAX, f"SyntaxError: {exc.msg}")]
+    findings = [Finding(v.line, Outcome.FORBIDDEN_CONSTRUCT, v.message) for v in find_violations(tree)]
+    defined = _defined_functions(tree)
+    variables = _assigned_names(tree)
+    numpy = safe_numpy()
+    known = set(tools) | set(defined) | set(_SAFE_BUILTIN_NAMES) | {"print"}
+    for call in (n for n in ast.walk(tree) if isinstance(n, ast.Call)):
+        func = call.func
+        if isinstance(func, ast.Name):
+            name = func.id
+            if name in tools:
+                findings += _bind(call, name, tools[name], aliases=True)
+            elif name in defined:
+                findings += _bind(call, name, defined[name], aliases=False)
+            elif name not in known and name not in variables:
+                findings.append(Finding(call.lineno, Outcome.UNKNOWN_FUNCTION, _unknown(name, known)))
+        elif isinstance(func, ast.Attribute) and _numpy_path(func) is not None:
+            path = _numpy_path(func)
+            target = numpy
+            for part in path[1:]:
+                parent, target = target, getattr(target, part, None)
+                if target is None:
+                    names = [n for n in vars(parent) if not n.startswith("_")]
+                    message = f"np.{'.'.join(path[1:])} is not available to programs" + _closest(part, names)
+                    findings.append(Finding(call.lineno, Outcome.UNKNOWN_FUNCTION, message))
+                    break
+    return sorted(set(findings), key=lambda f: (f.line, f.message))
+
+
+def undefined_calls(program: str, tools: Mapping[str, inspect.Signature] | None = None) -> list[CallSite]:
+    """Calls of names that are neither tools, builtins, defined nor assigned: one per name, first call first."""
+    tools = tool_signatures() if tools is None else tools
+    tree = ast.parse(program)
+    known = set(tools) | set(_defined_functions(tree)) | set(_SAFE_BUILTIN_NAMES) | {"print"} | _assigned_names(tree)
+    lines = program.splitlines()
+    sites: dict[str, CallSite] = {}
+    for call in sorted((n for n in ast.walk(tree) if isinstance(n, ast.Call)), key=lambda n: n.lineno):
+        if isinstance(call.func, ast.Name) and call.func.id not in known and call.func.id not in sites:
+            statement = ast.get_source_segment(program, call) or lines[call.lineno - 1]
+            sites[call.func.id] = CallSite(call.func.id, call.lineno, lines[call.lineno - 1].strip() or statement)
+    return list(sites.values())
+
+
+def _bind(call: ast.Call, name: str, signature: inspect.Signature, aliases: bool) -> list[Finding]:
+    if any(isinstance(a, ast.Starred) for a in call.args) or any(k.arg is None for k in call.keywords):
+        return []  # *args / **kwargs: cannot be bound statically
+    keywords = {}
+    for keyword in call.keywords:
+        key = keyword.arg
+        if aliases and key not in signature.parameters:
+            key = ALIASES.get(key, key)
+        if key not in signature.parameters:
+            valid = ", ".join(signature.parameters)
+            message = f"{name}() has no argument {keyword.arg!r}; its arguments are ({valid})"
+            return [Finding(call.lineno, Outcome.BAD_ARGUMENTS, message + _closest(keyword.arg, signature.parameters))]
+        keywords[key] = None
+    try:
+        signature.bind(*([None] * len(call.args)), **keywords)
+    except TypeError as exc:
+        return [Finding(call.lineno, Outcome.BAD_ARGUMENTS, f"{name}{signature}: {exc}")]
+    return []
+
+
+def _defined_functions(tree: ast.AST) -> dict[str, inspect.Signature]:
+    functions = {}
+    for node in ast.walk(tree):
+        if isinstance(node, ast.FunctionDef):
+            functions[node.name] = _signature_of(node.args)
+    return functions
+
+
+def _signature_of(args: ast.arguments) -> inspect.Signature:
+    P = inspect.Parameter
+    params = []
+    positional = args.posonlyargs + args.args
+    defaults = [P.empty] * (len(positional) - len(args.defaults)) + list(args.defaults)
+    for i, (arg, default) in enumerate(zip(positional, defaults, strict=True)):
+        kind = P.POSITIONAL_ONLY if i < len(args.posonlyargs) else P.POSITIONAL_OR_KEYWORD
+        params.append(P(arg.arg, kind, default=None if default is not P.empty else P.empty))
+    if args.vararg:
+        params.append(P(args.vararg.arg, P.VAR_POSITIONAL))
+    for arg, default in zip(args.kwonlyargs, args.kw_defaults, strict=True):
+        params.append(P(arg.arg, P.KEYWORD_ONLY, default=P.empty if default is None else None))
+    if args.kwarg:
+        params.append(P(args.kwarg.arg, P.VAR_KEYWORD))
+    return inspect.Signature(params)
+
+
+def _assigned_names(tree: ast.AST) -> set[str]:
+    """Names bound by assignment, loops, comprehensions, arguments and exception handlers (callable values such as
+    lambdas or functions kept in variables are legitimate to call)."""
+    names = set()
+    for node in ast.walk(tree):
+        if isinstance(node, ast.Name) and isinstance(node.ctx, ast.Store):
+            names.add(node.id)
+        elif isinstance(node, ast.arg):
+            names.add(node.arg)
+        elif isinstance(node, ast.ExceptHandler) and node.name:
+            names.add(node.name)
+    return names
+
+
+def _numpy_path(node: ast.Attribute) -> list[str] | None:
+    parts = []
+    while isinstance(node, ast.Attribute):
+        parts.append(node.attr)
+        node = node.value
+    if isinstance(node, ast.Name) and node.id == "np":
+        return ["np", *reversed(parts)]
+    return None
+
+
+def _unknown(name: str, known: set[str]) -> str:
+    if hasattr(builtins, name):
+        return f"{name}() is not available to programs"
+    return f"unknown function {name}(): it is not a tool and the program does not define it" + _closest(name, known)
+
+
+def _closest(name: str, candidates) -> str:
+    close = difflib.get_close_matches(name, list(candidates), n=3, cutoff=0.6)
+    return f" (did you mean {', '.join(close)}?)" if close else ""
+
+
+Checker = Callable[[str], list[Finding]]

@@ -1,0 +1,107 @@
+"""What a generated program may contain: an allow-list of syntax and a deny-list of attribute names.
+
+The guard is static: it reads the program's syntax tree before anything runs. With the restricted builtins of
+:mod:`roboscript.codegen.sandbox` it closes the usual ways out of an ``exec`` namespace: imports, dunder and
+private attributes (``__class__``, ``__subclasses__``, ``__globals__``), frame and code objects (``gi_frame``,
+``f_back``, ``f_globals``), and numpy's file and pointer access (``np.load``, ``arr.tofile``, ``arr.ctypes``).
+"""
+
+from __future__ import annotations
+
+import ast
+from dataclasses import dataclass
+
+ALLOWED_NODES: tuple[type[ast.AST], ...] = (
+    ast.alias,  # only inside an import, which is reported itself
+    ast.Module, ast.Expr, ast.Assign, ast.AugAssign, ast.AnnAssign, ast.Pass, ast.Break, ast.Continue,
+    ast.If, ast.For, ast.While, ast.Try, ast.ExceptHandler, ast.Raise, ast.Assert, ast.Delete,
+    ast.FunctionDef, ast.Return, ast.Lambda, ast.arguments, ast.arg, ast.keyword,
+    ast.Name, ast.Load, ast.Store, ast.Del, ast.Starred, ast.Attribute, ast.Subscript, ast.Slice,
+    ast.Constant, ast.List, ast.Tuple, ast.Dict, ast.Set, ast.JoinedStr, ast.FormattedValue,
+    ast.ListComp, ast.SetComp, ast.DictComp, ast.GeneratorExp, ast.comprehension,
+    ast.Call, ast.BoolOp, ast.BinOp, ast.UnaryOp, ast.Compare, ast.IfExp,
+    ast.And, ast.Or, ast.Add, ast.Sub, ast.Mult, ast.Div, ast.FloorDiv, ast.Mod, ast.Pow, ast.MatMult,
+    ast.UAdd, ast.USub, ast.Not, ast.Invert, ast.BitAnd, ast.BitOr, ast.BitXor, ast.LShift, ast.RShift,
+    ast.Eq, ast.NotEq, ast.Lt, ast.LtE, ast.Gt, ast.GtE, ast.Is, ast.IsNot, ast.In, ast.NotIn,
+)  # fmt: skip
+
+# Not reachable through underscores, yet ways out: frames, code objects, generators' internals, numpy's files,
+# pointers and pickles, and the names of dangerous modules should one ever be reachable.
+FORBIDDEN_ATTRIBUTES = frozenset(
+    {
+        "gi_frame", "gi_code", "gi_yieldfrom", "cr_frame", "cr_code", "cr_await", "ag_frame", "ag_code",
+        "f_back", "f_globals", "f_locals", "f_builtins", "f_code", "f_trace", "tb_frame", "tb_next",
+        "co_code", "co_consts", "co_names", "func_globals", "func_code", "mro",
+        "load", "loads", "save", "savez", "savez_compressed", "savetxt", "loadtxt", "genfromtxt", "fromfile",
+        "tofile", "dump", "dumps", "memmap", "open_memmap", "fromregex", "DataSource", "ctypes", "ctypeslib",
+        "lib", "core", "f2py", "distutils", "testing", "os", "sys", "subprocess", "builtins", "importlib",
+        "system", "popen", "open", "exec", "eval", "compile", "globals", "locals", "vars", "getattr", "setattr",
+        "delattr", "format_map",
+    }
+)  # fmt: skip
+
+FORBIDDEN_NAMES = frozenset(
+    {
+        "eval", "exec", "compile", "open", "input", "breakpoint", "help", "globals", "locals", "vars", "dir",
+        "getattr", "setattr", "delattr", "hasattr", "type", "object", "super", "memoryview", "classmethod",
+        "staticmethod", "property", "exit", "quit", "copyright", "credits", "license", "os", "sys",
+        "subprocess", "importlib", "builtins",
+    }
+)  # fmt: skip
+
+_WHY = {
+    ast.Import: "imports are not allowed: np and Pose are already there, everything else is a tool",
+    ast.ImportFrom: "imports are not allowed: np and Pose are already there, everything else is a tool",
+    ast.ClassDef: "class definitions are not allowed; write functions",
+    ast.Global: "global statements are not allowed; pass values as arguments and return results",
+    ast.Nonlocal: "nonlocal statements are not allowed; pass values as arguments and return results",
+    ast.With: "with statements are not allowed (there are no files or resources to open)",
+    ast.AsyncFunctionDef: "async code is not allowed",
+    ast.Await: "async code is not allowed",
+    ast.Yield: "generators (yield) are not allowed; return a list",
+    ast.YieldFrom: "generators (yield) are not allowed; return a list",
+    ast.NamedExpr: "assignment expressions (:=) are not allowed; assign on a line of its own",
+}
+
+
+@dataclass(frozen=True)
+class Violation:
+    """Something the program may not contain, with its line."""
+
+    line: int
+    message: str
+
+    def __str__(self) -> str:
+        return f"line {self.line}: {self.message}"
+
+
+def find_violations(tree: ast.AST) -> list[Violation]:
+    """Every forbidden construct in ``tree``, in the order they appear."""
+    found: list[Violation] = []
+    for node in ast.walk(tree):
+        line = getattr(node, "lineno", 0)
+        if not isinstance(node, ALLOWED_NODES):
+            why = _WHY.get(type(node), f"{type(node).__name__} is not allowed in a program")
+            found.append(Violation(line, why))
+        elif isinstance(node, ast.Attribute) and (node.attr.startswith("_") or node.attr in FORBIDDEN_ATTRIBUTES):
+            found.append(Violation(line, f"the attribute .{node.attr} is not allowed"))
+        elif isinstance(node, ast.Name) and (node.id.startswith("__") or node.id in FORBIDDEN_NAMES):
+            found.append(Violation(line, f"the name {node.id!r} is not allowed"))
+        elif isinstance(node, ast.FunctionDef | ast.arg) and _name_of(node).startswith("__"):
+            found.append(Violation(line, f"the name {_name_of(node)!r} is not allowed"))
+        elif isinstance(node, ast.ExceptHandler) and node.type is None:
+            found.append(Violation(line, "a bare except: is not allowed; name what to catch, e.g. except Exception:"))
+        elif isinstance(node, ast.FunctionDef) and node.decorator_list:
+            found.append(Violation(line, "decorators are not allowed"))
+        elif isinstance(node, ast.Constant) and _dunder_template(node.value):
+            # str.format reads attributes named in its template: "{0.__class__}".format(x)
+            found.append(Violation(line, "format strings may not name dunder attributes"))
+    return sorted(found, key=lambda v: v.line)
+
+
+def _dunder_template(value: object) -> bool:
+    return isinstance(value, str) and "{" in value and "__" in value
+
+
+def _name_of(node: ast.FunctionDef | ast.arg) -> str:
+    return node.name if isinstance(node, ast.FunctionDef) else node.arg

@@ -1,0 +1,98 @@
+"""Prompts: the rules, the tool API's own signatures and doc-strings (one source of truth), few-shot examples.
+
+Few-shot examples are files in ``examples/``: a first line ``# query: objects = [...] ; # instruction``, then the
+program, planning comments first.
+"""
+
+from __future__ import annotations
+
+import inspect
+from dataclasses import dataclass
+from importlib import resources
+
+from roboscript.api import ToolAPI
+
+RULES = """You write Python programs that make a robot arm with a parallel gripper do a task on a table.
+Rules:
+- Start with comments: the task, then a numbered plan, step by step. Then the code.
+- Use only the tools below, `np` (numpy) and `Pose`. Do not import anything; there is no file or network access.
+- Refer to objects by the names in the query; parts of furniture are named like `cabinet.drawer_1` and
+  `cabinet.handle_1` (the handle of drawer 1).
+- Positions are in metres in the robot's frame: x forward, y left, z up.
+- To pick something: open_gripper(), grasp(a grasp pose), close_gripper(), attach_object(name), then lift it.
+- To put something down: move_to_pose(a place pose), open_gripper(), detach_object(name), then move up.
+- Drawers and doors: grasp the handle, close the gripper, attach the drawer or door, then move along its joint.
+- Answer with one Python code block and nothing else."""
+
+FUNCTION_RULES = """You write one Python function for a robot program, using the same tools as the program.
+Answer with one Python code block holding the function's definition (and any helpers it needs), nothing else."""
+
+
+def tool_reference() -> str:
+    """Every tool as ``def name(args):`` with its doc-string, in the API's order."""
+    blocks = []
+    for name in ToolAPI.TOOL_NAMES:
+        method = getattr(ToolAPI, name)
+        doc = inspect.getdoc(method) or ""
+        indented = "\n".join("    " + line if line else "" for line in doc.splitlines())
+        blocks.append(f"def {method.usage}:\n    \"\"\"\n{indented}\n    \"\"\"")
+    pose = "Pose(): a pose with .position.x/.y/.z and .orientation.x/.y/.z/.w (a unit quaternion), all assignable."
+    return "\n\n".join(blocks) + "\n\n# " + pose
+
+
+def system_prompt() -> str:
+    return f"{RULES}\n\nTools:\n\n```python\n{tool_reference()}\n```"
+
+
+@dataclass(frozen=True)
+class Example:
+    name: str
+    query: str
+    program: str
+
+
+def load_examples() -> list[Example]:
+    """The few-shot examples shipped with the package, in file-name order."""
+    examples = []
+    folder = resources.files("roboscript.codegen") / "examples"
+    for entry in sorted(folder.iterdir(), key=lambda e: e.name):
+        if not entry.name.endswith(".py"):
+            continue
+        text = entry.read_text()
+        first, _, program = text.partition("\n")
+        if not first.startswith("# query: "):
+            raise ValueError(f"example {entry.name} must start with '# query: objects = [...] ; # instruction'")
+        examples.append(Example(entry.name, first.removeprefix("# query: ").strip(), program.strip() + "\n"))
+    return examples
+
+
+def task_query(objects: list[str], instruction: str) -> str:
+    """``objects = [...] ; # instruction``, the form the examples use."""
+    return f"objects = {objects!r} ; # {instruction.strip()}"
+
+
+def fenced(program: str) -> str:
+    return f"```python\n{program.rstrip()}\n```"
+
+
+def program_messages(query: str, examples: list[Example] | None = None) -> list[dict]:
+    """System prompt, the examples as earlier turns, then the query."""
+    examples = load_examples() if examples is None else examples
+    messages = [{"role": "system", "content": system_prompt()}]
+    for example in examples:
+        messages.append({"role": "user", "content": example.query})
+        messages.append({"role": "assistant", "content": fenced(example.program)})
+    messages.append({"role": "user", "content": query})
+    return messages
+
+
+def function_messages(name: str, call: str, program: str) -> list[dict]:
+    """Asks for the definition of ``name``, called as in ``call`` within ``program``."""
+    request = (
+        f"This program calls `{name}`, which is not defined yet:\n\n{fenced(program)}\n\n"
+        f"It is called as `{call}`. Write `def {name}(...)` so that this call does what the program needs."
+    )
+    return [
+        {"role": "system", "content": f"{FUNCTION_RULES}\n\nTools:\n\n```python\n{tool_reference()}\n```"},
+        {"role": "user", "content": request},
+    ]

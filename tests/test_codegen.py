@@ -1,0 +1,161 @@
+"""Code generation: the checker's categories, prompts from the API itself, code extraction, and the whole path
+(generate, check, execute in simulation, evaluate) through the openai client against a local server."""
+
+from __future__ import annotations
+
+import inspect
+import json
+import subprocess
+import sys
+
+import pytest
+
+from chat_server import ScriptedChatServer
+from roboscript.api import ToolAPI
+from roboscript.bench.runner import run_isolated
+from roboscript.bench.tasks import get_task
+from roboscript.bench.trial import TrialSpec
+from roboscript.codegen.agent import CodeAgent
+from roboscript.codegen.checker import check_program, undefined_calls
+from roboscript.codegen.extract import extract_code
+from roboscript.codegen.outcomes import Outcome
+from roboscript.codegen.prompt import load_examples, program_messages, system_prompt, task_query
+from roboscript.llm import make_llm
+
+
+@pytest.mark.parametrize(
+    ("program", "outcome", "message"),
+    [
+        ("pick_up('apple')", Outcome.UNKNOWN_FUNCTION, "unknown function pick_up()"),
+        ("grasp_object('apple')", Outcome.UNKNOWN_FUNCTION, "did you mean"),
+        ("p = parse_central_lift_grasp_pose(obj='apple')", Outcome.BAD_ARGUMENTS, "has no argument 'obj'"),
+        ("p = parse_place_pose('apple', receptacle='bowl')", Outcome.BAD_ARGUMENTS, "did you mean receptacle_name"),
+        ("move_in_direction([0, 0, 1])", Outcome.BAD_ARGUMENTS, "missing a required argument: 'distance'"),
+        ("open_gripper(1.0)", Outcome.BAD_ARGUMENTS, "too many positional arguments"),
+        ("def f(a):\n    return a\nf(1, 2)", Outcome.BAD_ARGUMENTS, "too many positional arguments"),
+        ("x = np.linalg.nrm([1, 2])", Outcome.UNKNOWN_FUNCTION, "did you mean norm"),
+        ("import math", Outcome.FORBIDDEN_CONSTRUCT, "imports are not allowed"),
+        ("move_to_pose(Pose(", Outcome.SYNTAX, "SyntaxError"),
+    ],
+)
+def test_the_checker_names_each_problem_with_its_category_and_line(program, outcome, message):
+    (finding,) = [f for f in check_program(program) if f.outcome is outcome]
+    assert message in finding.message and finding.line >= 1
+
+
+def test_the_checker_accepts_aliases_defined_functions_and_callable_variables():
+    program = (
+        "def lift(height=0.1):\n    move_in_direction(direction=[0, 0, 1], distance=height)\n"
+        "p = get_object_center_position(obj_name='apple')\nlift()\nlift(0.2)\n"
+        "f = lambda v: v * 2\ny = f(3)\npose = Pose()\npose.position.x = 0.3\n"
+    )
+    assert check_program(program) == []
+
+
+def test_the_prompt_is_built_from_the_tool_api_itself():
+    prompt = system_prompt()
+    for name in ToolAPI.TOOL_NAMES:
+        method = getattr(ToolAPI, name)
+        assert f"def {method.usage}:" in prompt
+        assert inspect.getdoc(method).splitlines()[0] in prompt
+
+
+def test_the_examples_are_ten_or_more_and_pass_the_checker():
+    examples = load_examples()
+    assert len(examples) >= 10
+    for example in examples:
+        assert example.query.startswith("objects = [") and " ; # " in example.query
+        assert example.program.startswith("# "), f"{example.name}: planning comments come first"
+        assert check_program(example.program) == [], example.name
+    messages = program_messages(task_query(["apple"], "lift the apple"), examples)
+    assert len(messages) == 2 + 2 * len(examples) and messages[-1]["content"].endswith("# lift the apple")
+
+
+def test_code_is_taken_out_of_fences_or_used_as_it_is():
+    assert extract_code("Here:\n```python\nopen_gripper()\n```\nDone.") == "open_gripper()\n"
+    assert extract_code("```\na = 1\n```\ntext\n```py\nb = 2\n```") == "a = 1\n\nb = 2\n"
+    assert extract_code("```python\nopen_gripper()\n") == "open_gripper()\n"
+    assert extract_code("close_gripper()") == "close_gripper()\n"
+
+
+MAIN = """Here is the program.
+```python
+# Task: put the apple into the footed bowl.
+# Plan:
+# 1. Pick the apple and place it into the footed bowl with a helper.
+detect_objects()
+pick_and_place('apple', 'footed_bowl')
+```"""
+
+HELPER = """```python
+def pick_and_place(name, receptacle):
+    open_gripper()
+    grasp(parse_central_lift_grasp_pose(object_name=name, description='center'))
+    close_gripper()
+    attach_object(name)
+    lift(0.1)
+    move_to_pose(parse_place_pose(object_name=name, receptacle_name=receptacle))
+    open_gripper()
+    detach_object(name)
+    lift(0.1)
+
+
+pick_and_place('apple', 'footed_bowl')  # an example call, dropped
+```"""
+
+LIFT = "```python\ndef lift(height):\n    move_in_direction([0, 0, 1], height)\n```"
+
+
+def test_an_undefined_helper_is_generated_and_the_task_done_through_a_real_server():
+    with ScriptedChatServer([{"text": MAIN}, {"text": HELPER}, {"text": LIFT}]) as server:
+        spec = TrialSpec("simple_0", "panda", 0, 0, program="", timeout=120, llm=f"openai:scripted@{server.url}")
+        (record,) = run_isolated([spec])
+    assert record.ok, record.error
+    assert record.outcome == Outcome.OK.value and record.success
+    assert "def pick_and_place(name, receptacle):" in record.program and "def lift(height):" in record.program
+    assert record.program.count("pick_and_place('apple', 'footed_bowl')") == 1
+    assert [e["purpose"] for e in record.llm_exchanges] == ["program", "function pick_and_place", "function lift"]
+    assert len(server.requests) == 3
+    query = server.requests[0]["messages"][-1]["content"]
+    assert query.startswith("objects = [") and "'apple'" in query and query.endswith("into the footed bowl")
+    assert "pick_and_place" in server.requests[1]["messages"][-1]["content"]
+
+
+def test_helper_generation_is_bounded_and_cycle_safe():
+    looping = "```python\ndef a():\n    b()\n\ndef b():\n    a()\n    c()\n```"
+    with ScriptedChatServer([{"text": "```python\na()\n```"}, {"text": looping}, {"text": "no code here"}]) as server:
+        generation = CodeAgent(make_llm(f"openai:m@{server.url}"), examples=[], max_depth=2).write_program("q")
+    assert generation.helpers == ["a"] and generation.unresolved == ["c"]
+    assert undefined_calls(generation.program)[0].name == "c"
+    assert len(server.requests) == 3  # the program, a (which brought b along), c (no definition)
+
+
+def test_a_model_that_cannot_be_reached_is_an_llm_error_trial():
+    spec = TrialSpec("simple_0", "panda", 0, 0, program="", timeout=60, llm="openai:m@http://127.0.0.1:9/v1")
+    (record,) = run_isolated([spec])
+    assert record.outcome == Outcome.LLM_ERROR.value and "cannot reach" in record.error
+    assert not record.success
+
+
+def _cli(*args: str) -> subprocess.CompletedProcess:
+    command = [sys.executable, "-m", "roboscript.cli", *args]
+    return subprocess.run(command, capture_output=True, text=True, timeout=600)
+
+
+def test_run_and_bench_with_an_llm_policy_save_each_generated_program(tmp_path):
+    reply = "```python\n" + get_task("simple_0").reference_program() + "```"
+    with ScriptedChatServer([{"text": reply}]) as server:
+        llm = f"openai:scripted@{server.url}"
+        run = _cli("run", "Put the apple into the footed bowl", "--task", "simple_0", "--llm", llm, "--json")
+        assert run.returncode == 0, run.stderr
+        result = json.loads(run.stdout.strip().splitlines()[-1])
+        assert result["whole_task_success"] == 1.0 and result["programs"][0].startswith("# Task")
+        assert server.requests[0]["messages"][-1]["content"].endswith("# Put the apple into the footed bowl")
+        out = tmp_path / "bench"
+        bench = _cli("bench", "--policy", f"llm:{llm}", "--tasks", "simple_0", "--trials", "1", "--out", str(out))
+        assert bench.returncode == 0, bench.stderr
+    (record,) = [json.loads(line) for line in (out / "results.jsonl").read_text().splitlines()]
+    assert record["outcome"] == "ok" and record["program"].startswith("# Task")
+    assert record["llm_exchanges"][0]["response"] == reply
+    missing = _cli("run", "x", "--task", "simple_0", "--llm", "nonsense")
+    assert missing.returncode == 2 and "bad LLM spec 'nonsense'" in missing.stderr

@@ -1,0 +1,84 @@
+"""LLM backends against a real HTTP server on loopback: answers, retries that give up, timeouts, the store."""
+
+from __future__ import annotations
+
+import time
+
+import pytest
+
+from chat_server import ScriptedChatServer
+from roboscript.llm import LLMError, LLMRequest, make_llm
+from roboscript.llm.openai_compatible import OpenAICompatibleLLM
+from roboscript.llm.store import ReplayLLM, ResponseStore, StoredLLM
+
+MESSAGES = ({"role": "system", "content": "be brief"}, {"role": "user", "content": "hello"})
+
+
+def test_a_completion_goes_through_the_openai_client():
+    with ScriptedChatServer([{"text": "hi there"}]) as server:
+        llm = make_llm(f"openai:scripted-model@{server.url}")
+        response = llm.complete(LLMRequest(MESSAGES, temperature=0.2, max_tokens=64))
+    assert response.text == "hi there" and response.model == "scripted-model"
+    assert response.usage["total_tokens"] == 15
+    (request,) = server.requests
+    assert request["model"] == "scripted-model" and request["messages"] == list(MESSAGES)
+    assert request["temperature"] == 0.2 and request["max_tokens"] == 64
+
+
+def test_429_and_500_are_retried_then_answered():
+    with ScriptedChatServer([{"status": 429}, {"status": 500}, {"text": "done"}]) as server:
+        llm = OpenAICompatibleLLM("m", base_url=server.url, max_retries=3)
+        assert llm.complete(LLMRequest(MESSAGES)).text == "done"
+    assert len(server.requests) == 3
+
+
+def test_retries_give_up_and_say_why():
+    with ScriptedChatServer([{"status": 500}]) as server:
+        llm = OpenAICompatibleLLM("m", base_url=server.url, max_retries=2)
+        with pytest.raises(LLMError, match="answered HTTP 500 after 2 retries"):
+            llm.complete(LLMRequest(MESSAGES))
+    assert len(server.requests) == 3
+
+
+def test_a_server_that_does_not_answer_times_out():
+    with ScriptedChatServer([{"delay": 3.0, "text": "late"}]) as server:
+        llm = OpenAICompatibleLLM("m", base_url=server.url, timeout=0.3, max_retries=1)
+        started = time.perf_counter()
+        with pytest.raises(LLMError, match=r"did not answer within 0\.3 s"):
+            llm.complete(LLMRequest(MESSAGES))
+        assert time.perf_counter() - started < 2.5
+    assert len(server.requests) == 2
+
+
+def test_an_unreachable_endpoint_is_reported():
+    llm = OpenAICompatibleLLM("m", base_url="http://127.0.0.1:9/v1", timeout=1.0, max_retries=0)
+    with pytest.raises(LLMError, match=r"cannot reach http://127\.0\.0\.1:9/v1"):
+        llm.complete(LLMRequest(MESSAGES))
+
+
+def test_record_then_replay_without_the_server(tmp_path):
+    with ScriptedChatServer([{"text": "first"}, {"text": "second"}]) as server:
+        recorder = make_llm(f"record:{tmp_path}=openai:m@{server.url}")
+        assert recorder.complete(LLMRequest(MESSAGES)).text == "first"
+        cached = StoredLLM(OpenAICompatibleLLM("m", base_url=server.url), ResponseStore(tmp_path), mode="cache")
+        again = cached.complete(LLMRequest(MESSAGES))
+    assert again.text == "first" and again.from_store and len(server.requests) == 1
+    replay = ReplayLLM(ResponseStore(tmp_path), "openai:m")
+    assert replay.complete(LLMRequest(MESSAGES)).text == "first"
+    with pytest.raises(LLMError, match="no recorded response"):
+        replay.complete(LLMRequest(MESSAGES, temperature=0.7))
+
+
+def test_bad_specs_and_requests_say_what_is_valid(monkeypatch):
+    monkeypatch.delenv("ROBOSCRIPT_LLM", raising=False)
+    monkeypatch.delenv("ROBOSCRIPT_LLM_MODEL", raising=False)
+    with pytest.raises(LLMError, match="no LLM configured"):
+        make_llm(None)
+    with pytest.raises(LLMError, match="unknown LLM kind 'gpt'"):
+        make_llm("gpt:4")
+    with pytest.raises(LLMError, match=r"use replay:DIR=NAME"):
+        make_llm("replay:/tmp")
+    with pytest.raises(LLMError, match="no GGUF model at"):
+        make_llm("llama:/nonexistent/model.gguf")
+    with pytest.raises(ValueError, match="role 'robot'"):
+        LLMRequest(({"role": "robot", "content": "x"},))

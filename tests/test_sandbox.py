@@ -1,0 +1,110 @@
+"""The sandbox: hostile or broken programs are rejected or contained, the runner survives, nothing outside changes."""
+
+from __future__ import annotations
+
+import multiprocessing as mp
+import os
+
+import pytest
+
+from roboscript.api import Pose
+from roboscript.codegen.outcomes import Outcome
+from roboscript.codegen.sandbox import Limits, execute
+
+FORBIDDEN, RUNTIME, TIMEOUT = Outcome.FORBIDDEN_CONSTRUCT, Outcome.RUNTIME_ERROR, Outcome.TIMEOUT
+
+# (program, expected outcome, a piece of the error). MARK is replaced by a path that must not exist afterwards.
+HOSTILE = [
+    ("import os\nos.system('touch MARK')", FORBIDDEN, "imports are not allowed"),
+    ("from os import system\nsystem('touch MARK')", FORBIDDEN, "imports are not allowed"),
+    ("__import__('os').system('touch MARK')", FORBIDDEN, "'__import__' is not allowed"),
+    ("import builtins", FORBIDDEN, "imports are not allowed"),
+    ("x = ().__class__.__bases__[0].__subclasses__()", FORBIDDEN, ".__class__"),
+    ("x = [c for c in ().__class__.__base__.__subclasses__() if c.__name__ == 'Popen']", FORBIDDEN, ".__class__"),
+    ("f = lambda: 0\ng = f.__globals__", FORBIDDEN, ".__globals__"),
+    ("g = (x for x in [1])\nh = g.gi_frame.f_back.f_globals", FORBIDDEN, ".gi_frame"),
+    ("try:\n    1 / 0\nexcept Exception as e:\n    t = e.__traceback__.tb_frame", FORBIDDEN, ".__traceback__"),
+    ("open('MARK', 'w').write('x')", FORBIDDEN, "'open' is not allowed"),
+    ("with open('MARK', 'w') as f:\n    f.write('x')", FORBIDDEN, "with statements are not allowed"),
+    ("eval('1 + 1')", FORBIDDEN, "'eval' is not allowed"),
+    ("exec('import os')", FORBIDDEN, "'exec' is not allowed"),
+    ("c = compile('1', 'f', 'eval')", FORBIDDEN, "'compile' is not allowed"),
+    ("getattr(np, 'load')('MARK')", FORBIDDEN, "'getattr' is not allowed"),
+    ("np.save('MARK', np.zeros(3))", FORBIDDEN, ".save"),
+    ("np.zeros(3).tofile('MARK')", FORBIDDEN, ".tofile"),
+    ("m = np.lib.format.open_memmap('MARK', mode='w+', shape=(3,))", FORBIDDEN, ".lib"),
+    ("p = np.zeros(3).ctypes.data", FORBIDDEN, ".ctypes"),
+    ("alias = np\nalias.load('MARK')", FORBIDDEN, ".load"),
+    ("b = globals()['__builtins__']", FORBIDDEN, "'globals' is not allowed"),
+    ("X = type('X', (), {})", FORBIDDEN, "'type' is not allowed"),
+    ("class X:\n    pass", FORBIDDEN, "class definitions are not allowed"),
+    ("async def f():\n    pass", FORBIDDEN, "async code is not allowed"),
+    ("def f():\n    yield 1", FORBIDDEN, "generators (yield) are not allowed"),
+    ("s = '{0.__class__}'.format(1)", FORBIDDEN, "format strings may not name dunder attributes"),
+    ("m = print.__self__", FORBIDDEN, ".__self__"),
+    ("g = Pose.__init__.__globals__", FORBIDDEN, ".__init__"),
+    ("d = vars(np)", FORBIDDEN, "'vars' is not allowed"),
+    ("breakpoint()", FORBIDDEN, "'breakpoint' is not allowed"),
+    ("try:\n    pass\nexcept:\n    pass", FORBIDDEN, "bare except"),
+    ("r = [].__class__.__mro__", FORBIDDEN, ".__class__"),
+    ("while True:\n    pass", TIMEOUT, "longer than its 2 s limit"),
+    ("while True:\n    try:\n        x = 1\n    except Exception:\n        pass", TIMEOUT, "longer than its 2 s"),
+    ("x = [0] * (10 ** 10)", RUNTIME, "MemoryError"),
+    ("s = 'a' * (10 ** 11)", RUNTIME, "MemoryError"),
+    ("a = np.zeros(10 ** 11)", RUNTIME, "MemoryError"),
+    ("def f(n):\n    return f(n + 1)\nf(0)", RUNTIME, "RecursionError"),
+    ("x = 1 / 0", RUNTIME, "ZeroDivisionError: division by zero (program line 1)"),
+    ("raise SystemExit(0)", RUNTIME, "NameError: name 'SystemExit' is not defined"),
+    ("x = undefined_name + 1", RUNTIME, "NameError"),
+    ("os = 3\nx = np.os", FORBIDDEN, ".os"),
+]
+
+
+def _run_in_child(program: str, queue) -> None:
+    result = execute(program, {"Pose": Pose}, Limits(timeout=2.0, memory=512 * 1024**2))
+    queue.put((result.outcome.value, result.error))
+
+
+def run_contained(program: str) -> tuple[str, str | None]:
+    """Runs ``program`` in a forked child, as the runner does; returns its outcome and error."""
+    context = mp.get_context("fork")
+    queue = context.Queue()
+    child = context.Process(target=_run_in_child, args=(program, queue))
+    child.start()
+    child.join(60)
+    assert not child.is_alive(), "the sandbox did not stop the program"
+    child.kill()
+    assert child.exitcode == 0, f"the child died with exit code {child.exitcode}"
+    return queue.get(timeout=5)
+
+
+def test_the_corpus_is_large_enough():
+    assert len(HOSTILE) >= 30
+
+
+@pytest.mark.parametrize(("program", "outcome", "error"), HOSTILE, ids=[f"p{i}" for i in range(len(HOSTILE))])
+def test_hostile_programs_are_rejected_or_contained(tmp_path, program, outcome, error):
+    mark = tmp_path / "mark"
+    outcome_got, error_got = run_contained(program.replace("MARK", str(mark)))
+    assert outcome_got == outcome.value, error_got
+    assert error in error_got
+    assert not mark.exists() and os.listdir(tmp_path) == []
+
+
+def test_a_well_behaved_program_runs_with_numpy_and_prints():
+    program = "v = np.linalg.norm(np.array([3.0, 4.0]))\nnames = sorted(['b', 'a'])\nprint(v, names)\n"
+    result = execute(program, {}, Limits(timeout=5))
+    assert result.outcome is Outcome.OK and result.error is None
+    assert result.output == "5.0 ['a', 'b']\n"
+
+
+def test_limits_are_restored_after_a_run():
+    import resource
+    import signal
+    import sys
+
+    before = (resource.getrlimit(resource.RLIMIT_AS), resource.getrlimit(resource.RLIMIT_CPU), sys.getrecursionlimit())
+    execute("x = 1", {}, Limits(timeout=5))
+    assert signal.getitimer(signal.ITIMER_REAL) == (0.0, 0.0)
+    after = (resource.getrlimit(resource.RLIMIT_AS), resource.getrlimit(resource.RLIMIT_CPU), sys.getrecursionlimit())
+    assert after == before
