@@ -159,3 +159,19 @@ def test_run_and_bench_with_an_llm_policy_save_each_generated_program(tmp_path):
     assert record["llm_exchanges"][0]["response"] == reply
     missing = _cli("run", "x", "--task", "simple_0", "--llm", "nonsense")
     assert missing.returncode == 2 and "bad LLM spec 'nonsense'" in missing.stderr
+
+
+def test_checker_errors_are_fed_back_and_the_repaired_program_runs():
+    broken = "```python\n" + get_task("simple_0").reference_program().replace("object_name='apple'", "obj='apple'")
+    fixed = "```python\n" + get_task("simple_0").reference_program() + "```"
+    with ScriptedChatServer([{"text": broken + "```"}, {"text": broken + "```"}, {"text": fixed}]) as server:
+        llm = f"openai:scripted@{server.url}"
+        unrepaired = TrialSpec("simple_0", "panda", 0, 0, program="", timeout=120, llm=llm)
+        repaired = TrialSpec("simple_0", "panda", 0, 0, program="", timeout=120, llm=llm, repair_rounds=2)
+        first, second = run_isolated([unrepaired]) + run_isolated([repaired])
+    assert first.outcome == Outcome.BAD_ARGUMENTS.value and "has no argument 'obj'" in first.error
+    assert first.repairs == 0 and not first.success
+    assert second.outcome == Outcome.OK.value and second.success and second.repairs == 1
+    feedback = server.requests[-1]["messages"][-1]["content"]
+    assert "bad_arguments" in feedback and "has no argument 'obj'" in feedback
+    assert server.requests[-1]["messages"][-2]["role"] == "assistant"

@@ -156,9 +156,21 @@ def cmd_bench(args: argparse.Namespace) -> int:
     tasks = [t.strip() for t in args.tasks.split(",") if t.strip()] if args.tasks else None
     from roboscript.bench.benchmark import default_out
 
-    out = args.out or default_out(args.policy, args.robot)
+    if args.repair and not args.policy.startswith("llm:"):
+        raise ValueError("--repair needs an LLM policy (--policy llm:SPEC)")
+    label = f"{args.policy}+repair{args.repair}" if args.repair else args.policy
+    out = args.out or default_out(label, args.robot)
     result = run_benchmark(
-        args.policy, tasks, args.robot, args.trials, args.seed, out, args.jobs, args.timeout, progress=not args.json
+        args.policy,
+        tasks,
+        args.robot,
+        args.trials,
+        args.seed,
+        out,
+        args.jobs,
+        args.timeout,
+        progress=not args.json,
+        repair_rounds=args.repair,
     )
     if args.json:
         print(json.dumps({"tasks": result["tasks"], "wall_time_s": result["wall_time_s"]}))
@@ -178,8 +190,16 @@ def cmd_run(args: argparse.Namespace) -> int:
     get_task(args.task)
     llm = make_llm(args.llm)  # fails here, clearly, when no LLM is configured
     specs = trial_specs(
-        args.task, "", args.robot, args.trials, args.seed, args.timeout, args.video, llm=args.llm or llm.name,
+        args.task,
+        "",
+        args.robot,
+        args.trials,
+        args.seed,
+        args.timeout,
+        args.video,
+        llm=args.llm or llm.name,
         instruction=args.instruction,
+        repair_rounds=args.repair,
     )
     records = run_isolated(specs, args.jobs)
     result = task_result(args.task, args.robot, records)
@@ -229,9 +249,14 @@ def build_parser() -> argparse.ArgumentParser:
     ask = sub.add_parser("run", help="have an LLM write a program for an instruction, run it and evaluate it")
     ask.add_argument("instruction", help="what the robot should do, in words")
     ask.add_argument("--task", required=True, help="the task whose world (and checks) to use")
-    ask.add_argument("--llm", default=None, help="openai:MODEL[@URL] | llama:PATH.gguf | replay:DIR=NAME | "
-                     "record:DIR=SPEC | cache:DIR=SPEC; default: $ROBOSCRIPT_LLM or $ROBOSCRIPT_LLM_MODEL")
+    ask.add_argument(
+        "--llm",
+        default=None,
+        help="openai:MODEL[@URL] | llama:PATH.gguf | replay:DIR=NAME | "
+        "record:DIR=SPEC | cache:DIR=SPEC; default: $ROBOSCRIPT_LLM or $ROBOSCRIPT_LLM_MODEL",
+    )
     ask.add_argument("--show-code", action="store_true", help="print the generated program")
+    ask.add_argument("--repair", type=int, default=0, help="rounds of feeding checker errors back to the LLM")
     ask.add_argument("--video", default=None, help="record camera_left into this MP4 file")
     _add_run_options(ask)
     ask.set_defaults(func=cmd_run, trials=1)
@@ -239,6 +264,7 @@ def build_parser() -> argparse.ArgumentParser:
     bench.add_argument(
         "--policy", default="reference", help="where programs come from: reference, or llm:SPEC (see `run --llm`)"
     )
+    bench.add_argument("--repair", type=int, default=0, help="rounds of feeding checker errors back (LLM policies)")
     bench.add_argument("--tasks", default=None, help="comma-separated task ids; default: all")
     bench.add_argument("--out", default=None, help="run directory; default out/bench/<policy>_<robot>")
     _add_run_options(bench)

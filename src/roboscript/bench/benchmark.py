@@ -49,6 +49,7 @@ def trial_specs(
     video: str | None = None,
     llm: str | None = None,
     instruction: str | None = None,
+    repair_rounds: int = 0,
 ) -> list[TrialSpec]:
     """Trial ``i`` uses seed ``seed + i``; with several trials, videos get a ``_trial<i>`` suffix."""
     if trials < 1:
@@ -60,7 +61,20 @@ def trial_specs(
             path = (
                 video if trials == 1 else str(Path(video).with_name(f"{Path(video).stem}_trial{i}{Path(video).suffix}"))
             )
-        specs.append(TrialSpec(task, robot, i, seed + i, program, timeout, path, llm=llm, instruction=instruction))
+        specs.append(
+            TrialSpec(
+                task,
+                robot,
+                i,
+                seed + i,
+                program,
+                timeout,
+                path,
+                llm=llm,
+                instruction=instruction,
+                repair_rounds=repair_rounds,
+            )
+        )
     return specs
 
 
@@ -90,6 +104,7 @@ def run_benchmark(
     jobs: int,
     timeout: float = 300.0,
     progress: bool = True,
+    repair_rounds: int = 0,
 ) -> dict:
     """Runs (or resumes) the benchmark in ``out``; returns ``{"tasks": {id: exec object}, "wall_time_s"}``."""
     tasks = list(tasks or TASKS)
@@ -97,12 +112,15 @@ def run_benchmark(
         get_task(t)
     started = time.perf_counter()
     programs = policy_programs(policy, tasks)
-    run = RunDirectory(out, provenance(policy, robot, trials, seed, programs, "ground_truth"))
+    label = f"{policy}+repair{repair_rounds}" if repair_rounds else policy
+    run = RunDirectory(out, provenance(label, robot, trials, seed, programs, "ground_truth"))
     done = run.done()
     specs = [
         s
         for t in tasks
-        for s in trial_specs(t, programs[t], robot, trials, seed, timeout, llm=policy_llm(policy))
+        for s in trial_specs(
+            t, programs[t], robot, trials, seed, timeout, llm=policy_llm(policy), repair_rounds=repair_rounds
+        )
         if (s.task, s.robot, s.trial) not in done
     ]
     printer = progress_printer(len(specs)) if progress else None

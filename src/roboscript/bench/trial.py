@@ -36,6 +36,7 @@ class TrialSpec:
     memory_limit: int = 2 * 1024**3
     llm: str | None = None
     instruction: str | None = None  # asked of the LLM instead of the task's own instruction
+    repair_rounds: int = 0  # rounds of feeding the checker's findings back to the LLM
 
 
 @dataclass
@@ -55,6 +56,7 @@ class TrialRecord:
     output: str = ""
     outcome: str = Outcome.OK.value
     program: str | None = None  # the generated program (LLM policies)
+    repairs: int = 0  # repair rounds used
     llm_exchanges: list[dict] = field(default_factory=list)  # every prompt and raw response behind it
 
     @property
@@ -86,9 +88,10 @@ def run_trial(spec: TrialSpec) -> TrialRecord:
 
             recorder = VideoRecorder(backend, spec.video, camera=spec.video_camera)
         sim_start = backend.time()
-        program, exchanges = spec.program, []
+        program, exchanges, repairs = spec.program, [], 0
         if spec.llm is not None:
-            program, exchanges, result = _generate(spec.llm, task.query(backend.ground_truth, spec.instruction))
+            query = task.query(backend.ground_truth, spec.instruction)
+            program, exchanges, repairs, result = _generate(spec.llm, query, spec.repair_rounds)
         if program is not None:
             result = check_and_execute(program, tools.namespace(), Limits(spec.timeout, spec.memory_limit))
         backend.wait(1.0)  # let what was let go come to rest before judging
@@ -110,6 +113,7 @@ def run_trial(spec: TrialSpec) -> TrialRecord:
             outcome=outcome.value,
             program=program if spec.llm is not None else None,
             llm_exchanges=exchanges,
+            repairs=repairs,
         )
     finally:
         if recorder is not None:
@@ -126,14 +130,18 @@ def check_and_execute(program: str, namespace: dict, limits: Limits) -> Executio
     return execute(program, namespace, limits)
 
 
-def _generate(llm_spec: str, query: str) -> tuple[str | None, list[dict], ExecutionResult | None]:
-    """The program an LLM writes for ``query``, the exchanges behind it, and the result if there is no program."""
+def _generate(
+    llm_spec: str, query: str, repair_rounds: int
+) -> tuple[str | None, list[dict], int, ExecutionResult | None]:
+    """The program an LLM writes for ``query`` (repaired against the checker for up to ``repair_rounds``), the
+    exchanges behind it, the repair rounds used, and the result if there is no program."""
     from roboscript.codegen.agent import CodeAgent
     from roboscript.llm import LLMError, make_llm
 
     try:
         agent = CodeAgent(make_llm(llm_spec))
         generation = agent.write_program(query)
+        agent.repair_static(query, generation, repair_rounds)
     except LLMError as exc:
-        return None, [], ExecutionResult(Outcome.LLM_ERROR, f"LLMError: {exc}", "")
-    return generation.program, generation.exchanges, None
+        return None, [], 0, ExecutionResult(Outcome.LLM_ERROR, f"LLMError: {exc}", "")
+    return generation.program, generation.exchanges, generation.repairs, None

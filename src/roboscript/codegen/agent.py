@@ -7,9 +7,9 @@ import ast
 import contextlib
 from dataclasses import dataclass, field
 
-from roboscript.codegen.checker import undefined_calls
+from roboscript.codegen.checker import check_program, undefined_calls
 from roboscript.codegen.extract import extract_code
-from roboscript.codegen.prompt import Example, function_messages, program_messages
+from roboscript.codegen.prompt import Example, function_messages, program_messages, repair_messages
 from roboscript.llm.base import LLM, LLMRequest
 
 
@@ -21,6 +21,7 @@ class Generation:
     exchanges: list[dict] = field(default_factory=list)  # {"purpose", "messages", "response"}
     helpers: list[str] = field(default_factory=list)  # names the sub-agent defined
     unresolved: list[str] = field(default_factory=list)  # names it could not define (depth bound, no definition)
+    repairs: int = 0  # rounds of repair used
 
 
 class CodeAgent:
@@ -35,6 +36,20 @@ class CodeAgent:
         generation = Generation(extract_code(text), [{"purpose": "program", "messages": messages, "response": text}])
         self.define_missing(generation)
         return generation
+
+    def repair_static(self, query: str, generation: Generation, rounds: int) -> None:
+        """Feeds the static checker's findings back for at most ``rounds`` rounds, until the program passes."""
+        for _ in range(rounds):
+            findings = check_program(generation.program)
+            if not findings:
+                return
+            errors = [f"{f.outcome.value}: {f.message} (line {f.line})" for f in findings]
+            messages = repair_messages(query, generation.program, errors, self.examples)
+            text = self._ask(messages)
+            generation.exchanges.append({"purpose": "repair", "messages": messages, "response": text})
+            generation.program = extract_code(text)
+            generation.repairs += 1
+            self.define_missing(generation)
 
     def define_missing(self, generation: Generation) -> None:
         """Adds definitions for called-but-undefined names, breadth first, up to ``max_depth`` levels."""

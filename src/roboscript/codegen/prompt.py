@@ -96,3 +96,14 @@ def function_messages(name: str, call: str, program: str) -> list[dict]:
         {"role": "system", "content": f"{FUNCTION_RULES}\n\nTools:\n\n```python\n{tool_reference()}\n```"},
         {"role": "user", "content": request},
     ]
+
+
+def repair_messages(query: str, program: str, errors: list[str], examples: list[Example] | None = None) -> list[dict]:
+    """The original conversation, the program as the model's answer, then the errors and a request to fix them."""
+    messages = program_messages(query, examples)
+    messages.append({"role": "assistant", "content": fenced(program)})
+    listed = "\n".join(f"- {e}" for e in errors)
+    messages.append(
+        {"role": "user", "content": f"The program has these errors:\n{listed}\nWrite the corrected program, whole."}
+    )
+    return messages
