@@ -154,12 +154,11 @@ def cmd_bench(args: argparse.Namespace) -> int:
     from roboscript.bench.benchmark import run_benchmark
 
     tasks = [t.strip() for t in args.tasks.split(",") if t.strip()] if args.tasks else None
-    from roboscript.bench.benchmark import default_out
+    from roboscript.bench.benchmark import default_out, run_label
 
     if args.repair and not args.policy.startswith("llm:"):
         raise ValueError("--repair needs an LLM policy (--policy llm:SPEC)")
-    label = f"{args.policy}+repair{args.repair}" if args.repair else args.policy
-    out = args.out or default_out(label, args.robot)
+    out = args.out or default_out(run_label(args.policy, args.repair), args.robot)
     result = run_benchmark(
         args.policy,
         tasks,

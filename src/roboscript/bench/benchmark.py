@@ -34,6 +34,11 @@ def policy_programs(policy: str, tasks: list[str]) -> dict[str, str]:
     return {t: f"generated in each trial by {llm}" for t in tasks}
 
 
+def run_label(policy: str, repair_rounds: int = 0) -> str:
+    """The policy as runs are told apart by: with repair, ``<policy>+repair<K>``."""
+    return f"{policy}+repair{repair_rounds}" if repair_rounds else policy
+
+
 def default_out(policy: str, robot: str) -> str:
     """``out/bench/<policy>_<robot>``, the policy made safe for a directory name."""
     return f"out/bench/{re.sub(r'[^A-Za-z0-9._-]+', '_', policy)}_{robot}"
@@ -112,8 +117,7 @@ def run_benchmark(
         get_task(t)
     started = time.perf_counter()
     programs = policy_programs(policy, tasks)
-    label = f"{policy}+repair{repair_rounds}" if repair_rounds else policy
-    run = RunDirectory(out, provenance(label, robot, trials, seed, programs, "ground_truth"))
+    run = RunDirectory(out, provenance(run_label(policy, repair_rounds), robot, trials, seed, programs, "ground_truth"))
     done = run.done()
     specs = [
         s

@@ -13,7 +13,7 @@ from dataclasses import dataclass
 from roboscript.api.signature import ALIASES
 from roboscript.codegen.guard import find_violations
 from roboscript.codegen.outcomes import Outcome
-from roboscript.codegen.sandbox import _SAFE_BUILTIN_NAMES, safe_numpy
+from roboscript.codegen.sandbox import PROGRAM_BUILTINS, safe_numpy
 
 
 @dataclass(frozen=True)
@@ -62,9 +62,8 @@ def check_program(program: str, tools: Mapping[str, inspect.Signature] | None = 
         return [Finding(exc.lineno or 0, Outcome.SYNTAX, f"SyntaxError: {exc.msg}")]
     findings = [Finding(v.line, Outcome.FORBIDDEN_CONSTRUCT, v.message) for v in find_violations(tree)]
     defined = _defined_functions(tree)
-    variables = _assigned_names(tree)
+    known = _callable_names(tree, tools)
     numpy = safe_numpy()
-    known = set(tools) | set(defined) | set(_SAFE_BUILTIN_NAMES) | {"print"}
     for call in (n for n in ast.walk(tree) if isinstance(n, ast.Call)):
         func = call.func
         if isinstance(func, ast.Name):
@@ -73,10 +72,10 @@ def check_program(program: str, tools: Mapping[str, inspect.Signature] | None = 
                 findings += _bind(call, name, tools[name], aliases=True)
             elif name in defined:
                 findings += _bind(call, name, defined[name], aliases=False)
-            elif name not in known and name not in variables:
-                findings.append(Finding(call.lineno, Outcome.UNKNOWN_FUNCTION, _unknown(name, known)))
-        elif isinstance(func, ast.Attribute) and _numpy_path(func) is not None:
-            path = _numpy_path(func)
+            elif name not in known:
+                suggestions = set(tools) | set(defined) | PROGRAM_BUILTINS
+                findings.append(Finding(call.lineno, Outcome.UNKNOWN_FUNCTION, _unknown(name, suggestions)))
+        elif isinstance(func, ast.Attribute) and (path := _numpy_path(func)) is not None:
             target = numpy
             for part in path[1:]:
                 parent, target = target, getattr(target, part, None)
@@ -92,14 +91,18 @@ def undefined_calls(program: str, tools: Mapping[str, inspect.Signature] | None 
     """Calls of names that are neither tools, builtins, defined nor assigned: one per name, first call first."""
     tools = tool_signatures() if tools is None else tools
     tree = ast.parse(program)
-    known = set(tools) | set(_defined_functions(tree)) | set(_SAFE_BUILTIN_NAMES) | {"print"} | _assigned_names(tree)
+    known = _callable_names(tree, tools)
     lines = program.splitlines()
     sites: dict[str, CallSite] = {}
     for call in sorted((n for n in ast.walk(tree) if isinstance(n, ast.Call)), key=lambda n: n.lineno):
         if isinstance(call.func, ast.Name) and call.func.id not in known and call.func.id not in sites:
-            statement = ast.get_source_segment(program, call) or lines[call.lineno - 1]
-            sites[call.func.id] = CallSite(call.func.id, call.lineno, lines[call.lineno - 1].strip() or statement)
+            sites[call.func.id] = CallSite(call.func.id, call.lineno, lines[call.lineno - 1].strip())
     return list(sites.values())
+
+
+def _callable_names(tree: ast.AST, tools: Mapping[str, inspect.Signature]) -> set[str]:
+    """Names a program may call: tools, builtins, its own functions, and names it assigns (a lambda, an alias)."""
+    return set(tools) | PROGRAM_BUILTINS | set(_defined_functions(tree)) | _assigned_names(tree)
 
 
 def _bind(call: ast.Call, name: str, signature: inspect.Signature, aliases: bool) -> list[Finding]:

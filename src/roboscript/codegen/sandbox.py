@@ -46,6 +46,9 @@ _NUMPY_NAMES = (
 )  # fmt: skip
 
 
+PROGRAM_BUILTINS = frozenset((*_SAFE_BUILTIN_NAMES, "print"))  # every builtin name a program may call
+
+
 def _proxy(name: str, module: types.ModuleType, names) -> types.SimpleNamespace:
     namespace = types.SimpleNamespace(**{n: getattr(module, n) for n in names if hasattr(module, n)})
     namespace.__name__ = name
