@@ -1,19 +1,26 @@
-# Quick start (README): `make demo` installs everything and renders a world; `make test` runs the checks.
+# Quick start (README): `make demo` installs everything and runs the first task end to end with a video and a
+# report; `make test` runs the checks (all of them, the slow local-model test included).
 VENV ?= .venv
 PY := $(VENV)/bin/python
 
-.PHONY: setup demo test bench
+.PHONY: setup demo test test-deps test-fast bench
 setup:
 	./scripts/setup.sh
 
 demo: setup
-	$(VENV)/bin/roboscript worlds
-	$(VENV)/bin/roboscript render world_1_table_sort --out out/world_1_table_sort
-	$(VENV)/bin/roboscript render world_5_mug_to_cabinet --robot ur5e --out out/world_5_mug_to_cabinet_ur5e
+	$(VENV)/bin/roboscript demo --out out/demo
 
-test:
+# The slow tests need llama.cpp (compiled on first install, about 5 minutes on 2 cores) and a small GGUF model.
+test-deps:
+	$(PY) -m pip install -q -e ".[dev,slowtests]"
+
+test: test-deps
 	$(VENV)/bin/ruff check src tests benchmarks
 	$(PY) -m pytest -q
+
+test-fast:
+	$(VENV)/bin/ruff check src tests benchmarks
+	$(PY) -m pytest -q -m "not slow"
 
 bench:
 	$(PY) benchmarks/sim_speed.py

@@ -12,6 +12,7 @@ import pytest
 
 from chat_server import ScriptedChatServer
 from roboscript.api import ToolAPI
+from roboscript.bench.benchmark import run_benchmark
 from roboscript.bench.runner import run_isolated
 from roboscript.bench.tasks import get_task
 from roboscript.bench.trial import TrialSpec
@@ -170,8 +171,49 @@ def test_checker_errors_are_fed_back_and_the_repaired_program_runs():
         repaired = TrialSpec("simple_0", "panda", 0, 0, program="", timeout=120, llm=llm, repair_rounds=2)
         first, second = run_isolated([unrepaired]) + run_isolated([repaired])
     assert first.outcome == Outcome.BAD_ARGUMENTS.value and "has no argument 'obj'" in first.error
-    assert first.repairs == 0 and not first.success
+    assert first.repairs == 0 and not first.success and first.attempts == []
     assert second.outcome == Outcome.OK.value and second.success and second.repairs == 1
+    assert [a["outcome"] for a in second.attempts] == ["bad_arguments", "ok"]
     feedback = server.requests[-1]["messages"][-1]["content"]
     assert "bad_arguments" in feedback and "has no argument 'obj'" in feedback
     assert server.requests[-1]["messages"][-2]["role"] == "assistant"
+
+
+def test_a_runtime_error_is_fed_back_and_the_repair_runs_in_a_fresh_world_both_results_reported(tmp_path):
+    # The first program prints, then fails; the LLM sees the error and the output and writes the reference program.
+    failing = (
+        "```python\nopen_gripper()\napple = get_object_center_position('apple')\n"
+        "print('apple at', apple)\nsteps = {'grasp': 1}\nnext_step = steps['place']\n```"
+    )
+    fixed = "```python\n" + get_task("simple_0").reference_program() + "```"
+    with ScriptedChatServer([{"text": failing}, {"text": fixed}]) as server:
+        policy = f"llm:openai:scripted@{server.url}"
+        result = run_benchmark(
+            policy, ["simple_0"], "panda", 1, 0, tmp_path, jobs=1, timeout=120, progress=False, repair_rounds=2
+        )
+    (record,) = [json.loads(line) for line in (tmp_path / "results.jsonl").read_text().splitlines()]
+    assert [a["outcome"] for a in record["attempts"]] == ["runtime_error", "ok"] and record["repairs"] == 1
+    assert "KeyError: 'place' (program line 5)" in record["attempts"][0]["error"]
+    feedback = server.requests[-1]["messages"][-1]["content"]
+    assert "runtime_error: KeyError: 'place' (program line 5)" in feedback and "apple at [" in feedback
+    assert "reset" in feedback
+    assert result["summary"]["simple_0"]["whole_task_success"] == 1.0
+    summary = json.loads((tmp_path / "summary.json").read_text())
+    assert summary["without_repair"]["simple_0"]["whole_task_success"] == 0.0
+    assert summary["without_repair"]["simple_0"]["grammar_correctness"] == 0.0
+    table = (tmp_path / "summary.md").read_text()
+    assert "| Whole task success, no repair | 0.00 |" in table and "| Whole task success, repair ≤2 | 1.00 |" in table
+
+
+def test_run_in_a_world_without_a_task_acts_and_checks_nothing():
+    program = "```python\nopen_gripper()\nmove_in_direction([0, 0, 1], 0.05)\nprint('done')\n```"
+    with ScriptedChatServer([{"text": program}]) as server:
+        llm = f"openai:scripted@{server.url}"
+        run = _cli("run", "Lift the hand a little", "--world", "world_2_pick_and_place", "--llm", llm, "--show-code")
+    assert run.returncode == 0, run.stderr
+    assert "trial 0: ok" in run.stdout and "nothing was checked" in run.stdout and "move_in_direction" in run.stdout
+    assert server.requests[0]["messages"][-1]["content"].endswith("# Lift the hand a little")
+    both = _cli("run", "x", "--world", "world_2_pick_and_place", "--task", "simple_0", "--llm", llm)
+    assert both.returncode == 2 and "not allowed with argument" in both.stderr
+    unknown = _cli("run", "x", "--world", "world_99", "--llm", llm)
+    assert unknown.returncode == 2 and "world_99" in unknown.stderr

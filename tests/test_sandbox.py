@@ -2,13 +2,13 @@
 
 from __future__ import annotations
 
-import multiprocessing as mp
 import os
 
 import pytest
 
 from roboscript.api import Pose
 from roboscript.codegen.outcomes import Outcome
+from roboscript.codegen.program_process import run_program
 from roboscript.codegen.sandbox import Limits, execute
 
 FORBIDDEN, RUNTIME, TIMEOUT = Outcome.FORBIDDEN_CONSTRUCT, Outcome.RUNTIME_ERROR, Outcome.TIMEOUT
@@ -56,26 +56,16 @@ HOSTILE = [
     ("x = 1 / 0", RUNTIME, "ZeroDivisionError: division by zero (program line 1)"),
     ("raise SystemExit(0)", RUNTIME, "NameError: name 'SystemExit' is not defined"),
     ("x = undefined_name + 1", RUNTIME, "NameError"),
+    ("x = sum(range(10 ** 13))", TIMEOUT, "CPU-time limit"),  # C code the timer signal cannot interrupt
     ("os = 3\nx = np.os", FORBIDDEN, ".os"),
 ]
 
 
-def _run_in_child(program: str, queue) -> None:
-    result = execute(program, {"Pose": Pose}, Limits(timeout=2.0, memory=512 * 1024**2))
-    queue.put((result.outcome.value, result.error))
-
-
 def run_contained(program: str) -> tuple[str, str | None]:
-    """Runs ``program`` in a forked child, as the runner does; returns its outcome and error."""
-    context = mp.get_context("fork")
-    queue = context.Queue()
-    child = context.Process(target=_run_in_child, args=(program, queue))
-    child.start()
-    child.join(60)
-    assert not child.is_alive(), "the sandbox did not stop the program"
-    child.kill()
-    assert child.exitcode == 0, f"the child died with exit code {child.exitcode}"
-    return queue.get(timeout=5)
+    """Runs ``program`` as trials do: in a process of its own; returns its outcome and error."""
+    limits = Limits(timeout=2.0, memory=512 * 1024**2, cpu_margin=1.0)
+    result = run_program(program, {"Pose": Pose}, limits)
+    return result.outcome.value, result.error
 
 
 def test_the_corpus_is_large_enough():
@@ -108,3 +98,46 @@ def test_limits_are_restored_after_a_run():
     assert signal.getitimer(signal.ITIMER_REAL) == (0.0, 0.0)
     after = (resource.getrlimit(resource.RLIMIT_AS), resource.getrlimit(resource.RLIMIT_CPU), sys.getrecursionlimit())
     assert after == before
+
+
+def test_tool_calls_run_in_the_callers_process_and_only_their_results_reach_the_program():
+    calls, names = [], ["apple", "bowl"]
+
+    def where(tag):  # a tool: runs here, in the test's process
+        calls.append(tag)
+        return {"pid": os.getpid(), "pose": Pose([0.5, 0.0, 0.2], [0, 0, 0, 1])}
+
+    def object_names():
+        return names
+
+    program = "r = where('a')\nn = object_names()\nn.append('stolen')\nprint(r['pid'], r['pose'].position.x, len(n))"
+    namespace = {"where": where, "object_names": object_names, "Pose": Pose}
+    result = run_program(program, namespace, Limits(timeout=5), forwarded=["where", "object_names"])
+    assert result.outcome is Outcome.OK, result.error
+    assert result.output == f"{os.getpid()} 0.5 3\n"
+    assert calls == ["a"] and names == ["apple", "bowl"]  # the program changed its copy, not the tool's list
+
+
+def test_a_tools_exception_reaches_the_program_with_its_type_and_line():
+    from roboscript.planning.errors import IKError
+
+    def plan():  # an exception whose __init__ takes other arguments than its message
+        raise IKError([0.9, 0.0, 0.1], 0.12, 0.3, "out of reach")
+
+    program = "try:\n    plan()\nexcept RuntimeError:\n    print('caught')\nplan()"
+    result = run_program(program, {"plan": plan}, Limits(timeout=5), forwarded=["plan"])
+    assert result.output == "caught\n"
+    assert result.outcome is Outcome.PLANNING_FAILURE
+    assert result.error.startswith("IKError: no IK solution for the TCP at [0.900, 0.000, 0.100]: out of reach")
+    assert result.error.endswith("(program line 5)")
+
+
+def test_a_tool_cannot_be_given_code():
+    result = run_program("where(lambda: 0)", {"where": lambda f: f}, Limits(timeout=5), forwarded=["where"])
+    assert result.outcome is Outcome.RUNTIME_ERROR
+    assert "ToolArgumentError: where() can only be given data" in result.error and "line 1" in result.error
+
+
+def test_forwarded_names_must_be_tools():
+    with pytest.raises(ValueError, match="not: move"):
+        run_program("x = 1", {}, Limits(timeout=5), forwarded=["move"])

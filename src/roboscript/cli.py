@@ -183,13 +183,20 @@ def cmd_run(args: argparse.Namespace) -> int:
     from roboscript.bench.benchmark import trial_specs
     from roboscript.bench.metrics import task_result
     from roboscript.bench.runner import run_isolated
-    from roboscript.bench.tasks import get_task
+    from roboscript.bench.tasks import free_task, get_task
     from roboscript.llm import make_llm
+    from roboscript.sim.world_catalog import load_world
 
-    get_task(args.task)
+    if args.repair < 0:
+        raise ValueError(f"--repair must be 0 or more rounds, got {args.repair}")
+    if args.world:
+        load_world(args.world)  # a bad world name or file fails here, before any LLM is asked
+        label = free_task(args.world, args.instruction).id
+    else:
+        label = get_task(args.task).id
     llm = make_llm(args.llm)  # fails here, clearly, when no LLM is configured
     specs = trial_specs(
-        args.task,
+        label,
         "",
         args.robot,
         args.trials,
@@ -199,18 +206,47 @@ def cmd_run(args: argparse.Namespace) -> int:
         llm=args.llm or llm.name,
         instruction=args.instruction,
         repair_rounds=args.repair,
+        world=args.world,
     )
     records = run_isolated(specs, args.jobs)
-    result = task_result(args.task, args.robot, records)
+    result = task_result(label, args.robot, records)
     if args.json:
         print(json.dumps({**result, "programs": [r.program for r in records]}))
         return 0
     for record in records:
+        for i, attempt in enumerate(record.attempts[:-1]):
+            print(f"trial {record.trial}, attempt {i + 1}: {attempt['outcome']}: {attempt['error']} (repaired)")
         print(f"trial {record.trial}: {record.outcome}" + (f": {record.error}" if record.error else ""))
         if args.show_code and record.program is not None:
             print(record.program)
+    if args.world:
+        print(f"world {args.world} has no task, so nothing was checked; outcome: {records[0].outcome}")
+        return 0 if all(r.ok for r in records) else 1
     _print_result(result)
     return 0
+
+
+def cmd_demo(args: argparse.Namespace) -> int:
+    from roboscript.bench.tasks import get_task
+    from roboscript.demo import DemoPlan, configured_llm, run_demo
+
+    task = get_task(args.task)
+    plan = DemoPlan(task.id, args.robot, args.llm or configured_llm(), Path(args.out))
+    print(f'RoboScript demo: {task.id} on the {args.robot}: "{task.instruction}"')
+    print(f"program: {plan.source}")
+    if plan.llm is not None:
+        from roboscript.llm import make_llm
+
+        make_llm(plan.llm)  # a bad spec fails here, before the world is built
+    record = run_demo(plan, seed=args.seed, timeout=args.timeout, repair_rounds=args.repair)
+    status = "task done" if record.success else "task NOT done"
+    print(
+        f"{status}: {record.outcome}, {record.passed}/{len(record.checks)} checks"
+        + (f"; error: {record.error}" if record.error else "")
+    )
+    print(f"simulated {record.sim_time_s:.1f} s in {record.wall_time_s:.1f} s wall")
+    print(f"report: {plan.out / 'report.md'}; video: {plan.out / (task.id + '.mp4')}")
+    return 0 if record.success else 1
 
 
 def _add_run_options(parser: argparse.ArgumentParser) -> None:
@@ -247,7 +283,9 @@ def build_parser() -> argparse.ArgumentParser:
     run.set_defaults(func=cmd_exec)
     ask = sub.add_parser("run", help="have an LLM write a program for an instruction, run it and evaluate it")
     ask.add_argument("instruction", help="what the robot should do, in words")
-    ask.add_argument("--task", required=True, help="the task whose world (and checks) to use")
+    where = ask.add_mutually_exclusive_group(required=True)
+    where.add_argument("--task", help="the task whose world (and checks) to use")
+    where.add_argument("--world", help="a world name or file to act in; without a task nothing is checked")
     ask.add_argument(
         "--llm",
         default=None,
@@ -255,15 +293,33 @@ def build_parser() -> argparse.ArgumentParser:
         "record:DIR=SPEC | cache:DIR=SPEC; default: $ROBOSCRIPT_LLM or $ROBOSCRIPT_LLM_MODEL",
     )
     ask.add_argument("--show-code", action="store_true", help="print the generated program")
-    ask.add_argument("--repair", type=int, default=0, help="rounds of feeding checker errors back to the LLM")
+    ask.add_argument(
+        "--repair", type=int, default=0, help="rounds of feeding checker, runtime and planning errors back to the LLM"
+    )
     ask.add_argument("--video", default=None, help="record camera_left into this MP4 file")
     _add_run_options(ask)
     ask.set_defaults(func=cmd_run, trials=1)
+    demo = sub.add_parser(
+        "demo", help="one task end to end (the configured LLM, else the reference program) with a video and a report"
+    )
+    demo.add_argument("--task", default="simple_0", help="the task to run (see `roboscript tasks`)")
+    demo.add_argument("--robot", choices=["panda", "ur5e"], default="panda")
+    demo.add_argument("--llm", default=None, help="an LLM spec (see `run --llm`); default: the environment's")
+    demo.add_argument("--repair", type=int, default=0, help="repair rounds when an LLM writes the program")
+    demo.add_argument("--seed", type=int, default=0)
+    demo.add_argument("--timeout", type=float, default=300.0, help="time limit of the program, wall seconds")
+    demo.add_argument("--out", default="out/demo", help="where the video and the report go")
+    demo.set_defaults(func=cmd_demo)
     bench = sub.add_parser("bench", help="run the benchmark (resumes an interrupted run in --out)")
     bench.add_argument(
         "--policy", default="reference", help="where programs come from: reference, or llm:SPEC (see `run --llm`)"
     )
-    bench.add_argument("--repair", type=int, default=0, help="rounds of feeding checker errors back (LLM policies)")
+    bench.add_argument(
+        "--repair",
+        type=int,
+        default=0,
+        help="rounds of feeding checker, runtime and planning errors back (LLM policies); the summary shows both",
+    )
     bench.add_argument("--tasks", default=None, help="comma-separated task ids; default: all")
     bench.add_argument("--out", default=None, help="run directory; default out/bench/<policy>_<robot>")
     _add_run_options(bench)

@@ -55,6 +55,7 @@ def trial_specs(
     llm: str | None = None,
     instruction: str | None = None,
     repair_rounds: int = 0,
+    world: str | None = None,
 ) -> list[TrialSpec]:
     """Trial ``i`` uses seed ``seed + i``; with several trials, videos get a ``_trial<i>`` suffix."""
     if trials < 1:
@@ -78,6 +79,7 @@ def trial_specs(
                 llm=llm,
                 instruction=instruction,
                 repair_rounds=repair_rounds,
+                world=world,
             )
         )
     return specs
@@ -117,7 +119,9 @@ def run_benchmark(
         get_task(t)
     started = time.perf_counter()
     programs = policy_programs(policy, tasks)
-    run = RunDirectory(out, provenance(run_label(policy, repair_rounds), robot, trials, seed, programs, "ground_truth"))
+    run = RunDirectory(
+        out, provenance(run_label(policy, repair_rounds), robot, trials, seed, programs, "ground_truth", repair_rounds)
+    )
     done = run.done()
     specs = [
         s

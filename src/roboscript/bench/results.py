@@ -34,7 +34,15 @@ def program_hash(program: str) -> str:
     return hashlib.sha256(program.encode()).hexdigest()[:16]
 
 
-def provenance(policy: str, robot: str, trials: int, seed: int, programs: dict[str, str], perception: str) -> dict:
+def provenance(
+    policy: str,
+    robot: str,
+    trials: int,
+    seed: int,
+    programs: dict[str, str],
+    perception: str,
+    repair_rounds: int = 0,
+) -> dict:
     """Everything that decides a run's results, to be stored beside them."""
     versions = {"python": platform.python_version()}
     for package in ("roboscript", "mujoco", "ompl", "mink", "numpy"):
@@ -48,6 +56,7 @@ def provenance(policy: str, robot: str, trials: int, seed: int, programs: dict[s
         "trials": trials,
         "seed": seed,
         "perception": perception,
+        "repair_rounds": repair_rounds,
         "programs": {task: program_hash(p) for task, p in sorted(programs.items())},
         "versions": versions,
         "git_commit": _git_commit(),
@@ -129,11 +138,18 @@ class RunDirectory:
 
 
 def summarize(records: list[TrialRecord], tasks: list[str], run: dict) -> dict:
+    """Metrics per task; with repair also ``without_repair``: the same trials judged by their first attempt, which
+    is what a run without repair would have done with the same programs."""
     by_task = {t: [r for r in records if r.task == t] for t in tasks}
-    return {
+    summary = {
         "provenance": run,
         "tasks": {t: {"trials": len(rs), **metrics(rs)} for t, rs in by_task.items()},
     }
+    if run.get("repair_rounds"):
+        summary["without_repair"] = {
+            t: {"trials": len(rs), **metrics([r.first_attempt() for r in rs])} for t, rs in by_task.items()
+        }
+    return summary
 
 
 def markdown_table(summary: dict) -> str:
@@ -142,17 +158,29 @@ def markdown_table(summary: dict) -> str:
     run = summary["provenance"]
     header = f"Policy `{run['policy']}`, robot `{run['robot']}`, perception `{run['perception']}`\n\n"
     lines = ["| Metric | " + " | ".join(tasks) + " |", "|---|" + "---|" * len(tasks)]
+    rounds = run.get("repair_rounds")
     for metric in METRICS:
+        if rounds:
+            cells = [f"{summary['without_repair'][t][metric]:.2f}" for t in tasks]
+            lines.append(f"| {LABELS[metric]}, no repair | " + " | ".join(cells) + " |")
         cells = [f"{summary['tasks'][t][metric]:.2f}" for t in tasks]
-        lines.append(f"| {LABELS[metric]} | " + " | ".join(cells) + " |")
+        label = f"{LABELS[metric]}, repair ≤{rounds}" if rounds else LABELS[metric]
+        lines.append(f"| {label} | " + " | ".join(cells) + " |")
     lines.append("| Trials | " + " | ".join(str(summary["tasks"][t]["trials"]) for t in tasks) + " |")
-    return header + "\n".join(lines) + "\n"
+    note = ""
+    if rounds:
+        note = (
+            "\n'no repair' judges the same trials by their first attempt: the program the LLM wrote first, run once.\n"
+        )
+    return header + "\n".join(lines) + "\n" + note
 
 
 def csv_table(summary: dict) -> str:
     out = io.StringIO()
     writer = csv.writer(out)
-    writer.writerow(["task", "trials", *METRICS])
+    repaired = "without_repair" in summary
+    writer.writerow(["task", "trials", *METRICS, *(f"{m}_no_repair" for m in METRICS if repaired)])
     for task, row in summary["tasks"].items():
-        writer.writerow([task, row["trials"], *(row[m] for m in METRICS)])
+        first = summary["without_repair"][task] if repaired else {}
+        writer.writerow([task, row["trials"], *(row[m] for m in METRICS), *(first[m] for m in METRICS if repaired)])
     return out.getvalue()

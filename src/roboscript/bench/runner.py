@@ -19,6 +19,13 @@ from roboscript.bench.trial import TrialRecord, TrialSpec, run_trial
 from roboscript.codegen.outcomes import Outcome
 
 KILL_GRACE = 60.0  # seconds beyond the program's limit for world building and judging
+LLM_GRACE = 600.0  # seconds an LLM may take to write (or repair) one program, helpers included
+
+
+def wall_budget(spec: TrialSpec) -> float:
+    """How long a trial may take before its process is killed: each attempt's limit and margins."""
+    per_attempt = spec.timeout + KILL_GRACE + (LLM_GRACE if spec.llm is not None else 0.0)
+    return spec.attempts() * per_attempt
 
 
 def _child(spec: TrialSpec, conn) -> None:
@@ -100,7 +107,7 @@ def run_isolated(
                 finish(_failed(spec, f"the trial could not be run: {payload}", started))
         now = time.perf_counter()
         for receiver, (spec, process, started) in list(running.items()):
-            if now - started > spec.timeout + KILL_GRACE:
+            if now - started > wall_budget(spec):
                 process.kill()
                 process.join(5)
                 running.pop(receiver)

@@ -7,12 +7,13 @@ process so that a crash or a hang in a program cannot take the runner down.
 from __future__ import annotations
 
 import time
-from dataclasses import asdict, dataclass, field
+from dataclasses import asdict, dataclass, field, replace
 
-from roboscript.bench.tasks import get_task
+from roboscript.bench.tasks import Task, free_task, get_task
 from roboscript.codegen.checker import check_program
 from roboscript.codegen.outcomes import Outcome
-from roboscript.codegen.sandbox import ExecutionResult, Limits, execute
+from roboscript.codegen.program_process import run_program
+from roboscript.codegen.sandbox import ExecutionResult, Limits
 
 MAX_OUTPUT = 4000  # characters of a program's printed output kept in its record
 
@@ -36,7 +37,12 @@ class TrialSpec:
     memory_limit: int = 2 * 1024**3
     llm: str | None = None
     instruction: str | None = None  # asked of the LLM instead of the task's own instruction
-    repair_rounds: int = 0  # rounds of feeding the checker's findings back to the LLM
+    repair_rounds: int = 0  # rounds of feeding errors (checker, runtime, planning) back to the LLM
+    world: str | None = None  # a world name or file to run in without a task (no checks); ``task`` is then a label
+
+    def attempts(self) -> int:
+        """How many times the program may run: once, and once more after each repair round."""
+        return 1 + (self.repair_rounds if self.llm is not None else 0)
 
 
 @dataclass
@@ -58,6 +64,15 @@ class TrialRecord:
     program: str | None = None  # the generated program (LLM policies)
     repairs: int = 0  # repair rounds used
     llm_exchanges: list[dict] = field(default_factory=list)  # every prompt and raw response behind it
+    attempts: list[dict] = field(default_factory=list)  # with repair: every run, first (unrepaired) to last
+
+    def first_attempt(self) -> TrialRecord:
+        """The trial as it would have ended without repair: its first attempt (itself when there was one)."""
+        if len(self.attempts) < 2:
+            return self
+        first = self.attempts[0]
+        fields = ("ok", "error", "checks", "sim_time_s", "outcome", "program")
+        return replace(self, **{k: first[k] for k in fields}, repairs=0, attempts=[])
 
     @property
     def passed(self) -> int:
@@ -72,76 +87,163 @@ class TrialRecord:
 
 
 def run_trial(spec: TrialSpec) -> TrialRecord:
-    """Runs one trial in this process, the program in the sandbox (:mod:`roboscript.codegen.sandbox`)."""
-    from roboscript.api import ToolAPI
-    from roboscript.backends.mujoco_backend import MujocoBackend
+    """Runs one trial in this process, the program in the sandbox (:mod:`roboscript.codegen.sandbox`).
 
+    With an LLM and ``repair_rounds``, a program that the checker rejects, or that stops on an error or a planning
+    failure, goes back to the LLM with the error, and the repaired program runs again in a freshly built world (the
+    same seed, so the same world). Each run is an attempt in the record; the video shows the last.
+    """
     started = time.perf_counter()
-    task = get_task(spec.task)
-    backend = MujocoBackend(task.world, robot=spec.robot, seed=spec.seed, randomize=True)
-    recorder = None
-    try:
-        checks = task.build_checks(backend.ground_truth)
-        tools = ToolAPI.for_simulation(backend, seed=spec.seed)
-        if spec.video:
-            from roboscript.bench.video import VideoRecorder
+    task = free_task(spec.world, spec.instruction) if spec.world else get_task(spec.task)
+    attempts: list[dict] = []
+    author: _Author | None = None
+    while True:
+        with _TrialWorld(spec, task) as world:
+            if spec.llm is not None and author is None:
+                author = _Author(spec.llm, task.query(world.ground_truth, spec.instruction))
+            program = spec.program if author is None else author.program
+            if program is None:  # the LLM could not be asked
+                result = author.failure
+            else:
+                result = check_and_execute(program, world.namespace, Limits(spec.timeout, spec.memory_limit))
+            attempt = world.judge(result)
+        attempt["program"] = program if spec.llm is not None else None
+        attempts.append(attempt)
+        if author is None or author.program is None or len(attempts) >= spec.attempts():
+            break
+        if Outcome(attempt["outcome"]) not in REPAIRABLE or not author.repair(result):
+            break
+    last = attempts[-1]
+    return TrialRecord(
+        task=spec.task,
+        robot=spec.robot,
+        trial=spec.trial,
+        seed=spec.seed,
+        ok=last["ok"],
+        error=last["error"],
+        checks=last["checks"],
+        sim_time_s=last["sim_time_s"],
+        wall_time_s=round(time.perf_counter() - started, 3),
+        output=last["output"],
+        outcome=last["outcome"],
+        program=last["program"],
+        llm_exchanges=author.generation.exchanges if author and author.generation else [],
+        repairs=len(attempts) - 1,
+        attempts=[{k: v for k, v in a.items() if k != "output"} for a in attempts] if len(attempts) > 1 else [],
+    )
 
-            recorder = VideoRecorder(backend, spec.video, camera=spec.video_camera)
-        sim_start = backend.time()
-        program, exchanges, repairs = spec.program, [], 0
-        if spec.llm is not None:
-            query = task.query(backend.ground_truth, spec.instruction)
-            program, exchanges, repairs, result = _generate(spec.llm, query, spec.repair_rounds)
-        if program is not None:
-            result = check_and_execute(program, tools.namespace(), Limits(spec.timeout, spec.memory_limit))
-        backend.wait(1.0)  # let what was let go come to rest before judging
-        results = [c.evaluate(backend.ground_truth).to_dict() for c in checks]
+
+# What a repair round may answer: the checker's findings, errors while running, planning failures, time-outs.
+REPAIRABLE = frozenset(
+    {
+        Outcome.SYNTAX,
+        Outcome.UNKNOWN_FUNCTION,
+        Outcome.BAD_ARGUMENTS,
+        Outcome.FORBIDDEN_CONSTRUCT,
+        Outcome.RUNTIME_ERROR,
+        Outcome.PLANNING_FAILURE,
+        Outcome.TIMEOUT,
+    }
+)
+
+
+class _TrialWorld:
+    """A task's world built for one attempt: the backend, the tools, the checks, the video."""
+
+    def __init__(self, spec: TrialSpec, task: Task):
+        self.spec, self.task = spec, task
+
+    def __enter__(self) -> _TrialWorld:
+        from roboscript.api import ToolAPI
+        from roboscript.backends.mujoco_backend import MujocoBackend
+
+        spec = self.spec
+        self.backend = MujocoBackend(self.task.world, robot=spec.robot, seed=spec.seed, randomize=True)
+        self.recorder = None
+        try:
+            self.ground_truth = self.backend.ground_truth
+            self.checks = self.task.build_checks(self.ground_truth)
+            self.namespace = ToolAPI.for_simulation(self.backend, seed=spec.seed).namespace()
+            if spec.video:
+                from roboscript.bench.video import VideoRecorder
+
+                self.recorder = VideoRecorder(self.backend, spec.video, camera=spec.video_camera)
+        except BaseException:
+            self.backend.close()
+            raise
+        self.sim_start = self.backend.time()
+        return self
+
+    def judge(self, result: ExecutionResult) -> dict:
+        """The attempt's outcome once what was let go has come to rest."""
+        self.backend.wait(1.0)
+        checks = [c.evaluate(self.ground_truth).to_dict() for c in self.checks]
         outcome = result.outcome
-        if outcome is Outcome.OK and not all(r["passed"] for r in results):
+        if outcome is Outcome.OK and not all(c["passed"] for c in checks):
             outcome = Outcome.CHECKS_FAILED
-        return TrialRecord(
-            task=spec.task,
-            robot=spec.robot,
-            trial=spec.trial,
-            seed=spec.seed,
-            ok=result.error is None,
-            error=result.error,
-            checks=results,
-            sim_time_s=round(backend.time() - sim_start, 3),
-            wall_time_s=round(time.perf_counter() - started, 3),
-            output=result.output[:MAX_OUTPUT],
-            outcome=outcome.value,
-            program=program if spec.llm is not None else None,
-            llm_exchanges=exchanges,
-            repairs=repairs,
-        )
-    finally:
-        if recorder is not None:
-            recorder.close()
-        backend.close()
+        return {
+            "outcome": outcome.value,
+            "ok": result.error is None,
+            "error": result.error,
+            "checks": checks,
+            "sim_time_s": round(self.backend.time() - self.sim_start, 3),
+            "output": result.output[:MAX_OUTPUT],
+        }
+
+    def __exit__(self, *exc) -> None:
+        if self.recorder is not None:
+            self.recorder.close()
+        self.backend.close()
+
+
+class _Author:
+    """The LLM side of a trial: writes the program for the query, and repairs it from an attempt's error."""
+
+    def __init__(self, llm_spec: str, query: str):
+        from roboscript.codegen.agent import CodeAgent
+        from roboscript.llm import LLMError, make_llm
+
+        self.query, self.generation, self.failure = query, None, None
+        try:
+            self.agent = CodeAgent(make_llm(llm_spec))
+            self.generation = self.agent.write_program(query)
+        except LLMError as exc:
+            self.failure = ExecutionResult(Outcome.LLM_ERROR, f"LLMError: {exc}", "")
+
+    @property
+    def program(self) -> str | None:
+        return self.generation.program if self.generation else None
+
+    def repair(self, result: ExecutionResult) -> bool:
+        """Asks for a repaired program; False when the LLM could not be asked (the last attempt then stands)."""
+        from roboscript.llm import LLMError
+
+        try:
+            self.agent.repair(self.query, self.generation, error_report(self.generation.program, result))
+        except LLMError:
+            return False
+        return True
+
+
+def error_report(program: str, result: ExecutionResult) -> list[str]:
+    """What the LLM is told about a failed attempt: every checker finding, or the error and the output before it."""
+    findings = check_program(program)
+    if findings:
+        return [f"{f.outcome.value}: {f.message} (line {f.line})" for f in findings]
+    lines = [f"{result.outcome.value}: {result.error}"]
+    printed = result.output.strip().splitlines()[-10:]
+    if printed:
+        lines.append("the program printed, last lines:\n" + "\n".join(printed))
+    lines.append("the world was reset to how it was before the program ran")
+    return lines
 
 
 def check_and_execute(program: str, namespace: dict, limits: Limits) -> ExecutionResult:
-    """The static checker first; only a program it passes runs."""
+    """The static checker first; only a program it passes runs, in a process of its own, its tool calls run here."""
+    from roboscript.api import ToolAPI
+
     findings = check_program(program)
     if findings:
         error = "; ".join(f"{f.message} (program line {f.line})" for f in findings[:5])
         return ExecutionResult(findings[0].outcome, error, "")
-    return execute(program, namespace, limits)
-
-
-def _generate(
-    llm_spec: str, query: str, repair_rounds: int
-) -> tuple[str | None, list[dict], int, ExecutionResult | None]:
-    """The program an LLM writes for ``query`` (repaired against the checker for up to ``repair_rounds``), the
-    exchanges behind it, the repair rounds used, and the result if there is no program."""
-    from roboscript.codegen.agent import CodeAgent
-    from roboscript.llm import LLMError, make_llm
-
-    try:
-        agent = CodeAgent(make_llm(llm_spec))
-        generation = agent.write_program(query)
-        agent.repair_static(query, generation, repair_rounds)
-    except LLMError as exc:
-        return None, [], 0, ExecutionResult(Outcome.LLM_ERROR, f"LLMError: {exc}", "")
-    return generation.program, generation.exchanges, generation.repairs, None
+    return run_program(program, namespace, limits, forwarded=ToolAPI.TOOL_NAMES)

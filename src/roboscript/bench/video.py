@@ -34,7 +34,7 @@ class VideoRecorder:
             codec="libx264",
             quality=6,
             macro_block_size=8,
-            output_params=["-pix_fmt", "yuv420p"],
+            pix_fmt_out="yuv420p",  # what players expect
         )
         self._writer.send(None)
         self._next = backend.time()

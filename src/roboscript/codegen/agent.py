@@ -7,7 +7,7 @@ import ast
 import contextlib
 from dataclasses import dataclass, field
 
-from roboscript.codegen.checker import check_program, undefined_calls
+from roboscript.codegen.checker import undefined_calls
 from roboscript.codegen.extract import extract_code
 from roboscript.codegen.prompt import Example, function_messages, program_messages, repair_messages
 from roboscript.llm.base import LLM, LLMRequest
@@ -37,19 +37,15 @@ class CodeAgent:
         self.define_missing(generation)
         return generation
 
-    def repair_static(self, query: str, generation: Generation, rounds: int) -> None:
-        """Feeds the static checker's findings back for at most ``rounds`` rounds, until the program passes."""
-        for _ in range(rounds):
-            findings = check_program(generation.program)
-            if not findings:
-                return
-            errors = [f"{f.outcome.value}: {f.message} (line {f.line})" for f in findings]
-            messages = repair_messages(query, generation.program, errors, self.examples)
-            text = self._ask(messages)
-            generation.exchanges.append({"purpose": "repair", "messages": messages, "response": text})
-            generation.program = extract_code(text)
-            generation.repairs += 1
-            self.define_missing(generation)
+    def repair(self, query: str, generation: Generation, errors: list[str]) -> None:
+        """One repair round: the program and what went wrong with it go back to the LLM; its answer (with any
+        helpers it calls) replaces the program."""
+        messages = repair_messages(query, generation.program, errors, self.examples)
+        text = self._ask(messages)
+        generation.exchanges.append({"purpose": "repair", "messages": messages, "response": text})
+        generation.program = extract_code(text)
+        generation.repairs += 1
+        self.define_missing(generation)
 
     def define_missing(self, generation: Generation) -> None:
         """Adds definitions for called-but-undefined names, breadth first, up to ``max_depth`` levels."""

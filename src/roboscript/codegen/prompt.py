@@ -35,7 +35,7 @@ def tool_reference() -> str:
         method = getattr(ToolAPI, name)
         doc = inspect.getdoc(method) or ""
         indented = "\n".join("    " + line if line else "" for line in doc.splitlines())
-        blocks.append(f"def {method.usage}:\n    \"\"\"\n{indented}\n    \"\"\"")
+        blocks.append(f'def {method.usage}:\n    """\n{indented}\n    """')
     pose = "Pose(): a pose with .position.x/.y/.z and .orientation.x/.y/.z/.w (a unit quaternion), all assignable."
     return "\n\n".join(blocks) + "\n\n# " + pose
 

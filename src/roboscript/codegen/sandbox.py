@@ -1,7 +1,7 @@
 """Runs a generated program: the guard first, then ``exec`` with restricted builtins and resource limits.
 
-Meant to run in a child process of the runner (see :mod:`roboscript.bench.runner`): the limits set here (address
-space, CPU time) apply to the whole process, and whatever the program does to it, the runner survives.
+Meant to run in a process of the program's own (see :mod:`roboscript.codegen.program_process`): the limits set
+here (address space, CPU time) apply to the whole process.
 """
 
 from __future__ import annotations
@@ -78,10 +78,13 @@ class ProgramTimeout(BaseException):  # not an Exception, so that a program's ``
 
 @dataclass(frozen=True)
 class Limits:
-    """``timeout``: wall seconds; ``memory``: bytes of address space the program may add to the process."""
+    """``timeout``: wall seconds; ``memory``: bytes of address space the program may add to the process;
+    ``cpu_margin``: CPU seconds beyond ``timeout`` after which the process is killed (a C-level loop that the
+    timer cannot interrupt)."""
 
     timeout: float = 300.0
     memory: int = 2 * 1024**3
+    cpu_margin: float = 30.0
 
 
 @dataclass(frozen=True)
@@ -169,7 +172,7 @@ class _limited:
         if used is not None:
             resource.setrlimit(resource.RLIMIT_AS, (used + self.limits.memory, self._as[1]))
         cpu_now = resource.getrusage(resource.RUSAGE_SELF).ru_utime + resource.getrusage(resource.RUSAGE_SELF).ru_stime
-        cpu_limit = int(cpu_now + self.limits.timeout + 30)
+        cpu_limit = int(cpu_now + self.limits.timeout + self.limits.cpu_margin) + 1
         if self._cpu[1] == resource.RLIM_INFINITY or cpu_limit < self._cpu[1]:
             resource.setrlimit(resource.RLIMIT_CPU, (cpu_limit, self._cpu[1]))
         return self

@@ -1,7 +1,8 @@
 """A local GGUF model run in-process by llama.cpp (the ``llama`` extra: ``pip install roboscript[llama]``).
 
 Models with a chat template in their GGUF are asked through it; base models without one get the conversation as
-plain text ending in an open assistant turn.
+plain text ending in an assistant turn that has opened a Python code block, and stop where they close it (the
+few-shot answers are single code blocks, so this is the answer's shape; without it a base model runs on).
 """
 
 from __future__ import annotations
@@ -45,15 +46,20 @@ class LlamaCppLLM(LLM):
                 budget = self.n_ctx - len(self._llama.tokenize(prompt.encode())) - 1
                 if budget < 16:
                     raise LLMError(f"the prompt does not fit the model's {self.n_ctx}-token context")
+                options["stop"] = [*request.stop, *PLAIN_STOPS]
                 out = self._llama.create_completion(prompt, max_tokens=min(request.max_tokens, budget), **options)
-                text = out["choices"][0]["text"]
+                text = CODE_OPENING + out["choices"][0]["text"].rstrip("\n") + "\n```"
         except (ValueError, RuntimeError) as exc:
             raise LLMError(f"llama.cpp failed: {exc}") from exc
         return LLMResponse(text, self.name, dict(out.get("usage") or {}))
 
 
+CODE_OPENING = "```python\n"
+PLAIN_STOPS = ("\n```", "\n### ")  # the code block closed, or a new turn begun
+
+
 def plain_prompt(messages) -> str:
-    """The conversation as text for a model without a chat template, ending where the assistant is to write."""
+    """The conversation as text for a model without a chat template, ending inside the assistant's code block."""
     labels = {"system": "Instructions", "user": "User", "assistant": "Assistant"}
     turns = [f"### {labels[m['role']]}\n{m['content'].strip()}\n" for m in messages]
-    return "\n".join(turns) + "\n### Assistant\n"
+    return "\n".join(turns) + "\n### Assistant\n" + CODE_OPENING

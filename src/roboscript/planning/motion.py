@@ -83,8 +83,13 @@ class MotionPlanner:
         return solve_ik(self.kinematics, pose, reference, self.scene, attempts, max_attempts)
 
     def straight_approach(
-        self, target: Transform, distance: float, reference: np.ndarray | None = None, attempts: int = 16,
-        max_attempts: int = 150, branches: int = 4,
+        self,
+        target: Transform,
+        distance: float,
+        reference: np.ndarray | None = None,
+        attempts: int = 16,
+        max_attempts: int = 150,
+        branches: int = 4,
     ) -> tuple[np.ndarray, np.ndarray | None]:
         """A configuration at ``target`` and a straight approach to it from ``distance`` back along the TCP's z.
 

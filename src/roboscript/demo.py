@@ -1,0 +1,116 @@
+"""The demo: one benchmark task end to end, with a video and a report a person can read.
+
+The program comes from the LLM the environment configures (``ROBOSCRIPT_LLM``, or ``ROBOSCRIPT_LLM_MODEL`` with
+``ROBOSCRIPT_LLM_BASE_URL``); where none is configured, from the task's reference program, and the report says so.
+"""
+
+from __future__ import annotations
+
+import json
+import os
+from dataclasses import dataclass
+from pathlib import Path
+
+from roboscript.bench.runner import run_isolated
+from roboscript.bench.tasks import get_task
+from roboscript.bench.trial import TrialRecord, TrialSpec
+from roboscript.llm.openai_compatible import MODEL_ENV
+
+DEMO_TASK = "simple_0"
+
+
+def configured_llm() -> str | None:
+    """The LLM spec the environment configures, or None."""
+    if os.environ.get("ROBOSCRIPT_LLM"):
+        return os.environ["ROBOSCRIPT_LLM"]
+    if os.environ.get(MODEL_ENV):
+        return f"openai:{os.environ[MODEL_ENV]}"
+    return None
+
+
+@dataclass(frozen=True)
+class DemoPlan:
+    """What the demo will run: ``llm`` is None when the reference program runs."""
+
+    task: str
+    robot: str
+    llm: str | None
+    out: Path
+
+    @property
+    def source(self) -> str:
+        if self.llm is not None:
+            return f"written by the LLM {self.llm}"
+        return (
+            f"the reference program of {self.task}: no LLM is configured "
+            f"(set ROBOSCRIPT_LLM, e.g. openai:MODEL@URL or llama:PATH.gguf, or {MODEL_ENV})"
+        )
+
+
+def run_demo(plan: DemoPlan, seed: int = 0, timeout: float = 300.0, repair_rounds: int = 0) -> TrialRecord:
+    """Runs the task once in a child process; writes ``<task>.mp4``, ``report.md`` and ``report.json`` in
+    ``plan.out``."""
+    task = get_task(plan.task)
+    plan.out.mkdir(parents=True, exist_ok=True)
+    video = plan.out / f"{plan.task}.mp4"
+    program = "" if plan.llm is not None else task.reference_program()
+    spec = TrialSpec(
+        plan.task,
+        plan.robot,
+        0,
+        seed,
+        program,
+        timeout,
+        str(video),
+        llm=plan.llm,
+        repair_rounds=repair_rounds if plan.llm is not None else 0,
+    )
+    (record,) = run_isolated([spec])
+    if plan.llm is None:
+        record.program = program
+    report = {
+        "task": plan.task,
+        "instruction": task.instruction,
+        "robot": plan.robot,
+        "seed": seed,
+        "program_source": plan.source,
+        "video": str(video) if video.is_file() else None,
+        "record": record.to_dict(),
+    }
+    (plan.out / "report.json").write_text(json.dumps(report, indent=2))
+    (plan.out / "report.md").write_text(report_markdown(report, record))
+    return record
+
+
+def report_markdown(report: dict, record: TrialRecord) -> str:
+    """The demo's report: the instruction, where the program came from, what happened, and the program."""
+    lines = [
+        f"# RoboScript demo: {report['task']} on the {report['robot']}",
+        "",
+        f'Instruction: "{report["instruction"]}"',
+        "",
+        f"Program: {report['program_source']}.",
+        "",
+        f"Outcome: **{record.outcome}**, {record.passed}/{len(record.checks)} checks passed"
+        f" ({'task done' if record.success else 'task not done'}).",
+    ]
+    if record.error:
+        lines += ["", f"Error: `{record.error}`"]
+    factor = record.sim_time_s / record.wall_time_s if record.wall_time_s else 0.0
+    lines += [
+        "",
+        f"Simulated {record.sim_time_s:.1f} s in {record.wall_time_s:.1f} s of wall time "
+        f"({factor:.1f}x real time, world building and video included).",
+        "",
+        "| Check | Passed | Detail |",
+        "|---|---|---|",
+    ]
+    for check in record.checks:
+        lines.append(f"| {check['check']} | {'yes' if check['passed'] else 'no'} | {check.get('detail', '')} |")
+    if report["video"]:
+        lines += ["", f"Video: `{report['video']}`"]
+    if record.program:
+        lines += ["", "## Program", "", "```python", record.program.rstrip(), "```"]
+    if record.output.strip():
+        lines += ["", "## Printed output", "", "```", record.output.rstrip(), "```"]
+    return "\n".join(lines) + "\n"
