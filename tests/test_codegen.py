@@ -203,6 +203,7 @@ def test_a_runtime_error_is_fed_back_and_the_repair_runs_in_a_fresh_world_both_r
     assert summary["without_repair"]["simple_0"]["grammar_correctness"] == 0.0
     table = (tmp_path / "summary.md").read_text()
     assert "| Whole task success, no repair | 0.00 |" in table and "| Whole task success, repair ≤2 | 1.00 |" in table
+    assert "| Outcomes, no repair | runtime_error 1 |" in table and "| Outcomes, repair ≤2 | ok 1 |" in table
 
 
 def test_run_in_a_world_without_a_task_acts_and_checks_nothing():
@@ -217,3 +218,16 @@ def test_run_in_a_world_without_a_task_acts_and_checks_nothing():
     assert both.returncode == 2 and "not allowed with argument" in both.stderr
     unknown = _cli("run", "x", "--world", "world_99", "--llm", llm)
     assert unknown.returncode == 2 and "world_99" in unknown.stderr
+
+
+def test_an_llm_that_fails_during_repair_leaves_the_attempt_standing_with_the_reason():
+    failing = "```python\nsteps = {}\nnext_step = steps['place']\n```"
+    with ScriptedChatServer([{"text": failing}, {"status": 500}]) as server:
+        llm = f"openai:scripted@{server.url}"
+        spec = TrialSpec("simple_0", "panda", 0, 0, program="", timeout=60, llm=llm, repair_rounds=2)
+        (record,) = run_isolated([spec])
+    assert record.outcome == Outcome.RUNTIME_ERROR.value and "KeyError" in record.error
+    (attempt,) = record.attempts
+    assert attempt["repair_error"].startswith("LLMError:") and "500" in attempt["repair_error"]
+    with pytest.raises(ValueError, match="repair rounds must be 0 or more"):
+        TrialSpec("simple_0", "panda", 0, 0, program="", llm=llm, repair_rounds=-1)

@@ -187,8 +187,6 @@ def cmd_run(args: argparse.Namespace) -> int:
     from roboscript.llm import make_llm
     from roboscript.sim.world_catalog import load_world
 
-    if args.repair < 0:
-        raise ValueError(f"--repair must be 0 or more rounds, got {args.repair}")
     if args.world:
         load_world(args.world)  # a bad world name or file fails here, before any LLM is asked
         label = free_task(args.world, args.instruction).id
@@ -249,6 +247,17 @@ def cmd_demo(args: argparse.Namespace) -> int:
     return 0 if record.success else 1
 
 
+def _rounds(text: str) -> int:
+    """``--repair``: a whole number of rounds, 0 or more."""
+    try:
+        value = int(text)
+    except ValueError:
+        raise argparse.ArgumentTypeError(f"expected a whole number of rounds, got {text!r}") from None
+    if value < 0:
+        raise argparse.ArgumentTypeError(f"repair rounds must be 0 or more, got {value}")
+    return value
+
+
 def _add_run_options(parser: argparse.ArgumentParser) -> None:
     from roboscript.bench.runner import default_jobs
 
@@ -294,7 +303,10 @@ def build_parser() -> argparse.ArgumentParser:
     )
     ask.add_argument("--show-code", action="store_true", help="print the generated program")
     ask.add_argument(
-        "--repair", type=int, default=0, help="rounds of feeding checker, runtime and planning errors back to the LLM"
+        "--repair",
+        type=_rounds,
+        default=0,
+        help="rounds of feeding checker, runtime and planning errors back to the LLM",
     )
     ask.add_argument("--video", default=None, help="record camera_left into this MP4 file")
     _add_run_options(ask)
@@ -305,7 +317,7 @@ def build_parser() -> argparse.ArgumentParser:
     demo.add_argument("--task", default="simple_0", help="the task to run (see `roboscript tasks`)")
     demo.add_argument("--robot", choices=["panda", "ur5e"], default="panda")
     demo.add_argument("--llm", default=None, help="an LLM spec (see `run --llm`); default: the environment's")
-    demo.add_argument("--repair", type=int, default=0, help="repair rounds when an LLM writes the program")
+    demo.add_argument("--repair", type=_rounds, default=0, help="repair rounds when an LLM writes the program")
     demo.add_argument("--seed", type=int, default=0)
     demo.add_argument("--timeout", type=float, default=300.0, help="time limit of the program, wall seconds")
     demo.add_argument("--out", default="out/demo", help="where the video and the report go")
@@ -316,7 +328,7 @@ def build_parser() -> argparse.ArgumentParser:
     )
     bench.add_argument(
         "--repair",
-        type=int,
+        type=_rounds,
         default=0,
         help="rounds of feeding checker, runtime and planning errors back (LLM policies); the summary shows both",
     )

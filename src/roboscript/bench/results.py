@@ -15,9 +15,11 @@ import json
 import platform
 import subprocess
 import time
+from collections import Counter
 from collections.abc import Iterable
 from importlib import metadata
 from pathlib import Path
+from typing import ClassVar
 
 from roboscript.bench.metrics import METRICS, metrics
 from roboscript.bench.trial import TrialRecord
@@ -78,8 +80,14 @@ def _git_commit() -> str | None:
 class RunDirectory:
     """The files of one benchmark run; reopening it resumes the run."""
 
-    # Settings that must match for a run to be resumed.
-    FIXED = ("policy", "robot", "seed", "perception")
+    # Settings that must match for a run to be resumed (a missing one counts as its default: runs from before it).
+    FIXED: ClassVar[dict[str, object]] = {
+        "policy": None,
+        "robot": None,
+        "seed": None,
+        "perception": None,
+        "repair_rounds": 0,
+    }
 
     def __init__(self, path: str | Path, run: dict):
         self.path = Path(path)
@@ -88,10 +96,11 @@ class RunDirectory:
         info = self.path / "run.json"
         if info.exists():
             previous = json.loads(info.read_text())
-            for key in self.FIXED:
-                if previous.get(key) != run.get(key):
+            for key, default in self.FIXED.items():
+                if previous.get(key, default) != run.get(key, default):
                     raise ValueError(
-                        f"{self.path} holds a run with {key}={previous.get(key)!r}, not {run.get(key)!r}; "
+                        f"{self.path} holds a run with {key}={previous.get(key, default)!r}, not "
+                        f"{run.get(key, default)!r}; "
                         "resume it with the same settings or choose another --out"
                     )
             for task, digest in run["programs"].items():
@@ -143,13 +152,23 @@ def summarize(records: list[TrialRecord], tasks: list[str], run: dict) -> dict:
     by_task = {t: [r for r in records if r.task == t] for t in tasks}
     summary = {
         "provenance": run,
-        "tasks": {t: {"trials": len(rs), **metrics(rs)} for t, rs in by_task.items()},
+        "tasks": {t: {"trials": len(rs), **metrics(rs), "outcomes": _outcomes(rs)} for t, rs in by_task.items()},
     }
     if run.get("repair_rounds"):
-        summary["without_repair"] = {
-            t: {"trials": len(rs), **metrics([r.first_attempt() for r in rs])} for t, rs in by_task.items()
-        }
+        summary["without_repair"] = {}
+        for t, rs in by_task.items():
+            first = [r.first_attempt() for r in rs]
+            summary["without_repair"][t] = {"trials": len(rs), **metrics(first), "outcomes": _outcomes(first)}
     return summary
+
+
+def _outcomes(records: list[TrialRecord]) -> dict[str, int]:
+    """How many trials ended in each outcome category, most frequent first."""
+    return dict(Counter(r.outcome for r in records).most_common())
+
+
+def _outcome_cell(outcomes: dict[str, int]) -> str:
+    return ", ".join(f"{name} {count}" for name, count in outcomes.items()) or "-"
 
 
 def markdown_table(summary: dict) -> str:
@@ -167,6 +186,11 @@ def markdown_table(summary: dict) -> str:
         label = f"{LABELS[metric]}, repair ≤{rounds}" if rounds else LABELS[metric]
         lines.append(f"| {label} | " + " | ".join(cells) + " |")
     lines.append("| Trials | " + " | ".join(str(summary["tasks"][t]["trials"]) for t in tasks) + " |")
+    if rounds:
+        cells = [_outcome_cell(summary["without_repair"][t]["outcomes"]) for t in tasks]
+        lines.append("| Outcomes, no repair | " + " | ".join(cells) + " |")
+    label = f"Outcomes, repair ≤{rounds}" if rounds else "Outcomes"
+    lines.append(f"| {label} | " + " | ".join(_outcome_cell(summary["tasks"][t]["outcomes"]) for t in tasks) + " |")
     note = ""
     if rounds:
         note = (

@@ -6,8 +6,10 @@ process so that a crash or a hang in a program cannot take the runner down.
 
 from __future__ import annotations
 
+import os
 import time
 from dataclasses import asdict, dataclass, field, replace
+from pathlib import Path
 
 from roboscript.bench.tasks import Task, free_task, get_task
 from roboscript.codegen.checker import check_program
@@ -39,6 +41,12 @@ class TrialSpec:
     instruction: str | None = None  # asked of the LLM instead of the task's own instruction
     repair_rounds: int = 0  # rounds of feeding errors (checker, runtime, planning) back to the LLM
     world: str | None = None  # a world name or file to run in without a task (no checks); ``task`` is then a label
+
+    def __post_init__(self) -> None:
+        if self.repair_rounds < 0:
+            raise ValueError(f"repair rounds must be 0 or more, got {self.repair_rounds}")
+        if self.timeout <= 0:
+            raise ValueError(f"the time limit must be positive, got {self.timeout} s")
 
     def attempts(self) -> int:
         """How many times the program may run: once, and once more after each repair round."""
@@ -91,7 +99,8 @@ def run_trial(spec: TrialSpec) -> TrialRecord:
 
     With an LLM and ``repair_rounds``, a program that the checker rejects, or that stops on an error or a planning
     failure, goes back to the LLM with the error, and the repaired program runs again in a freshly built world (the
-    same seed, so the same world). Each run is an attempt in the record; the video shows the last.
+    same seed, so the same world). Each run is an attempt in the record; the video shows the last one that ended
+    (each attempt records into a file of its own, which replaces the video when the attempt is over).
     """
     started = time.perf_counter()
     task = free_task(spec.world, spec.instruction) if spec.world else get_task(spec.task)
@@ -111,7 +120,10 @@ def run_trial(spec: TrialSpec) -> TrialRecord:
         attempts.append(attempt)
         if author is None or author.program is None or len(attempts) >= spec.attempts():
             break
-        if Outcome(attempt["outcome"]) not in REPAIRABLE or not author.repair(result):
+        if Outcome(attempt["outcome"]) not in REPAIRABLE:
+            break
+        if not author.repair(result):
+            attempt["repair_error"] = author.repair_error  # the LLM could not be asked; this attempt stands
             break
     last = attempts[-1]
     return TrialRecord(
@@ -129,7 +141,9 @@ def run_trial(spec: TrialSpec) -> TrialRecord:
         program=last["program"],
         llm_exchanges=author.generation.exchanges if author and author.generation else [],
         repairs=len(attempts) - 1,
-        attempts=[{k: v for k, v in a.items() if k != "output"} for a in attempts] if len(attempts) > 1 else [],
+        attempts=[{k: v for k, v in a.items() if k != "output"} for a in attempts]
+        if len(attempts) > 1 or "repair_error" in last
+        else [],
     )
 
 
@@ -167,7 +181,7 @@ class _TrialWorld:
             if spec.video:
                 from roboscript.bench.video import VideoRecorder
 
-                self.recorder = VideoRecorder(self.backend, spec.video, camera=spec.video_camera)
+                self.recorder = VideoRecorder(self.backend, _partial(spec.video), camera=spec.video_camera)
         except BaseException:
             self.backend.close()
             raise
@@ -193,7 +207,14 @@ class _TrialWorld:
     def __exit__(self, *exc) -> None:
         if self.recorder is not None:
             self.recorder.close()
+            os.replace(self.recorder.path, self.spec.video)
         self.backend.close()
+
+
+def _partial(video: str) -> str:
+    """Where an attempt's video is written until the attempt is over."""
+    path = Path(video)
+    return str(path.with_name(f"{path.stem}.partial{path.suffix}"))
 
 
 class _Author:
@@ -203,7 +224,7 @@ class _Author:
         from roboscript.codegen.agent import CodeAgent
         from roboscript.llm import LLMError, make_llm
 
-        self.query, self.generation, self.failure = query, None, None
+        self.query, self.generation, self.failure, self.repair_error = query, None, None, None
         try:
             self.agent = CodeAgent(make_llm(llm_spec))
             self.generation = self.agent.write_program(query)
@@ -220,7 +241,8 @@ class _Author:
 
         try:
             self.agent.repair(self.query, self.generation, error_report(self.generation.program, result))
-        except LLMError:
+        except LLMError as exc:
+            self.repair_error = f"LLMError: {exc}"
             return False
         return True
 

@@ -48,14 +48,16 @@ class LlamaCppLLM(LLM):
                     raise LLMError(f"the prompt does not fit the model's {self.n_ctx}-token context")
                 options["stop"] = [*request.stop, *PLAIN_STOPS]
                 out = self._llama.create_completion(prompt, max_tokens=min(request.max_tokens, budget), **options)
-                text = CODE_OPENING + out["choices"][0]["text"].rstrip("\n") + "\n```"
+                code = out["choices"][0]["text"].partition("```")[0]  # a fence closed at once ends the code there
+                text = CODE_OPENING + code.rstrip("\n") + "\n```"
         except (ValueError, RuntimeError) as exc:
             raise LLMError(f"llama.cpp failed: {exc}") from exc
         return LLMResponse(text, self.name, dict(out.get("usage") or {}))
 
 
 CODE_OPENING = "```python\n"
-PLAIN_STOPS = ("\n```", "\n### ")  # the code block closed, or a new turn begun
+# The code block closed, or a new turn begun (the turn headers of plain_prompt, not any "### " comment).
+PLAIN_STOPS = ("\n```", "\n### User", "\n### Instructions", "\n### Assistant")
 
 
 def plain_prompt(messages) -> str:

@@ -1,0 +1,59 @@
+"""One look at the scene: ground every view in 2D, fuse the views in 3D, match boxes across views, cut out 3D
+instances (DESIGN.md §6). :func:`observe` is the whole chain; each step is its own module."""
+
+from __future__ import annotations
+
+from collections.abc import Sequence
+from dataclasses import dataclass
+
+import numpy as np
+
+from roboscript.perception.fusion import FusedScene, FusionSettings, fuse
+from roboscript.perception.grounding import Detection2D, Grounder
+from roboscript.perception.instances import Instance3D, build_instances, support_height
+from roboscript.perception.matching import MatchedObject, Projection, match_views, membership, project
+from roboscript.sim.cameras import CameraFrame
+
+
+@dataclass
+class Observation:
+    """Everything one look produced, step by step (kept for inspection and evaluation)."""
+
+    frames: list[CameraFrame]  # the frames fused and grounded (broken ones left out)
+    scene: FusedScene
+    detections: list[list[Detection2D]]
+    projections: list[Projection]
+    memberships: list[list[np.ndarray]]
+    matched: list[MatchedObject]
+    instances: list[Instance3D]
+    support: float  # the table's height
+
+    @property
+    def skipped(self) -> dict[str, str]:
+        """Frames left out, with the reason."""
+        return self.scene.skipped
+
+
+def observe(
+    frames: Sequence[CameraFrame],
+    grounder: Grounder,
+    phrases: Sequence[str],
+    settings: FusionSettings | None = None,
+    robot_masks: Sequence[np.ndarray] | None = None,
+) -> Observation:
+    """Runs the chain on ``frames`` for the things ``phrases`` name. ``robot_masks``: per frame, the pixels of the
+    robot itself (from its model), left out of the fused surface."""
+    if not frames:
+        raise ValueError("observe needs at least one camera frame")
+    scene = fuse(frames, settings, robot_masks)
+    if not scene.used:
+        problems = "; ".join(f"{name}: {why}" for name, why in scene.skipped.items())
+        raise ValueError(f"no camera gave a usable depth image ({problems})")
+    usable = [f for f in frames if f.name in scene.used]
+    detections = [grounder.detect(f, phrases) for f in usable]
+    projections = [project(scene.points, f) for f in usable]
+    memberships = [[membership(p, d.box) for d in ds] for p, ds in zip(projections, detections, strict=True)]
+    matched = match_views(memberships, detections)
+    support = support_height(scene.points)
+    instances = build_instances(matched, scene.points, scene.normals, memberships, projections, support)
+    return Observation(usable, scene, detections, projections, memberships, matched, instances, support)

@@ -1,0 +1,117 @@
+"""The perception chain on the packaged worlds: ground-truth 2D boxes, TSDF fusion, cross-view matching, 3D
+instances; and its handling of bad input."""
+
+from __future__ import annotations
+
+import dataclasses
+
+import numpy as np
+import pytest
+
+from roboscript.backends.mujoco_backend import MujocoBackend
+from roboscript.perception.evaluation import score_instances, tuple_is_correct
+from roboscript.perception.fusion import FusionSettings, depth_problem, fuse
+from roboscript.perception.grounding import (
+    Detection2D,
+    GroundingNoise,
+    SegmentationGrounder,
+    entity_phrases,
+    normalize_phrase,
+)
+from roboscript.perception.matching import match_views
+from roboscript.perception.observation import observe
+from roboscript.sim.world_catalog import world_names
+
+
+def _look(world: str):
+    backend = MujocoBackend(world, robot="panda")
+    frames = [backend.capture(c) for c in backend.camera_names()]
+    return backend, frames
+
+
+def _observe(backend, frames, noise=None):
+    gt = backend.ground_truth
+    objects = [e for e in gt.world.entities if e.kind == "object"]
+    robot = gt.world.entity("robot").index
+    grounder = SegmentationGrounder(gt.world.entities, noise=noise)
+    return observe(frames, grounder, [e.name for e in objects], robot_masks=[f.segmentation == robot for f in frames])
+
+
+@pytest.mark.parametrize("world", world_names())
+def test_ground_truth_boxes_give_3d_boxes_close_to_the_truth(world):
+    backend, frames = _look(world)
+    try:
+        seen = _observe(backend, frames)
+        scores = score_instances(seen.instances, seen.detections, backend.ground_truth)
+    finally:
+        backend.close()
+    objects = [e.name for e in backend.ground_truth.world.entities if e.kind == "object"]
+    visible = {s.name for s in scores}
+    assert len(visible) >= len(objects) - 1, f"found {sorted(visible)} of {objects}"  # one may hide in a drawer
+    assert np.median([s.iou for s in scores]) >= 0.6, scores
+    assert np.median([s.center_error for s in scores]) <= 0.01, scores
+    correct = [tuple_is_correct(m, seen.detections) for m in seen.matched]
+    assert np.mean(correct) >= 0.95
+
+
+def test_a_broken_depth_image_is_reported_and_skipped():
+    backend, frames = _look("world_2_pick_and_place")
+    backend.close()
+    broken = dataclasses.replace(frames[1], depth=np.full_like(frames[1].depth, np.nan))
+    scene = fuse([frames[0], broken, frames[2]], FusionSettings())
+    assert scene.used == [frames[0].name, frames[2].name]
+    assert "NaN" in scene.skipped[broken.name]
+    assert len(scene.points) > 1000
+    settings = FusionSettings()
+    assert "in range" in depth_problem(dataclasses.replace(frames[0], depth=np.zeros_like(frames[0].depth)), settings)
+    assert "negative" in depth_problem(dataclasses.replace(frames[0], depth=-frames[0].depth), settings)
+    assert "colour image" in depth_problem(dataclasses.replace(frames[0], depth=frames[0].depth[:10]), settings)
+    with pytest.raises(ValueError, match="no camera gave a usable depth image"):
+        observe([broken], SegmentationGrounder([]), ["apple"])
+
+
+def test_phrases_name_objects_by_name_category_or_colour():
+    backend = MujocoBackend("world_6_mug_to_same_color_plate", robot="panda", settle=0)
+    mug = backend.ground_truth.world.entity("white_mug")
+    backend.close()
+    assert normalize_phrase(" White_Mug ") == "white mug"
+    assert {"white mug", "mug"} <= entity_phrases(mug)
+
+
+def test_noise_drops_confuses_and_moves_boxes_as_asked():
+    backend, frames = _look("world_2_pick_and_place")
+    entities = backend.ground_truth.world.entities
+    backend.close()
+    phrases = ["apple", "lemon", "plum"]
+    clean = SegmentationGrounder(entities).detect(frames[0], phrases)
+    assert sorted(d.label for d in clean) == sorted(phrases)
+    assert SegmentationGrounder(entities, noise=GroundingNoise(dropout=1.0)).detect(frames[0], phrases) == []
+    confused = SegmentationGrounder(entities, noise=GroundingNoise(confusion=1.0)).detect(frames[0], phrases)
+    names = {e.index: e.name for e in entities}
+    assert all(d.label != names[d.source] for d in confused)
+    moved = SegmentationGrounder(entities, noise=GroundingNoise(box_jitter=0.3), seed=1).detect(frames[0], phrases)
+    assert [d.box for d in moved] != [d.box for d in clean]
+    with pytest.raises(ValueError, match="dropout must be between 0 and 1"):
+        GroundingNoise(dropout=1.5)
+
+
+def test_matching_is_greedy_one_box_per_view_with_majority_labels():
+    def vec(*on):
+        v = np.zeros(10, dtype=bool)
+        v[list(on)] = True
+        return v
+
+    # Views 0 and 1 see an apple (points 0-3) and a lemon (5-8); view 2 sees the apple only, labelled wrongly.
+    memberships = [[vec(0, 1, 2, 3), vec(5, 6, 7, 8)], [vec(5, 6, 7), vec(0, 1, 2)], [vec(0, 1, 2, 3)]]
+    box = (0, 0, 1, 1)
+    detections = [
+        [Detection2D("apple", box), Detection2D("lemon", box)],
+        [Detection2D("lemon", box), Detection2D("apple", box)],
+        [Detection2D("lemon", box)],
+    ]
+    matched = sorted(match_views(memberships, detections), key=lambda m: m.boxes)
+    assert [m.boxes for m in matched] == [(0, 1, 0), (1, 0, -1)]
+    assert [m.label for m in matched] == ["apple", "lemon"]
+    assert matched[0].votes == {"apple": 2, "lemon": 1}
+    lonely = match_views([[vec(0)], [vec(9)]], [[Detection2D("a", box)], [Detection2D("b", box)]])
+    assert sorted(m.boxes for m in lonely) == [(-1, 0), (0, -1)]
