@@ -140,7 +140,16 @@ def cmd_exec(args: argparse.Namespace) -> int:
     if not path.is_file():
         raise ValueError(f"no program file {str(path)!r}")
     program = path.read_text()
-    specs = trial_specs(args.task, program, args.robot, args.trials, args.seed, args.timeout, args.video)
+    specs = trial_specs(
+        args.task,
+        program,
+        args.robot,
+        args.trials,
+        args.seed,
+        args.timeout,
+        args.video,
+        perception=args.perception,
+    )
     records = run_isolated(specs, args.jobs, None if args.json else progress_printer(len(specs)))
     result = task_result(args.task, args.robot, records)
     if args.json:
@@ -158,7 +167,7 @@ def cmd_bench(args: argparse.Namespace) -> int:
 
     if args.repair and not args.policy.startswith("llm:"):
         raise ValueError("--repair needs an LLM policy (--policy llm:SPEC)")
-    out = args.out or default_out(run_label(args.policy, args.repair), args.robot)
+    out = args.out or default_out(run_label(args.policy, args.repair), args.robot, args.perception)
     result = run_benchmark(
         args.policy,
         tasks,
@@ -170,6 +179,7 @@ def cmd_bench(args: argparse.Namespace) -> int:
         args.timeout,
         progress=not args.json,
         repair_rounds=args.repair,
+        perception=args.perception,
     )
     if args.json:
         print(json.dumps({"tasks": result["tasks"], "wall_time_s": result["wall_time_s"]}))
@@ -205,6 +215,7 @@ def cmd_run(args: argparse.Namespace) -> int:
         instruction=args.instruction,
         repair_rounds=args.repair,
         world=args.world,
+        perception=args.perception,
     )
     records = run_isolated(specs, args.jobs)
     result = task_result(label, args.robot, records)
@@ -236,7 +247,7 @@ def cmd_demo(args: argparse.Namespace) -> int:
         from roboscript.llm import make_llm
 
         make_llm(plan.llm)  # a bad spec fails here, before the world is built
-    record = run_demo(plan, seed=args.seed, timeout=args.timeout, repair_rounds=args.repair)
+    record = run_demo(plan, seed=args.seed, timeout=args.timeout, repair_rounds=args.repair, perception=args.perception)
     status = "task done" if record.success else "task NOT done"
     print(
         f"{status}: {record.outcome}, {record.passed}/{len(record.checks)} checks"
@@ -245,6 +256,13 @@ def cmd_demo(args: argparse.Namespace) -> int:
     print(f"simulated {record.sim_time_s:.1f} s in {record.wall_time_s:.1f} s wall")
     print(f"report: {plan.out / 'report.md'}; video: {plan.out / (task.id + '.mp4')}")
     return 0 if record.success else 1
+
+
+def cmd_report(args: argparse.Namespace) -> int:
+    from roboscript.bench.compare import compare_runs
+
+    print(compare_runs([Path(d) for d in args.runs], args.metric))
+    return 0
 
 
 def _rounds(text: str) -> int:
@@ -267,6 +285,14 @@ def _add_run_options(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("--timeout", type=float, default=300.0, help="time limit of one program, wall seconds")
     parser.add_argument("--jobs", type=int, default=default_jobs(), help="trials run at once (one process each)")
     parser.add_argument("--json", action="store_true", help="print one JSON object")
+    _add_perception_option(parser)
+
+
+def _add_perception_option(parser: argparse.ArgumentParser) -> None:
+    from roboscript.perception.modes import PERCEPTION_MODES
+
+    modes = "; ".join(f"{m}: {what}" for m, what in PERCEPTION_MODES.items())
+    parser.add_argument("--perception", choices=list(PERCEPTION_MODES), default="gt", help=modes)
 
 
 def build_parser() -> argparse.ArgumentParser:
@@ -311,6 +337,14 @@ def build_parser() -> argparse.ArgumentParser:
     ask.add_argument("--video", default=None, help="record camera_left into this MP4 file")
     _add_run_options(ask)
     ask.set_defaults(func=cmd_run, trials=1)
+    report = sub.add_parser("report", help="benchmark runs side by side (policies, perception modes, robots)")
+    report.add_argument("runs", nargs="+", help="run directories written by `roboscript bench`")
+    report.add_argument(
+        "--metric",
+        default="all",
+        choices=["all", "grammar_correctness", "semantic_correctness", "finished_steps_ratio", "whole_task_success"],
+    )
+    report.set_defaults(func=cmd_report)
     demo = sub.add_parser(
         "demo", help="one task end to end (the configured LLM, else the reference program) with a video and a report"
     )
@@ -321,6 +355,7 @@ def build_parser() -> argparse.ArgumentParser:
     demo.add_argument("--seed", type=int, default=0)
     demo.add_argument("--timeout", type=float, default=300.0, help="time limit of the program, wall seconds")
     demo.add_argument("--out", default="out/demo", help="where the video and the report go")
+    _add_perception_option(demo)
     demo.set_defaults(func=cmd_demo)
     bench = sub.add_parser("bench", help="run the benchmark (resumes an interrupted run in --out)")
     bench.add_argument(

@@ -47,7 +47,9 @@ class DemoPlan:
         )
 
 
-def run_demo(plan: DemoPlan, seed: int = 0, timeout: float = 300.0, repair_rounds: int = 0) -> TrialRecord:
+def run_demo(
+    plan: DemoPlan, seed: int = 0, timeout: float = 300.0, repair_rounds: int = 0, perception: str = "gt"
+) -> TrialRecord:
     """Runs the task once in a child process; writes ``<task>.mp4``, ``report.md`` and ``report.json`` in
     ``plan.out``."""
     task = get_task(plan.task)
@@ -65,6 +67,7 @@ def run_demo(plan: DemoPlan, seed: int = 0, timeout: float = 300.0, repair_round
         str(video),
         llm=plan.llm,
         repair_rounds=repair_rounds if plan.llm is not None else 0,
+        perception=perception,
     )
     (record,) = run_isolated([spec])
     if plan.llm is None:
@@ -74,6 +77,7 @@ def run_demo(plan: DemoPlan, seed: int = 0, timeout: float = 300.0, repair_round
         "instruction": task.instruction,
         "robot": plan.robot,
         "seed": seed,
+        "perception": perception,
         "program_source": plan.source,
         "video": str(video) if video.is_file() else None,
         "record": record.to_dict(),

@@ -39,9 +39,11 @@ def run_label(policy: str, repair_rounds: int = 0) -> str:
     return f"{policy}+repair{repair_rounds}" if repair_rounds else policy
 
 
-def default_out(policy: str, robot: str) -> str:
-    """``out/bench/<policy>_<robot>``, the policy made safe for a directory name."""
-    return f"out/bench/{re.sub(r'[^A-Za-z0-9._-]+', '_', policy)}_{robot}"
+def default_out(policy: str, robot: str, perception: str = "gt") -> str:
+    """``out/bench/<policy>_<robot>`` (``<policy>_<perception>_<robot>`` when perception is not ground truth),
+    the policy made safe for a directory name."""
+    mode = "" if perception == "gt" else f"_{perception}"
+    return f"out/bench/{re.sub(r'[^A-Za-z0-9._-]+', '_', policy)}{mode}_{robot}"
 
 
 def trial_specs(
@@ -56,6 +58,7 @@ def trial_specs(
     instruction: str | None = None,
     repair_rounds: int = 0,
     world: str | None = None,
+    perception: str = "gt",
 ) -> list[TrialSpec]:
     """Trial ``i`` uses seed ``seed + i``; with several trials, videos get a ``_trial<i>`` suffix."""
     if trials < 1:
@@ -80,6 +83,7 @@ def trial_specs(
                 instruction=instruction,
                 repair_rounds=repair_rounds,
                 world=world,
+                perception=perception,
             )
         )
     return specs
@@ -112,6 +116,7 @@ def run_benchmark(
     timeout: float = 300.0,
     progress: bool = True,
     repair_rounds: int = 0,
+    perception: str = "gt",
 ) -> dict:
     """Runs (or resumes) the benchmark in ``out``; returns ``{"tasks": {id: exec object}, "wall_time_s"}``."""
     tasks = list(tasks or TASKS)
@@ -120,14 +125,22 @@ def run_benchmark(
     started = time.perf_counter()
     programs = policy_programs(policy, tasks)
     run = RunDirectory(
-        out, provenance(run_label(policy, repair_rounds), robot, trials, seed, programs, "ground_truth", repair_rounds)
+        out, provenance(run_label(policy, repair_rounds), robot, trials, seed, programs, perception, repair_rounds)
     )
     done = run.done()
     specs = [
         s
         for t in tasks
         for s in trial_specs(
-            t, programs[t], robot, trials, seed, timeout, llm=policy_llm(policy), repair_rounds=repair_rounds
+            t,
+            programs[t],
+            robot,
+            trials,
+            seed,
+            timeout,
+            llm=policy_llm(policy),
+            repair_rounds=repair_rounds,
+            perception=perception,
         )
         if (s.task, s.robot, s.trial) not in done
     ]

@@ -96,6 +96,8 @@ class RunDirectory:
         info = self.path / "run.json"
         if info.exists():
             previous = json.loads(info.read_text())
+            if previous.get("perception") == "ground_truth":  # the name before there were perception modes
+                previous["perception"] = "gt"
             for key, default in self.FIXED.items():
                 if previous.get(key, default) != run.get(key, default):
                     raise ValueError(

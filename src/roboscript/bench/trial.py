@@ -41,12 +41,16 @@ class TrialSpec:
     instruction: str | None = None  # asked of the LLM instead of the task's own instruction
     repair_rounds: int = 0  # rounds of feeding errors (checker, runtime, planning) back to the LLM
     world: str | None = None  # a world name or file to run in without a task (no checks); ``task`` is then a label
+    perception: str = "gt"  # where the tools' knowledge comes from (roboscript.perception.modes)
 
     def __post_init__(self) -> None:
         if self.repair_rounds < 0:
             raise ValueError(f"repair rounds must be 0 or more, got {self.repair_rounds}")
         if self.timeout <= 0:
             raise ValueError(f"the time limit must be positive, got {self.timeout} s")
+        from roboscript.perception.modes import check_mode
+
+        check_mode(self.perception)
 
     def attempts(self) -> int:
         """How many times the program may run: once, and once more after each repair round."""
@@ -177,7 +181,8 @@ class _TrialWorld:
         try:
             self.ground_truth = self.backend.ground_truth
             self.checks = self.task.build_checks(self.ground_truth)
-            self.namespace = ToolAPI.for_simulation(self.backend, seed=spec.seed).namespace()
+            tools = ToolAPI.for_simulation(self.backend, seed=spec.seed, perception=spec.perception)
+            self.namespace = tools.namespace()
             if spec.video:
                 from roboscript.bench.video import VideoRecorder
 

@@ -122,3 +122,7 @@ class Perception(ABC):
     @abstractmethod
     def objects(self) -> list[str]:
         """Movable objects (not furniture or its parts)."""
+
+    def moved(self, name: str, motion: Transform) -> None:  # noqa: B027 (a hook: nothing to do by default)
+        """The robot carried ``name`` and let it go: it moved by ``motion`` (world frame). Perception that keeps
+        what it saw moves it along; perception that reads the world's state has nothing to do."""

@@ -54,6 +54,10 @@ def support_height(points: np.ndarray, bin_size: float = 0.002) -> float:
     return float(edges[peak + 1])
 
 
+FOOTPRINT_HEIGHT = 0.015  # metres above the support below which the fused surface blurs into it
+CLUSTER_GAP = 0.0125  # metres between points of one object (2.5 voxels of 5 mm)
+
+
 def fit_box(points: np.ndarray, trim: float = 1.0) -> Box3D:
     """The axis-aligned box of ``points``, ``trim`` percent cut from each side per axis against stray points."""
     if len(points) == 0:
@@ -63,6 +67,40 @@ def fit_box(points: np.ndarray, trim: float = 1.0) -> Box3D:
     return Box3D(lower, upper)
 
 
+def footprint_points(points: np.ndarray, support: float) -> np.ndarray:
+    """The points that show an object's outline from above: those clear of where the fused surface blurs into
+    the table (if the object is tall enough to have such)."""
+    upper = points[points[:, 2] > support + FOOTPRINT_HEIGHT]
+    return upper if len(upper) >= 0.3 * len(points) and len(upper) >= 10 else points
+
+
+def object_box(points: np.ndarray, support: float) -> Box3D:
+    """An object's box: its outline from :func:`footprint_points`, its height from all its points, down to the
+    table when it stands on it (the fused surface never shows the face it stands on)."""
+    outline = fit_box(footprint_points(points, support), trim=0.5)
+    heights = fit_box(points, trim=0.5)
+    bottom = support if heights.lower[2] - support < FOOTPRINT_HEIGHT else heights.lower[2]
+    return Box3D(
+        np.array([outline.lower[0], outline.lower[1], bottom]),
+        np.array([outline.upper[0], outline.upper[1], heights.upper[2]]),
+    )
+
+
+def largest_cluster(points: np.ndarray, gap: float = CLUSTER_GAP) -> np.ndarray:
+    """Indices of the largest group of points connected by steps of at most ``gap`` (stray bits of the
+    neighbours' surfaces fall away)."""
+    import open3d as o3d
+
+    if len(points) < 10:
+        return np.arange(len(points))
+    cloud = o3d.geometry.PointCloud(o3d.utility.Vector3dVector(points))
+    labels = np.asarray(cloud.cluster_dbscan(eps=gap, min_points=3))
+    if labels.max() < 0:
+        return np.arange(len(points))
+    biggest = np.bincount(labels[labels >= 0]).argmax()
+    return np.flatnonzero(labels == biggest)
+
+
 def build_instances(
     matched: Sequence[MatchedObject],
     points: np.ndarray,
@@ -70,15 +108,104 @@ def build_instances(
     memberships: Sequence[Sequence[np.ndarray]],
     projections: Sequence[Projection],
     support: float,
+    box_areas: Sequence[Sequence[float]] | None = None,
     min_points: int = 30,
 ) -> list[Instance3D]:
     """An :class:`Instance3D` per matched object with at least ``min_points`` points above ``support`` (the
-    table's height)."""
-    out = []
+    table's height).
+
+    A point claimed by several objects goes to the one with the smallest boxes (``box_areas[v][i]``: pixels of
+    box ``i`` in view ``v``): a small thing in front of a large one is seen inside the large one's boxes too.
+    """
     above = points[:, 2] > support + SUPPORT_MARGIN
-    for obj in matched:
-        idx = np.flatnonzero(instance_mask(obj, memberships, projections) & above)
+    masks = [instance_mask(obj, memberships, projections) & above for obj in matched]
+    if box_areas is not None and len(masks) > 1:
+        sizes = np.array([_mean_area(obj, box_areas) for obj in matched])
+        claimed = np.stack(masks)
+        owner = np.where(claimed, sizes[:, None], np.inf).argmin(axis=0)
+        masks = [m & (owner == k) for k, m in enumerate(masks)]
+    kept: list[tuple[MatchedObject, np.ndarray]] = []
+    for obj, mask in zip(matched, masks, strict=True):
+        idx = np.flatnonzero(mask)
+        if len(idx) >= min_points:
+            kept.append((obj, idx))
+    kept = _merge_fragments(kept, points)
+    out = []
+    for obj, idx in kept:
+        idx = idx[largest_cluster(points[idx])]
         if len(idx) < min_points:
             continue
-        out.append(Instance3D(obj.label, points[idx], normals[idx], fit_box(points[idx]), obj.boxes))
+        out.append(Instance3D(obj.label, points[idx], normals[idx], object_box(points[idx], support), obj.boxes))
     return out
+
+
+def _merge_fragments(
+    kept: list[tuple[MatchedObject, np.ndarray]], points: np.ndarray
+) -> list[tuple[MatchedObject, np.ndarray]]:
+    """Folds an object seen in fewer views into one of the same label whose box it overlaps: a view where the
+    object was partly hidden (by the arm) gives a box that matches no other view's, and a second, partial
+    copy of the object."""
+    order = sorted(range(len(kept)), key=lambda k: -sum(b != -1 for b in kept[k][0].boxes))
+    merged: list[tuple[MatchedObject, np.ndarray]] = []
+    for k in order:
+        obj, idx = kept[k]
+        box = fit_box(points[idx])
+        host = next(
+            (
+                m
+                for m, (other, other_idx) in enumerate(merged)
+                if other.label == obj.label and _box_overlap(box, fit_box(points[other_idx])) > 0.25
+            ),
+            None,
+        )
+        if host is None:
+            merged.append((obj, idx))
+        else:
+            other, other_idx = merged[host]
+            merged[host] = (other, np.union1d(other_idx, idx))
+    return merged
+
+
+def _box_overlap(a: Box3D, b: Box3D) -> float:
+    """The share of the smaller box's volume inside the other."""
+    overlap = np.clip(np.minimum(a.upper, b.upper) - np.maximum(a.lower, b.lower), 0.0, None)
+    smaller = min(float(np.prod(a.size)), float(np.prod(b.size)))
+    return float(np.prod(overlap)) / smaller if smaller > 0 else 0.0
+
+
+def _mean_area(obj: MatchedObject, box_areas: Sequence[Sequence[float]]) -> float:
+    areas = [box_areas[v][i] for v, i in enumerate(obj.boxes) if i != -1]
+    return float(np.mean(areas)) if areas else float("inf")
+
+
+def refine_with_depth(
+    instance: Instance3D,
+    detections: Sequence[Sequence],
+    point_maps: Sequence[np.ndarray],
+    normal_maps: Sequence[np.ndarray],
+    support: float,
+    stride: int = 2,
+    margin: float = 0.005,
+) -> Instance3D:
+    """The instance's points taken again from the depth images themselves: in each view where it was found, the
+    pixels of its 2D box whose points lie in its fused box (``margin`` larger) and above the table.
+
+    The fused surface finds and separates objects; its points stand a few millimetres proud of flat sides seen
+    at a slant (the signed-distance blur), which is the difference between a box that fits a gripper and one
+    that does not. The depth pixels have no such blur."""
+    lower, upper = instance.box.lower - margin, instance.box.upper + margin
+    lower = np.array([lower[0], lower[1], max(lower[2], support + SUPPORT_MARGIN)])
+    points, normals = [], []
+    for view, box_index in enumerate(instance.boxes):
+        if box_index == -1:
+            continue
+        x0, y0, x1, y1 = detections[view][box_index].box
+        world = point_maps[view][y0:y1:stride, x0:x1:stride].reshape(-1, 3)
+        normal = normal_maps[view][y0:y1:stride, x0:x1:stride].reshape(-1, 3)
+        keep = np.all((world > lower) & (world < upper), axis=1) & np.isfinite(normal).all(axis=1)
+        points.append(world[keep])
+        normals.append(normal[keep])
+    if not points or sum(len(p) for p in points) < 30:
+        return instance
+    points, normals = np.concatenate(points), np.concatenate(normals)
+    return Instance3D(instance.label, points, normals, object_box(points, support), instance.boxes)

@@ -10,8 +10,9 @@ import numpy as np
 
 from roboscript.perception.fusion import FusedScene, FusionSettings, fuse
 from roboscript.perception.grounding import Detection2D, Grounder
-from roboscript.perception.instances import Instance3D, build_instances, support_height
+from roboscript.perception.instances import Instance3D, build_instances, refine_with_depth, support_height
 from roboscript.perception.matching import MatchedObject, Projection, match_views, membership, project
+from roboscript.perception.points import normal_map, point_map
 from roboscript.sim.cameras import CameraFrame
 
 
@@ -55,5 +56,9 @@ def observe(
     memberships = [[membership(p, d.box) for d in ds] for p, ds in zip(projections, detections, strict=True)]
     matched = match_views(memberships, detections)
     support = support_height(scene.points)
-    instances = build_instances(matched, scene.points, scene.normals, memberships, projections, support)
+    areas = [[(d.box[2] - d.box[0]) * (d.box[3] - d.box[1]) for d in ds] for ds in detections]
+    instances = build_instances(matched, scene.points, scene.normals, memberships, projections, support, areas)
+    maps = [point_map(f) for f in usable]
+    normals = [normal_map(m, f.extrinsics.position) for m, f in zip(maps, usable, strict=True)]
+    instances = [refine_with_depth(i, detections, maps, normals, support) for i in instances]
     return Observation(usable, scene, detections, projections, memberships, matched, instances, support)

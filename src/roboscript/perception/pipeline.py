@@ -1,0 +1,353 @@
+"""Perception from the cameras: ``detect_objects`` looks with every camera, grounds the phrases asked for in 2D,
+fuses the views, matches boxes across views and cuts out 3D instances; the tools' questions about objects are then
+answered from what was seen (:mod:`roboscript.perception.observation`).
+
+Objects are named after the phrase that found them: ``apple`` when one was found, ``box_0``, ``box_1``... when
+several were. Without a list, ``detect_objects()`` looks for the vocabulary the task names (the ``objects = [...]``
+of its query). When the robot has let something go, the store is stale: the next question looks again, for
+everything looked for so far, and each object seen again keeps its name (matched to where the store expected it:
+what the robot carried moved with the gripper). Something not seen again (hidden in a drawer) keeps its last
+estimate.
+
+Furniture and its parts (``cabinet.drawer_1``), their joints and the planning scene still come from ground truth
+in this version: articulation estimated from points is the next step.
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Sequence
+from dataclasses import dataclass, field
+
+import numpy as np
+
+from roboscript.backends.base import Backend
+from roboscript.geometry import Box3D, Transform, quat_from_yaw
+from roboscript.perception.base import ArticulationJoint, ObjectPoints, Perception, Receptacle, UnknownObjectError
+from roboscript.perception.fusion import FusionSettings
+from roboscript.perception.grounding import Grounder, normalize_phrase
+from roboscript.perception.instances import Instance3D, fit_box, footprint_points, object_box
+from roboscript.perception.observation import Observation, observe
+from roboscript.sim.objects import ObjectType, object_types
+
+SETTLE_TIME = 0.5  # seconds given to what was let go to come to rest before looking again
+SHALLOW = 0.035  # metres: containers lower than this (plates, saucers) hold things on top, not inside
+RIM = 0.02  # metres of a shallow container's edge that things should not rest on
+PLANE_RADIUS = 0.03  # metres around the queried point whose points a face's plane is fitted to
+
+
+class ObjectNotFoundError(UnknownObjectError):
+    """A name the program asked about was looked for and not seen; the message says what was seen."""
+
+    def __init__(self, name: str, known: list[str], seen: str):
+        self.name, self.known = name, list(known)
+        message = f"{name!r} was not found: {seen}. Known objects: {', '.join(self.known) or 'none'}"
+        KeyError.__init__(self, message)
+
+
+@dataclass
+class SeenObject:
+    """An object in the store: what one look found, moved along when the robot carried it."""
+
+    name: str
+    phrase: str
+    points: np.ndarray
+    normals: np.ndarray
+    views: int  # in how many views it was found
+    support: float  # height of the table it was seen above
+    kind: ObjectType | None = None  # the library's idea of the phrase, for containers' interiors
+    box: Box3D = field(init=False)
+
+    def __post_init__(self) -> None:
+        self.box = object_box(self.points, self.support)
+
+    @property
+    def outline(self) -> np.ndarray:
+        """The points that show its outline from above."""
+        return footprint_points(self.points, self.support)
+
+
+class PipelinePerception(Perception):
+    """Perception from ``backend``'s cameras through ``grounder``; ``parts`` answers for furniture and its parts.
+
+    ``vocabulary``: the phrases ``detect_objects()`` looks for when given none; ``robot_index``: the segmentation
+    index of the robot, whose own pixels are left out of the fused surface (a real rig renders its model for this).
+    """
+
+    def __init__(
+        self,
+        backend: Backend,
+        grounder: Grounder,
+        vocabulary: Sequence[str],
+        parts: Perception,
+        robot_index: int | None = None,
+        settings: FusionSettings | None = None,
+    ):
+        self.backend, self.grounder, self.parts = backend, grounder, parts
+        self.vocabulary = [normalize_phrase(v) for v in vocabulary]
+        self.robot_index, self.settings = robot_index, settings
+        self.store: dict[str, SeenObject] = {}
+        self.not_found: dict[str, str] = {}
+        self.scene: np.ndarray = np.zeros((0, 3))
+        self.last: Observation | None = None
+        self.looks = 0  # how many times the cameras were used
+        self._asked: list[str] = []  # every phrase looked for, in order
+        self._looked = False
+        self._stale = False
+
+    # --- looking ----------------------------------------------------------------------------------------------
+
+    def detect(self, categories: list[str] | None = None) -> None:
+        phrases = [normalize_phrase(c) for c in categories] if categories else list(self.vocabulary)
+        if not phrases:
+            raise ValueError("nothing to look for: pass category_list, e.g. ['apple', 'bowl']")
+        self._look(phrases)
+
+    def _look(self, phrases: list[str]) -> None:
+        frames = [self.backend.capture(c) for c in self.backend.camera_names()]
+        masks = None
+        if self.robot_index is not None:
+            masks = [None if f.segmentation is None else f.segmentation == self.robot_index for f in frames]
+        seen = observe(frames, self.grounder, phrases, self.settings, masks)
+        self.last, self._looked, self._stale = seen, True, False
+        self.looks += 1
+        self.scene = seen.scene.points
+        self._asked += [p for p in phrases if p not in self._asked]
+        for phrase in phrases:
+            found = [i for i in seen.instances if i.label == phrase]
+            self.not_found.pop(phrase, None)
+            if not found:
+                if not any(o.phrase == phrase for o in self.store.values()):
+                    self.not_found[phrase] = _seen_summary(seen, phrase)
+                continue
+            self._update(phrase, found, seen)
+
+    def _update(self, phrase: str, found: list[Instance3D], seen: Observation) -> None:
+        """Puts what was found for ``phrase`` into the store. Earlier objects of the phrase keep their names, given
+        to the nearest new finds (however far they went: one apple seen again is the apple, wherever it rolled);
+        finds beyond their number get new names."""
+        old = {n: o for n, o in self.store.items() if o.phrase == phrase}
+        found = sorted(found, key=lambda i: (round(float(i.box.center[1]), 3), round(float(i.box.center[0]), 3)))
+        pairs = sorted(
+            (float(np.linalg.norm(i.box.center - o.box.center)), k, n)
+            for k, i in enumerate(found)
+            for n, o in old.items()
+        )
+        names: dict[int, str] = {}
+        for _, k, n in pairs:
+            if k not in names and n not in names.values():
+                names[k] = n
+        base = _name(phrase)
+        if not old and len(found) == 1:
+            names[0] = base
+        taken = set(self.store)
+        counter = 0
+        for k in range(len(found)):
+            if k in names:
+                continue
+            while f"{base}_{counter}" in taken:
+                counter += 1
+            names[k] = f"{base}_{counter}"
+            taken.add(names[k])
+        for k, instance in enumerate(found):
+            self.store[names[k]] = self._seen(names[k], phrase, instance, seen)
+
+    def _seen(self, name: str, phrase: str, instance: Instance3D, seen: Observation) -> SeenObject:
+        views = sum(1 for b in instance.boxes if b != -1)
+        return SeenObject(name, phrase, instance.points, instance.normals, views, seen.support, _library_type(phrase))
+
+    def _ensure_looked(self, fresh: bool = True) -> None:
+        """Looks if nothing was seen yet; with ``fresh``, also if something was let go since the last look (names
+        do not need a fresh look, geometry does: by the time it is asked for the hand has usually moved away)."""
+        if not self._looked:
+            self.detect(None)
+        elif fresh and self._stale:
+            self.backend.wait(SETTLE_TIME)  # what was let go may still be rolling
+            self._look(list(self._asked))
+
+    def moved(self, name: str, motion: Transform) -> None:
+        """``name`` was carried by the robot: its points move by ``motion``; the next question looks again."""
+        obj = self.store.get(name)
+        if obj is None:
+            return
+        obj.points = motion.apply(obj.points)
+        obj.normals = obj.normals @ motion.rotation.T
+        obj.support += float(motion.position[2])  # it stands where it was put, as high up as it was carried
+        obj.box = object_box(obj.points, obj.support)
+        self._stale = True  # what was let go may settle, roll or push others: look again before answering
+
+    # --- the questions ----------------------------------------------------------------------------------------
+
+    def names(self) -> list[str]:
+        self._ensure_looked(fresh=False)
+        return list(self.store) + [n for n in self.parts.names() if _is_furniture_name(n, self.parts)]
+
+    def objects(self) -> list[str]:
+        self._ensure_looked(fresh=False)
+        return list(self.store)
+
+    def require(self, name: object) -> str:
+        if isinstance(name, str) and name not in self.names():
+            phrase = normalize_phrase(name)
+            if phrase in self.not_found:
+                raise ObjectNotFoundError(name, self.names(), self.not_found[phrase])
+        return super().require(name)
+
+    def _object(self, name: str) -> SeenObject | None:
+        self._ensure_looked()
+        if name in self.store:
+            return self.store[name]
+        if name not in self.names():
+            raise UnknownObjectError(name, self.names())
+        return None
+
+    def box(self, name: str) -> Box3D:
+        obj = self._object(name)
+        return obj.box if obj else self.parts.box(name)
+
+    def footprint(self, name: str) -> tuple[np.ndarray, float, np.ndarray]:
+        obj = self._object(name)
+        if obj is None:
+            return self.parts.footprint(name)
+        return footprint_of(obj.outline)
+
+    def pose(self, name: str) -> Transform:
+        obj = self._object(name)
+        if obj is None:
+            return self.parts.pose(name)
+        center, yaw, _ = footprint_of(obj.outline)
+        return Transform(np.array([center[0], center[1], obj.box.lower[2]]), quat_from_yaw(yaw))
+
+    def joints(self, name: str) -> list[ArticulationJoint]:
+        return [] if self._object(name) else self.parts.joints(name)
+
+    def plane_normal(self, name: str, position: np.ndarray) -> np.ndarray:
+        obj = self._object(name)
+        if obj is None:
+            return self.parts.plane_normal(name, position)
+        return plane_normal_at(obj.points, np.asarray(position, dtype=float))
+
+    def points(self, name: str) -> ObjectPoints:
+        obj = self._object(name)
+        if obj is None:
+            return self.parts.points(name)
+        return ObjectPoints(obj.points, obj.normals)
+
+    def scene_points(self) -> np.ndarray:
+        self._ensure_looked()
+        return self.scene
+
+    def receptacle(self, name: str) -> Receptacle | None:
+        obj = self._object(name)
+        if obj is None:
+            return self.parts.receptacle(name)
+        if obj.kind is None or not obj.kind.container or obj.kind.interior is None:
+            return None
+        return interior_of(obj.points, obj.outline, obj.kind, name)
+
+
+def _name(phrase: str) -> str:
+    return phrase.replace(" ", "_")
+
+
+def _is_furniture_name(name: str, parts: Perception) -> bool:
+    return name not in parts.objects()
+
+
+def _library_type(phrase: str) -> ObjectType | None:
+    """The object type a phrase names (``footed bowl``, ``white plate``), or the first of a category it names."""
+    types = object_types()
+    key = _name(phrase)
+    if key in types:
+        return types[key]
+    for kind in types.values():
+        if normalize_phrase(kind.category) == phrase or phrase.endswith(" " + normalize_phrase(kind.category)):
+            return kind
+    return None
+
+
+def _seen_summary(seen: Observation, phrase: str) -> str:
+    views = len(seen.frames)
+    found = {}
+    for detections in seen.detections:
+        for d in detections:
+            found[d.label] = found.get(d.label, 0) + 1
+    asked = f"no view of {views} ({', '.join(f.name for f in seen.frames)}) found {phrase!r}"
+    if seen.skipped:
+        asked += "; skipped: " + ", ".join(f"{n} ({why})" for n, why in seen.skipped.items())
+    if not found:
+        return asked + "; nothing asked for was seen"
+    return asked + "; seen: " + ", ".join(f"{label} in {n} view{'s' * (n > 1)}" for label, n in sorted(found.items()))
+
+
+def footprint_of(points: np.ndarray) -> tuple[np.ndarray, float, np.ndarray]:
+    """``(center_xy, yaw, half_extents_xy)`` of the points seen from above: the turned rectangle of least area
+    around them (stray points trimmed), its longer side along ``yaw`` in [-pi/2, pi/2).
+
+    Principal axes would be cheaper but are pulled off the sides by how unevenly the views sample a surface: on
+    a box a few degrees of error add millimetres to its width, which decide whether a gripper fits round it."""
+    xy = points[:, :2] - points[:, :2].mean(axis=0)
+    coarse = np.radians(np.arange(0.0, 90.0, 2.0))
+    best = min(coarse, key=lambda a: _rectangle(xy, a)[0])
+    fine = best + np.radians(np.arange(-2.0, 2.01, 0.25))
+    angle = min(fine, key=lambda a: _rectangle(xy, a)[0])
+    _, lower, upper = _rectangle(xy, angle)
+    half = (upper - lower) / 2
+    yaw = float(angle)
+    if half[1] > half[0]:  # the longer side along the yaw
+        half = half[::-1]
+        yaw += math.pi / 2
+    yaw = (yaw + math.pi / 2) % math.pi - math.pi / 2
+    axes = np.array([[math.cos(angle), math.sin(angle)], [-math.sin(angle), math.cos(angle)]])
+    center = points[:, :2].mean(axis=0) + ((lower + upper) / 2) @ axes
+    return center, yaw, half
+
+
+def _rectangle(xy: np.ndarray, angle: float) -> tuple[float, np.ndarray, np.ndarray]:
+    """Area and local corners of the trimmed rectangle around ``xy`` along ``angle``."""
+    c, s = math.cos(angle), math.sin(angle)
+    local = xy @ np.array([[c, -s], [s, c]])
+    lower, upper = np.percentile(local, 0.5, axis=0), np.percentile(local, 99.5, axis=0)
+    return float(np.prod(upper - lower)), lower, upper
+
+
+def plane_normal_at(points: np.ndarray, position: np.ndarray, radius: float = PLANE_RADIUS) -> np.ndarray:
+    """Normal of the plane fitted to the points within ``radius`` of ``position``, pointing away from the
+    object's middle; with too few points there, the normal of the box face nearest ``position``."""
+    near = points[np.linalg.norm(points - position, axis=1) < radius]
+    center = points.mean(axis=0)
+    if len(near) >= 10:
+        centered = near - near.mean(axis=0)
+        normal = np.linalg.svd(centered, full_matrices=False)[2][-1]
+        if np.dot(normal, position - center) < 0:
+            normal = -normal
+        return normal / np.linalg.norm(normal)
+    box = fit_box(points)
+    gaps = np.concatenate([position - box.lower, box.upper - position])
+    k = int(np.argmin(np.abs(gaps)))
+    normal = np.zeros(3)
+    normal[k % 3] = -1.0 if k < 3 else 1.0
+    return normal
+
+
+def interior_of(points: np.ndarray, outline: np.ndarray, kind: ObjectType, name: str) -> Receptacle:
+    """The free volume of a seen container, from the lowest point seen near its middle up. Across: a shallow
+    one (a plate) holds what rests on it up to its rim, so its footprint less a rim; a deep one (a bowl, a
+    basket) holds things inside its walls, so its footprint shrunk as the library's type of it is (a bowl's
+    opening is about 60% of its width)."""
+    center, yaw, half = footprint_of(outline)
+    bottom = float(points[:, 2].min())
+    frame = Transform(np.array([center[0], center[1], bottom]), quat_from_yaw(yaw))
+    local = frame.inverse().apply(points)
+    height = float(local[:, 2].max())
+    (lx, ly, lz), (ux, uy, uz) = kind.interior
+    bounds_lower, bounds_upper = (np.asarray(b, dtype=float) for b in kind.bounds)
+    if height < SHALLOW:
+        inner_half = np.maximum(half - RIM, half * 0.5)
+    else:
+        type_half = (bounds_upper[:2] - bounds_lower[:2]) / 2
+        inner_half = half * float(np.min(np.array([(ux - lx) / 2, (uy - ly) / 2]) / type_half))
+    middle = local[np.all(np.abs(local[:, :2]) < inner_half * 0.6, axis=1)]
+    floor = float(middle[:, 2].min()) if len(middle) >= 5 else lz
+    top = max(height + (uz - bounds_upper[2]), floor + 0.05)
+    return Receptacle(name, frame, np.array([-inner_half[0], -inner_half[1], floor]), np.array([*inner_half, top]))

@@ -1,0 +1,125 @@
+"""Perception in the loop: the object store that detect_objects fills from the cameras (mode gt-2d), its names,
+its answers, what it says when something is not there, and the runs it takes part in."""
+
+from __future__ import annotations
+
+import json
+import math
+
+import numpy as np
+import pytest
+
+from roboscript.api import ToolAPI
+from roboscript.backends.mujoco_backend import MujocoBackend
+from roboscript.bench.compare import compare_runs
+from roboscript.bench.runner import run_isolated
+from roboscript.bench.tasks import get_task
+from roboscript.bench.trial import TrialSpec
+from roboscript.perception.evaluation import box_iou
+from roboscript.perception.modes import make_perception
+from roboscript.perception.pipeline import ObjectNotFoundError, footprint_of
+
+
+@pytest.fixture(scope="module")
+def table_world():
+    backend = MujocoBackend("world_1_table_sort", robot="panda")
+    yield backend, make_perception("gt", backend), make_perception("gt-2d", backend)
+    backend.close()
+
+
+def test_objects_are_named_after_the_phrases_and_seen_where_they_are(table_world):
+    _, truth, seen = table_world
+    seen.detect(None)  # the task's vocabulary: the world's object names
+    assert sorted(seen.objects()) == sorted(truth.objects())
+    for name in seen.objects():
+        assert box_iou(seen.box(name), truth.box(name)) > 0.6, name
+        assert np.linalg.norm(seen.pose(name).position - truth.pose(name).position) < 0.01, name
+    assert "cabinet.drawer_1" in seen.names()  # furniture parts come along
+    top = seen.box("gelatin_box").upper[2]
+    center = seen.box("gelatin_box").center
+    normal = seen.plane_normal("gelatin_box", np.array([center[0], center[1], top]))
+    assert normal[2] > 0.95  # the top face, pointing up
+    interior = seen.receptacle("white_plate")
+    assert interior is not None and interior.upper[0] - interior.lower[0] > 0.2
+    assert seen.receptacle("apple") is None
+
+
+def test_several_things_of_one_phrase_get_numbered_names(table_world):
+    _, truth, seen = table_world
+    seen.detect(["box"])
+    boxes = sorted(n for n in seen.objects() if n.startswith("box_"))
+    assert boxes == ["box_0", "box_1", "box_2"]
+    truth_boxes = [truth.box(n) for n in ("gelatin_box", "yellow_box", "red_box")]
+    for name in boxes:  # each is one of the three boxes
+        assert max(box_iou(seen.box(name), b) for b in truth_boxes) > 0.6
+
+
+def test_a_phrase_no_view_sees_is_reported_with_what_was_seen(table_world):
+    seen = table_world[2]
+    seen.detect(["unicorn", "apple"])
+    with pytest.raises(ObjectNotFoundError) as info:
+        seen.require("unicorn")
+    message = str(info.value)
+    assert "'unicorn' was not found: no view of 3 (camera_left, camera_right, camera_top) found 'unicorn'" in message
+    assert "seen: apple in 3 views" in message
+
+
+def test_the_rectangle_around_points_finds_their_turn():
+    rng = np.random.default_rng(0)
+    local = rng.uniform([-0.05, -0.02], [0.05, 0.02], size=(2000, 2))
+    yaw = math.radians(30)
+    rotation = np.array([[math.cos(yaw), -math.sin(yaw)], [math.sin(yaw), math.cos(yaw)]])
+    xy = local @ rotation.T + [0.3, -0.1]
+    points = np.column_stack([xy, np.full(len(xy), 0.85)])
+    center, found, half = footprint_of(points)
+    assert abs(math.degrees(found) - 30) < 1.0
+    assert np.allclose(half, [0.05, 0.02], atol=0.002) and np.allclose(center, [0.3, -0.1], atol=0.002)
+
+
+def test_what_the_robot_let_go_is_looked_at_again_and_keeps_its_name():
+    backend = MujocoBackend("world_2_pick_and_place", robot="panda")
+    try:
+        tools = ToolAPI.for_simulation(backend, perception="gt-2d")
+        perception = tools.perception
+        namespace = tools.namespace()
+        namespace["detect_objects"](["apple"])
+        before = perception.box("apple").center
+        namespace["open_gripper"]()
+        namespace["grasp"](namespace["parse_central_lift_grasp_pose"](object_name="apple"))
+        namespace["close_gripper"]()
+        namespace["attach_object"]("apple")
+        namespace["move_in_direction"]([0, 1, 0], 0.1)
+        namespace["open_gripper"]()
+        looks = perception.looks
+        namespace["detach_object"]("apple")
+        namespace["move_in_direction"]([0, 0, 1], 0.1)  # the hand out of the way, as programs do
+        after = perception.box("apple").center
+        assert perception.looks == looks + 1  # one fresh look after letting go, not one per question
+        truth = backend.ground_truth.box("apple").center
+        assert np.linalg.norm(after - truth) < 0.015 and np.linalg.norm(after - before) > 0.05  # the hand is near
+        assert perception.objects() == ["apple"]
+    finally:
+        backend.close()
+
+
+def test_a_reference_program_passes_with_perception_in_the_loop():
+    task = get_task("simple_0")
+    spec = TrialSpec("simple_0", "panda", 0, 0, task.reference_program(), timeout=300, perception="gt-2d")
+    (record,) = run_isolated([spec])
+    assert record.success, (record.error, record.checks)
+    with pytest.raises(ValueError, match="unknown perception mode 'lidar'; modes: gt"):
+        TrialSpec("simple_0", "panda", 0, 0, "", perception="lidar")
+
+
+def test_runs_are_compared_side_by_side(tmp_path):
+    for name, mode, value in (("a", "gt", 1.0), ("b", "gt-2d", 0.9)):
+        run = tmp_path / name
+        run.mkdir()
+        tasks = {"simple_0": {"trials": 10, "whole_task_success": value}, "hard_0": {"trials": 10}}
+        provenance = {"policy": "reference", "perception": mode, "robot": "panda"}
+        (run / "summary.json").write_text(json.dumps({"provenance": provenance, "tasks": tasks}))
+    table = compare_runs([tmp_path / "a", tmp_path / "b"], "whole_task_success")
+    assert "| `reference`, gt, panda (20 trials) | 1.00 | - | 1.00 |" in table
+    assert "| `reference`, gt-2d, panda (20 trials) | 0.90 | - | 0.90 |" in table
+    with pytest.raises(ValueError, match="not a benchmark run directory"):
+        compare_runs([tmp_path])
