@@ -10,10 +10,10 @@ setup:
 demo: setup
 	$(VENV)/bin/roboscript demo --out out/demo
 
-# The tests need Open3D (perception), and the slow ones llama.cpp (compiled on first install, about 5 minutes on
-# 2 cores) and a small GGUF model.
+# The tests need Open3D (perception), torch and transformers (detectors, tested on tiny models they build), and the
+# slow ones llama.cpp (compiled on first install, about 5 minutes on 2 cores) and a small GGUF model.
 test-deps:
-	$(PY) -m pip install -q -e ".[dev,perception,slowtests]"
+	$(PY) -m pip install -q -e ".[dev,perception,detectors,slowtests]"
 
 test: test-deps
 	$(VENV)/bin/ruff check src tests benchmarks

@@ -60,21 +60,21 @@ def test_metrics():
 
 
 def test_run_directory_resumes_and_refuses_mixing(tmp_path):
-    run = provenance("reference", "panda", 3, 0, {"simple_0": "program A"}, "ground_truth")
+    run = provenance("reference", "panda", 3, 0, {"simple_0": "program A"}, "gt")
     directory = RunDirectory(tmp_path, run)
     directory.append(record(0, True, 2))
     with directory.results.open("a") as f:
         f.write('{"task": "simple_0", "rob')  # a line cut short by an interruption
-    again = RunDirectory(tmp_path, provenance("reference", "panda", 3, 0, {"simple_0": "program A"}, "ground_truth"))
+    again = RunDirectory(tmp_path, provenance("reference", "panda", 3, 0, {"simple_0": "program A"}, "gt"))
     assert again.done() == {("simple_0", "panda", 0)}
     summary = again.write_summary(["simple_0"])
     assert summary["tasks"]["simple_0"]["whole_task_success"] == 1.0
     assert "| Whole task success | 1.00 |" in (tmp_path / "summary.md").read_text()
     assert (tmp_path / "summary.csv").read_text().startswith("task,trials,grammar_correctness")
     with pytest.raises(ValueError, match="another program for simple_0"):
-        RunDirectory(tmp_path, provenance("reference", "panda", 3, 0, {"simple_0": "program B"}, "ground_truth"))
+        RunDirectory(tmp_path, provenance("reference", "panda", 3, 0, {"simple_0": "program B"}, "gt"))
     with pytest.raises(ValueError, match="robot='panda', not 'ur5e'"):
-        RunDirectory(tmp_path, provenance("reference", "ur5e", 3, 0, {"simple_0": "program A"}, "ground_truth"))
+        RunDirectory(tmp_path, provenance("reference", "ur5e", 3, 0, {"simple_0": "program A"}, "gt"))
 
 
 def exec_json(tmp_path, source, *args):

@@ -377,12 +377,17 @@ def build_parser() -> argparse.ArgumentParser:
 def main(argv: list[str] | None = None) -> int:
     args = build_parser().parse_args(argv)
     from roboscript.llm import LLMError
+    from roboscript.perception.detectors import DetectorError
     from roboscript.robots.assets import AssetNotFoundError
     from roboscript.sim.world_file import WorldFileError
 
     try:
+        if hasattr(args, "perception"):
+            from roboscript.perception.modes import require_ready
+
+            require_ready(args.perception)  # a missing detector fails here, before any world is built
         return args.func(args)
-    except (WorldFileError, AssetNotFoundError, KeyError, ValueError, LLMError) as exc:
+    except (WorldFileError, AssetNotFoundError, KeyError, ValueError, LLMError, DetectorError) as exc:
         message = exc.args[0] if isinstance(exc, KeyError) and exc.args else str(exc)
         print(f"roboscript: error: {message}", file=sys.stderr)
         return 2

@@ -350,6 +350,7 @@ class ToolAPI:
         if name in self.perception.objects():
             self.motion.attach(name)
             self._carried_from[name] = self.backend.tcp_pose()
+            self.perception.carried(name, self._carried_from[name])
         else:  # a drawer or door: it moves on its joint; the gripper may touch it and its handle
             for part in self._part_family(name):
                 self.motion.scene.allow("gripper", part)
@@ -492,7 +493,7 @@ class ToolAPI:
             if any(np.linalg.norm(spot.center - t.center) < 0.05 and abs(spot.yaw - t.yaw) < 0.1 for t in tried):
                 continue
             tried.append(spot)
-            for lift in (0.0, 0.05, 0.1):
+            for lift in (0.0, 0.02, 0.05, 0.1):
                 for dyaw in (0.0, math.pi):
                     rotation = quat_to_matrix(quat_from_yaw(spot.yaw + dyaw))
                     # Turning the held object about world z around its centre turns the gripper with it.

@@ -1,8 +1,8 @@
 """Runs trials in child processes, a few at a time, and hands each record over as soon as it is finished.
 
-Each trial runs in its own forked process: a program that crashes the interpreter, exhausts memory or never
-returns costs that trial only. The child enforces the program's time limit itself (so the world is still judged);
-the parent kills a child that outlives the limit by ``KILL_GRACE`` seconds (stuck in native code) and records it.
+Each trial runs in its own process (forked from a clean fork server): a program that crashes the interpreter,
+exhausts memory or never returns costs that trial only. The child enforces the program's time limit itself (so the
+world is still judged); the parent kills a child that outlives its budget (stuck in native code) and records it.
 """
 
 from __future__ import annotations
@@ -61,6 +61,15 @@ def _death(spec: TrialSpec, exitcode: int | None, started: float) -> TrialRecord
     return _failed(spec, f"the trial's process died (exit code {exitcode})", started)
 
 
+def trial_context() -> mp.context.BaseContext:
+    """Trials start from a fork server: a clean process that has imported the simulator and the tools but run
+    nothing. Forking the caller itself would copy whatever state it is in, and a process that has run OpenMP
+    code (Open3D's fusion) hangs its forked children the moment they run OpenMP code too."""
+    context = mp.get_context("forkserver")
+    context.set_forkserver_preload(["roboscript.bench.trial", "roboscript.api", "roboscript.backends.mujoco_backend"])
+    return context
+
+
 def default_jobs() -> int:
     return max(1, min(os.cpu_count() or 1, 8))
 
@@ -71,7 +80,7 @@ def run_isolated(
     """Runs every trial in a child process, at most ``jobs`` at once; ``on_record`` gets each as it ends."""
     if jobs < 1:
         raise ValueError(f"jobs must be at least 1, got {jobs}")
-    context = mp.get_context("fork")
+    context = trial_context()
     pending = list(specs)
     running: dict[object, tuple[TrialSpec, object, float]] = {}
     records: list[TrialRecord] = []

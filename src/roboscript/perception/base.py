@@ -123,6 +123,11 @@ class Perception(ABC):
     def objects(self) -> list[str]:
         """Movable objects (not furniture or its parts)."""
 
+    def carried(self, name: str, gripper: Transform) -> None:  # noqa: B027 (a hook: nothing to do by default)
+        """The robot took hold of ``name`` with its gripper at ``gripper``: until :meth:`moved`, it goes where the
+        gripper goes. Perception that keeps what it saw follows it; perception that reads the world's state has
+        nothing to do."""
+
     def moved(self, name: str, motion: Transform) -> None:  # noqa: B027 (a hook: nothing to do by default)
         """The robot carried ``name`` and let it go: it moved by ``motion`` (world frame). Perception that keeps
         what it saw moves it along; perception that reads the world's state has nothing to do."""

@@ -70,6 +70,8 @@ def fit_box(points: np.ndarray, trim: float = 1.0) -> Box3D:
 def footprint_points(points: np.ndarray, support: float) -> np.ndarray:
     """The points that show an object's outline from above: those clear of where the fused surface blurs into
     the table (if the object is tall enough to have such)."""
+    if points[:, 2].max() - support < 2 * FOOTPRINT_HEIGHT:  # flat (a plate): its edge is all there is
+        return points
     upper = points[points[:, 2] > support + FOOTPRINT_HEIGHT]
     return upper if len(upper) >= 0.3 * len(points) and len(upper) >= 10 else points
 
@@ -185,16 +187,18 @@ def refine_with_depth(
     normal_maps: Sequence[np.ndarray],
     support: float,
     stride: int = 2,
-    margin: float = 0.005,
+    margin: float = 0.01,
+    above: float = 0.002,
 ) -> Instance3D:
     """The instance's points taken again from the depth images themselves: in each view where it was found, the
-    pixels of its 2D box whose points lie in its fused box (``margin`` larger) and above the table.
+    pixels of its 2D box whose points lie in its fused box (``margin`` larger) and ``above`` the table (depth
+    pixels are sharp enough to follow a plate's edge down nearer the table than the fused surface).
 
     The fused surface finds and separates objects; its points stand a few millimetres proud of flat sides seen
     at a slant (the signed-distance blur), which is the difference between a box that fits a gripper and one
     that does not. The depth pixels have no such blur."""
     lower, upper = instance.box.lower - margin, instance.box.upper + margin
-    lower = np.array([lower[0], lower[1], max(lower[2], support + SUPPORT_MARGIN)])
+    lower = np.array([lower[0], lower[1], max(lower[2], support + above)])
     points, normals = [], []
     for view, box_index in enumerate(instance.boxes):
         if box_index == -1:

@@ -92,6 +92,7 @@ class PipelinePerception(Perception):
         self.last: Observation | None = None
         self.looks = 0  # how many times the cameras were used
         self._asked: list[str] = []  # every phrase looked for, in order
+        self._carried: dict[str, Transform] = {}  # objects in the gripper, with where the gripper took them
         self._looked = False
         self._stale = False
 
@@ -165,15 +166,17 @@ class PipelinePerception(Perception):
             self.backend.wait(SETTLE_TIME)  # what was let go may still be rolling
             self._look(list(self._asked))
 
+    def carried(self, name: str, gripper: Transform) -> None:
+        if name in self.store:
+            self._carried[name] = gripper
+
     def moved(self, name: str, motion: Transform) -> None:
         """``name`` was carried by the robot: its points move by ``motion``; the next question looks again."""
+        self._carried.pop(name, None)
         obj = self.store.get(name)
         if obj is None:
             return
-        obj.points = motion.apply(obj.points)
-        obj.normals = obj.normals @ motion.rotation.T
-        obj.support += float(motion.position[2])  # it stands where it was put, as high up as it was carried
-        obj.box = object_box(obj.points, obj.support)
+        self.store[name] = _moved(obj, motion)
         self._stale = True  # what was let go may settle, roll or push others: look again before answering
 
     # --- the questions ----------------------------------------------------------------------------------------
@@ -195,6 +198,9 @@ class PipelinePerception(Perception):
 
     def _object(self, name: str) -> SeenObject | None:
         self._ensure_looked()
+        if name in self._carried:  # in the gripper: where the gripper has taken it since
+            motion = self.backend.tcp_pose().compose(self._carried[name].inverse())
+            return _moved(self.store[name], motion)
         if name in self.store:
             return self.store[name]
         if name not in self.names():
@@ -244,6 +250,19 @@ class PipelinePerception(Perception):
         if obj.kind is None or not obj.kind.container or obj.kind.interior is None:
             return None
         return interior_of(obj.points, obj.outline, obj.kind, name)
+
+
+def _moved(obj: SeenObject, motion: Transform) -> SeenObject:
+    """``obj`` as it is after the rigid ``motion`` (world frame); its support rises and falls with it."""
+    return SeenObject(
+        obj.name,
+        obj.phrase,
+        motion.apply(obj.points),
+        obj.normals @ motion.rotation.T,
+        obj.views,
+        obj.support + float(motion.position[2]),
+        obj.kind,
+    )
 
 
 def _name(phrase: str) -> str:
