@@ -213,3 +213,27 @@ def refine_with_depth(
         return instance
     points, normals = np.concatenate(points), np.concatenate(normals)
     return Instance3D(instance.label, points, normals, object_box(points, support), instance.boxes)
+
+
+HIDDEN_FOOT = 0.06  # metres of an object's underside the cameras may not see (a ball's lower half, a bowl's stem)
+
+
+def ground(instances: Sequence[Instance3D], support: float) -> list[Instance3D]:
+    """Instances whose lowest seen point floats a little above the table, with nothing under them, reach down to
+    the table: what the cameras do not see of a ball's underside or a footed bowl's stem is still there."""
+    out = []
+    for instance in instances:
+        box = instance.box
+        gap = box.lower[2] - support
+        resting_on_other = any(
+            other is not instance
+            and np.all(other.box.lower[:2] < box.upper[:2])
+            and np.all(box.lower[:2] < other.box.upper[:2])
+            and -0.01 < box.lower[2] - other.box.upper[2] < 0.03
+            for other in instances
+        )
+        if 0 < gap < HIDDEN_FOOT and not resting_on_other:
+            grounded = Box3D(np.array([*box.lower[:2], support]), box.upper.copy())
+            instance = Instance3D(instance.label, instance.points, instance.normals, grounded, instance.boxes)
+        out.append(instance)
+    return out

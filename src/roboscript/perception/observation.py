@@ -10,7 +10,13 @@ import numpy as np
 
 from roboscript.perception.fusion import FusedScene, FusionSettings, fuse
 from roboscript.perception.grounding import Detection2D, Grounder
-from roboscript.perception.instances import Instance3D, build_instances, refine_with_depth, support_height
+from roboscript.perception.instances import (
+    Instance3D,
+    build_instances,
+    ground,
+    refine_with_depth,
+    support_height,
+)
 from roboscript.perception.matching import MatchedObject, Projection, match_views, membership, project
 from roboscript.perception.points import normal_map, point_map
 from roboscript.sim.cameras import CameraFrame
@@ -61,4 +67,5 @@ def observe(
     maps = [point_map(f) for f in usable]
     normals = [normal_map(m, f.extrinsics.position) for m, f in zip(maps, usable, strict=True)]
     instances = [refine_with_depth(i, detections, maps, normals, support) for i in instances]
+    instances = ground(instances, support)
     return Observation(usable, scene, detections, projections, memberships, matched, instances, support)

@@ -55,11 +55,13 @@ class SeenObject:
     normals: np.ndarray
     views: int  # in how many views it was found
     support: float  # height of the table it was seen above
+    floor: float  # height of its underside (below its lowest point seen where it stands on the table)
     kind: ObjectType | None = None  # the library's idea of the phrase, for containers' interiors
     box: Box3D = field(init=False)
 
     def __post_init__(self) -> None:
-        self.box = object_box(self.points, self.support)
+        box = object_box(self.points, self.support)
+        self.box = Box3D(np.array([*box.lower[:2], min(box.lower[2], self.floor)]), box.upper)
 
     @property
     def outline(self) -> np.ndarray:
@@ -155,7 +157,10 @@ class PipelinePerception(Perception):
 
     def _seen(self, name: str, phrase: str, instance: Instance3D, seen: Observation) -> SeenObject:
         views = sum(1 for b in instance.boxes if b != -1)
-        return SeenObject(name, phrase, instance.points, instance.normals, views, seen.support, _library_type(phrase))
+        floor = float(instance.box.lower[2])
+        return SeenObject(
+            name, phrase, instance.points, instance.normals, views, seen.support, floor, _library_type(phrase)
+        )
 
     def _ensure_looked(self, fresh: bool = True) -> None:
         """Looks if nothing was seen yet; with ``fresh``, also if something was let go since the last look (names
@@ -261,6 +266,7 @@ def _moved(obj: SeenObject, motion: Transform) -> SeenObject:
         obj.normals @ motion.rotation.T,
         obj.views,
         obj.support + float(motion.position[2]),
+        obj.floor + float(motion.position[2]),
         obj.kind,
     )
 
