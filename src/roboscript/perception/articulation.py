@@ -1,0 +1,70 @@
+"""Articulation from points: a drawer's sliding axis and a door's hinge line, from the points of its front panel
+and the centre of its handle (DESIGN.md §6, the geometric estimator of the full-perception mode).
+
+A drawer slides along the normal of its front. A door turns about the vertical edge of its front farthest from
+its handle. Both are given in the form ground truth uses (:class:`ArticulationJoint`): the axis point on the
+front's plane, the axis signed so that positive values open. How far a part is open cannot be told from one look
+at its front, so ``value`` is 0 and the limits are the usual travel of such parts.
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from roboscript.perception.base import ArticulationJoint
+
+DRAWER_TRAVEL = 0.3  # metres a drawer is assumed to slide out at most
+DOOR_TRAVEL = math.pi / 2  # radians a door is assumed to open at most
+PLANE_TOLERANCE = 0.004  # metres from the plane within which a point is on the front
+
+
+def front_plane(points: np.ndarray, toward: np.ndarray, iterations: int = 200, seed: int = 0):
+    """``(point, normal)`` of the dominant plane of ``points`` (RANSAC, then a least-squares refit on its
+    inliers), the normal turned towards ``toward`` (the handle, which stands out of the front)."""
+    if len(points) < 10:
+        raise ValueError(f"a front needs at least 10 points, got {len(points)}")
+    rng = np.random.default_rng(seed)
+    best = np.zeros(len(points), dtype=bool)
+    for _ in range(iterations):
+        a, b, c = points[rng.choice(len(points), 3, replace=False)]
+        normal = np.cross(b - a, c - a)
+        norm = np.linalg.norm(normal)
+        if norm < 1e-9:
+            continue
+        normal /= norm
+        inliers = np.abs((points - a) @ normal) < PLANE_TOLERANCE
+        if inliers.sum() > best.sum():
+            best = inliers
+    on_plane = points[best]
+    center = on_plane.mean(axis=0)
+    normal = np.linalg.svd(on_plane - center, full_matrices=False)[2][-1]
+    if np.dot(normal, np.asarray(toward, dtype=float) - center) < 0:
+        normal = -normal
+    return center, normal / np.linalg.norm(normal), on_plane
+
+
+def drawer_joint(part: str, front_points: np.ndarray, handle_center: np.ndarray) -> ArticulationJoint:
+    """The prismatic joint of a drawer: along its front's outward normal, through the handle's foot on the
+    front."""
+    center, normal, _ = front_plane(front_points, handle_center)
+    foot = handle_center - np.dot(handle_center - center, normal) * normal
+    return ArticulationJoint(part, "prismatic", foot, normal, 0.0, 0.0, DRAWER_TRAVEL)
+
+
+def door_joint(part: str, front_points: np.ndarray, handle_center: np.ndarray) -> ArticulationJoint:
+    """The revolute joint of a door: the vertical line through the edge of its front farthest from the handle,
+    signed so that turning by a positive angle swings the handle out of the front."""
+    center, normal, on_plane = front_plane(front_points, handle_center)
+    up = np.array([0.0, 0.0, 1.0])
+    across = np.cross(up, normal)
+    across /= np.linalg.norm(across)
+    extent = (on_plane - center) @ across
+    handle = float(np.dot(handle_center - center, across))
+    lo, hi = np.percentile(extent, 1), np.percentile(extent, 99)
+    edge = lo if abs(handle - lo) > abs(handle - hi) else hi
+    height = float(np.dot(handle_center - center, up))
+    hinge = center + edge * across + height * up
+    axis = up if np.dot(np.cross(up, handle_center - hinge), normal) > 0 else -up
+    return ArticulationJoint(part, "revolute", hinge, axis, 0.0, 0.0, DOOR_TRAVEL)
