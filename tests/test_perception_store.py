@@ -123,3 +123,26 @@ def test_runs_are_compared_side_by_side(tmp_path):
     assert "| `reference`, gt-2d, panda (20 trials) | 0.90 | - | 0.90 |" in table
     with pytest.raises(ValueError, match="not a benchmark run directory"):
         compare_runs([tmp_path])
+
+
+def test_putting_aside_keeps_clear_of_what_the_cameras_see_but_perception_was_not_asked_about():
+    backend = MujocoBackend("world_1_table_sort", robot="panda", seed=8, randomize=True)
+    try:
+        tools = ToolAPI.for_simulation(backend, seed=8, perception="gt-2d")
+        ns = tools.namespace()
+        ns["detect_objects"](["apple", "banana"])  # the plate next to the apple is not asked about
+        assert "white_plate" not in tools.perception.objects()
+        ns["open_gripper"]()
+        ns["grasp"](ns["parse_central_lift_grasp_pose"](object_name="apple"))
+        ns["close_gripper"]()
+        ns["attach_object"]("apple")
+        ns["move_in_direction"]([0, 0, 1], 0.1)
+        pose = ns["parse_place_pose"](object_name="apple", receptacle_name="table")
+        apple = tools.perception.box("apple")
+        tcp = backend.tcp_pose().position
+        center = np.array([pose.position.x, pose.position.y]) + (apple.center - tcp)[:2]
+        plate = backend.ground_truth.box("white_plate")
+        gap = np.maximum(np.maximum(plate.lower[:2] - center, center - plate.upper[:2]), 0.0)
+        assert np.linalg.norm(gap) > apple.size[0] / 2  # the apple's footprint does not reach the plate
+    finally:
+        backend.close()

@@ -319,6 +319,8 @@ class ToolAPI:
                 spots = spots_in_receptacle(
                     receptacle, half, yaw, size[2], others + furniture, self.base_xy, near_xy=box.center[:2]
                 )
+                # Also clear of whatever the cameras see there, known to perception or not.
+                spots = _clear_of(spots, self.perception.occupied([name]), float(np.linalg.norm(half)) + MARGIN)
                 spots = [s for s in spots if np.linalg.norm(s.center[:2] - box.center[:2]) > 0.15]
             else:
                 inside = [b for b in others if _within(b, receptacle)]
@@ -594,6 +596,15 @@ class _touch:
     def __exit__(self, *exc):
         for name in self.names:
             self.scene.allow("gripper", name, False)
+
+
+def _clear_of(spots: list, points: np.ndarray, radius: float) -> list:
+    """The spots with no observed point above the table within ``radius`` of their centre (on the table's level:
+    the table itself and what hangs high above it do not count)."""
+    band = points[(points[:, 2] > TABLE_TOP + 0.005) & (points[:, 2] < TABLE_TOP + 0.5)][:, :2]
+    if len(band) == 0:
+        return spots
+    return [s for s in spots if float(np.min(np.linalg.norm(band - s.center[:2], axis=1))) > radius]
 
 
 def _is_furniture(name: str, perception: Perception) -> bool:

@@ -13,6 +13,8 @@ import numpy as np
 
 from roboscript.geometry import Box3D, Transform
 
+OCCUPANCY_MARGIN = 0.02  # metres around an ignored object's box whose points are taken to be its own
+
 
 class UnknownObjectError(KeyError):
     """No object of that name is known; the message suggests the closest known names."""
@@ -122,6 +124,16 @@ class Perception(ABC):
     @abstractmethod
     def objects(self) -> list[str]:
         """Movable objects (not furniture or its parts)."""
+
+    def occupied(self, ignore: list[str]) -> np.ndarray:
+        """Observed surface points, (N, 3), without those of the objects in ``ignore`` (what the robot holds):
+        space that is taken whether or not perception knows what takes it."""
+        points = self.scene_points()
+        for name in ignore:
+            box = self.box(name)
+            inside = np.all((points > box.lower - OCCUPANCY_MARGIN) & (points < box.upper + OCCUPANCY_MARGIN), axis=1)
+            points = points[~inside]
+        return points
 
     def carried(self, name: str, gripper: Transform) -> None:  # noqa: B027 (a hook: nothing to do by default)
         """The robot took hold of ``name`` with its gripper at ``gripper``: until :meth:`moved`, it goes where the

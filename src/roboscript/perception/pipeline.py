@@ -23,7 +23,14 @@ import numpy as np
 
 from roboscript.backends.base import Backend
 from roboscript.geometry import Box3D, Transform, quat_from_yaw
-from roboscript.perception.base import ArticulationJoint, ObjectPoints, Perception, Receptacle, UnknownObjectError
+from roboscript.perception.base import (
+    OCCUPANCY_MARGIN,
+    ArticulationJoint,
+    ObjectPoints,
+    Perception,
+    Receptacle,
+    UnknownObjectError,
+)
 from roboscript.perception.fusion import FusionSettings
 from roboscript.perception.grounding import Grounder, normalize_phrase
 from roboscript.perception.instances import Instance3D, fit_box, footprint_points, object_box
@@ -170,6 +177,17 @@ class PipelinePerception(Perception):
         elif fresh and self._stale:
             self.backend.wait(SETTLE_TIME)  # what was let go may still be rolling
             self._look(list(self._asked))
+
+    def occupied(self, ignore: list[str]) -> np.ndarray:
+        """As :meth:`Perception.occupied`; an object that was carried away leaves no ghost where it was seen."""
+        points = super().occupied(ignore)
+        for name in ignore:
+            if name in self.store:
+                box = self.store[name].box  # where the last look saw it
+                margin = OCCUPANCY_MARGIN
+                inside = np.all((points > box.lower - margin) & (points < box.upper + margin), axis=1)
+                points = points[~inside]
+        return points
 
     def carried(self, name: str, gripper: Transform) -> None:
         if name in self.store:
