@@ -82,3 +82,20 @@ def test_bad_specs_and_requests_say_what_is_valid(monkeypatch):
         make_llm("llama:/nonexistent/model.gguf")
     with pytest.raises(ValueError, match="role 'robot'"):
         LLMRequest(({"role": "robot", "content": "x"},))
+
+
+def test_the_environment_configures_the_llm_in_one_order(monkeypatch):
+    from roboscript.llm.openai_compatible import OpenAICompatibleLLM
+    from roboscript.llm.spec import configured_spec
+
+    monkeypatch.delenv("ROBOSCRIPT_LLM", raising=False)
+    monkeypatch.delenv("ROBOSCRIPT_LLM_MODEL", raising=False)
+    assert configured_spec() is None
+    monkeypatch.setenv("ROBOSCRIPT_LLM_MODEL", "served-model")
+    monkeypatch.setenv("ROBOSCRIPT_LLM_BASE_URL", "http://127.0.0.1:9/v1")
+    assert configured_spec() == "openai:served-model"
+    llm = make_llm(None)
+    assert isinstance(llm, OpenAICompatibleLLM) and llm.model == "served-model"
+    assert llm.base_url.rstrip("/") == "http://127.0.0.1:9/v1"  # the client keeps a trailing slash
+    monkeypatch.setenv("ROBOSCRIPT_LLM", "replay:/tmp/r=openai:x")
+    assert configured_spec() == "replay:/tmp/r=openai:x"  # ROBOSCRIPT_LLM comes first

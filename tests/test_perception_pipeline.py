@@ -62,6 +62,7 @@ def test_a_broken_depth_image_is_reported_and_skipped():
     assert scene.used == [frames[0].name, frames[2].name]
     assert "NaN" in scene.skipped[broken.name]
     assert len(scene.points) > 1000
+    assert len(scene.mesh().triangles) > 1000  # the same surface as a mesh
     settings = FusionSettings()
     assert "in range" in depth_problem(dataclasses.replace(frames[0], depth=np.zeros_like(frames[0].depth)), settings)
     assert "negative" in depth_problem(dataclasses.replace(frames[0], depth=-frames[0].depth), settings)

@@ -237,10 +237,11 @@ def cmd_run(args: argparse.Namespace) -> int:
 
 def cmd_demo(args: argparse.Namespace) -> int:
     from roboscript.bench.tasks import get_task
-    from roboscript.demo import DemoPlan, configured_llm, run_demo
+    from roboscript.demo import DemoPlan, run_demo
+    from roboscript.llm.spec import configured_spec
 
     task = get_task(args.task)
-    plan = DemoPlan(task.id, args.robot, args.llm or configured_llm(), Path(args.out))
+    plan = DemoPlan(task.id, args.robot, args.llm or configured_spec(), Path(args.out))
     print(f'RoboScript demo: {task.id} on the {args.robot}: "{task.instruction}"')
     print(f"program: {plan.source}")
     if plan.llm is not None:
@@ -296,6 +297,9 @@ def _add_perception_option(parser: argparse.ArgumentParser) -> None:
 
 
 def build_parser() -> argparse.ArgumentParser:
+    from roboscript.bench.metrics import METRICS
+    from roboscript.demo import DEMO_TASK
+
     parser = argparse.ArgumentParser(prog="roboscript", description=__doc__)
     sub = parser.add_subparsers(dest="command", required=True)
     sub.add_parser("worlds", help="list the packaged worlds").set_defaults(func=cmd_worlds)
@@ -342,13 +346,13 @@ def build_parser() -> argparse.ArgumentParser:
     report.add_argument(
         "--metric",
         default="all",
-        choices=["all", "grammar_correctness", "semantic_correctness", "finished_steps_ratio", "whole_task_success"],
+        choices=["all", *METRICS],
     )
     report.set_defaults(func=cmd_report)
     demo = sub.add_parser(
         "demo", help="one task end to end (the configured LLM, else the reference program) with a video and a report"
     )
-    demo.add_argument("--task", default="simple_0", help="the task to run (see `roboscript tasks`)")
+    demo.add_argument("--task", default=DEMO_TASK, help="the task to run (see `roboscript tasks`)")
     demo.add_argument("--robot", choices=["panda", "ur5e"], default="panda")
     demo.add_argument("--llm", default=None, help="an LLM spec (see `run --llm`); default: the environment's")
     demo.add_argument("--repair", type=_rounds, default=0, help="repair rounds when an LLM writes the program")

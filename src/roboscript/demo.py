@@ -7,7 +7,6 @@ The program comes from the LLM the environment configures (``ROBOSCRIPT_LLM``, o
 from __future__ import annotations
 
 import json
-import os
 from dataclasses import dataclass
 from pathlib import Path
 
@@ -17,15 +16,6 @@ from roboscript.bench.trial import TrialRecord, TrialSpec
 from roboscript.llm.openai_compatible import MODEL_ENV
 
 DEMO_TASK = "simple_0"
-
-
-def configured_llm() -> str | None:
-    """The LLM spec the environment configures, or None."""
-    if os.environ.get("ROBOSCRIPT_LLM"):
-        return os.environ["ROBOSCRIPT_LLM"]
-    if os.environ.get(MODEL_ENV):
-        return f"openai:{os.environ[MODEL_ENV]}"
-    return None
 
 
 @dataclass(frozen=True)

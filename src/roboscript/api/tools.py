@@ -53,7 +53,6 @@ class ToolAPI:
         self.gripper = GripperGeometry(max_width=backend.robot.gripper.max_width)
         self.base_xy = np.asarray(motion.kinematics.mount.position[:2], dtype=float)
         self._held: list[str] = []
-        self._carried_from: dict[str, Transform] = {}  # where the gripper was when it took each held object
         # Names the gripper may touch until it has moved clear of them (what it grasped or just let go of).
         self._touch_allowed: set[str] = set()
         self._link_contacts: set[tuple[str, str]] = set()  # arm links allowed to leave a contact they start in
@@ -351,8 +350,7 @@ class ToolAPI:
             return
         if name in self.perception.objects():
             self.motion.attach(name)
-            self._carried_from[name] = self.backend.tcp_pose()
-            self.perception.carried(name, self._carried_from[name])
+            self.perception.carried(name, self.backend.tcp_pose())
         else:  # a drawer or door: it moves on its joint; the gripper may touch it and its handle
             for part in self._part_family(name):
                 self.motion.scene.allow("gripper", part)
@@ -366,10 +364,8 @@ class ToolAPI:
         if name not in self._held:
             raise ValueError(f"{name!r} is not attached; attached: {', '.join(self._held) or 'nothing'}")
         self._held.remove(name)
-        start = self._carried_from.pop(name, None)
-        if start is not None:  # what perception saw of it moved with the gripper
-            self.perception.moved(name, self.backend.tcp_pose().compose(start.inverse()))
         if name in self.perception.objects():
+            self.perception.released(name, self.backend.tcp_pose())
             self.motion.detach(name)
             self.motion.scene.allow("gripper", name)
         self._touch_allowed.add(name)

@@ -16,15 +16,25 @@ FORMS = (
 )
 
 
+def configured_spec() -> str | None:
+    """The LLM the environment configures: ``ROBOSCRIPT_LLM``, else an OpenAI-compatible endpoint serving
+    ``ROBOSCRIPT_LLM_MODEL`` (at ``ROBOSCRIPT_LLM_BASE_URL``); None if neither is set."""
+    from roboscript.llm.openai_compatible import MODEL_ENV
+
+    if os.environ.get("ROBOSCRIPT_LLM"):
+        return os.environ["ROBOSCRIPT_LLM"]
+    if os.environ.get(MODEL_ENV):
+        return f"openai:{os.environ[MODEL_ENV]}"
+    return None
+
+
 def make_llm(spec: str | None = None) -> LLM:
     """The LLM a spec names; with none, the one ``ROBOSCRIPT_LLM`` names, else an OpenAI-compatible endpoint
     configured by ``ROBOSCRIPT_LLM_MODEL`` (and ``ROBOSCRIPT_LLM_BASE_URL``). Raises :class:`LLMError`."""
     from roboscript.llm.openai_compatible import MODEL_ENV, OpenAICompatibleLLM
 
-    spec = spec or os.environ.get("ROBOSCRIPT_LLM")
+    spec = spec or configured_spec()
     if not spec:
-        if os.environ.get(MODEL_ENV):
-            return OpenAICompatibleLLM()
         raise LLMError(f"no LLM configured: pass --llm ({' | '.join(FORMS)}) or set ROBOSCRIPT_LLM or {MODEL_ENV}")
     kind, sep, rest = spec.partition(":")
     if not sep or not rest:

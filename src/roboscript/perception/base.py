@@ -130,16 +130,21 @@ class Perception(ABC):
         space that is taken whether or not perception knows what takes it."""
         points = self.scene_points()
         for name in ignore:
-            box = self.box(name)
-            inside = np.all((points > box.lower - OCCUPANCY_MARGIN) & (points < box.upper + OCCUPANCY_MARGIN), axis=1)
-            points = points[~inside]
+            points = outside(points, self.box(name), OCCUPANCY_MARGIN)
         return points
 
     def carried(self, name: str, gripper: Transform) -> None:  # noqa: B027 (a hook: nothing to do by default)
-        """The robot took hold of ``name`` with its gripper at ``gripper``: until :meth:`moved`, it goes where the
-        gripper goes. Perception that keeps what it saw follows it; perception that reads the world's state has
-        nothing to do."""
+        """The robot took hold of ``name`` with its gripper at ``gripper``: until :meth:`released`, it goes where
+        the gripper goes. Perception that keeps what it saw follows it; perception that reads the world's state
+        has nothing to do."""
 
-    def moved(self, name: str, motion: Transform) -> None:  # noqa: B027 (a hook: nothing to do by default)
-        """The robot carried ``name`` and let it go: it moved by ``motion`` (world frame). Perception that keeps
-        what it saw moves it along; perception that reads the world's state has nothing to do."""
+    def released(self, name: str, gripper: Transform) -> None:  # noqa: B027 (a hook: nothing to do by default)
+        """The robot let ``name`` go with its gripper at ``gripper``: it moved as the gripper did since
+        :meth:`carried`. Perception that keeps what it saw moves it along; perception that reads the world's state
+        has nothing to do."""
+
+
+def outside(points: np.ndarray, box: Box3D, margin: float = 0.0) -> np.ndarray:
+    """The points not within ``box`` grown by ``margin``."""
+    inside = np.all((points > box.lower - margin) & (points < box.upper + margin), axis=1)
+    return points[~inside]

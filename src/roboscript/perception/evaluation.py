@@ -18,9 +18,8 @@ from roboscript.sim.ground_truth import GroundTruth
 
 def box_iou(a: Box3D, b: Box3D) -> float:
     """Intersection over union of two axis-aligned boxes."""
-    overlap = np.clip(np.minimum(a.upper, b.upper) - np.maximum(a.lower, b.lower), 0.0, None)
-    inter = float(np.prod(overlap))
-    union = float(np.prod(a.size) + np.prod(b.size)) - inter
+    inter = a.intersection(b).volume
+    union = a.volume + b.volume - inter
     return inter / union if union > 0 else 0.0
 
 

@@ -170,9 +170,8 @@ def _merge_fragments(
 
 def _box_overlap(a: Box3D, b: Box3D) -> float:
     """The share of the smaller box's volume inside the other."""
-    overlap = np.clip(np.minimum(a.upper, b.upper) - np.maximum(a.lower, b.lower), 0.0, None)
-    smaller = min(float(np.prod(a.size)), float(np.prod(b.size)))
-    return float(np.prod(overlap)) / smaller if smaller > 0 else 0.0
+    smaller = min(a.volume, b.volume)
+    return a.intersection(b).volume / smaller if smaller > 0 else 0.0
 
 
 def _mean_area(obj: MatchedObject, box_areas: Sequence[Sequence[float]]) -> float:

@@ -30,6 +30,7 @@ from roboscript.perception.base import (
     Perception,
     Receptacle,
     UnknownObjectError,
+    outside,
 )
 from roboscript.perception.fusion import FusionSettings
 from roboscript.perception.grounding import Grounder, normalize_phrase
@@ -182,31 +183,29 @@ class PipelinePerception(Perception):
         """As :meth:`Perception.occupied`; an object that was carried away leaves no ghost where it was seen."""
         points = super().occupied(ignore)
         for name in ignore:
-            if name in self.store:
-                box = self.store[name].box  # where the last look saw it
-                margin = OCCUPANCY_MARGIN
-                inside = np.all((points > box.lower - margin) & (points < box.upper + margin), axis=1)
-                points = points[~inside]
+            if name in self.store:  # where the last look saw it
+                points = outside(points, self.store[name].box, OCCUPANCY_MARGIN)
         return points
 
     def carried(self, name: str, gripper: Transform) -> None:
         if name in self.store:
             self._carried[name] = gripper
 
-    def moved(self, name: str, motion: Transform) -> None:
-        """``name`` was carried by the robot: its points move by ``motion``; the next question looks again."""
-        self._carried.pop(name, None)
-        obj = self.store.get(name)
-        if obj is None:
+    def released(self, name: str, gripper: Transform) -> None:
+        """``name`` was let go: its points move as the gripper did since it was taken; the next question looks
+        again."""
+        start = self._carried.pop(name, None)
+        if start is None:
             return
-        self.store[name] = _moved(obj, motion)
+        self.store[name] = _moved(self.store[name], gripper.compose(start.inverse()))
         self._stale = True  # what was let go may settle, roll or push others: look again before answering
 
     # --- the questions ----------------------------------------------------------------------------------------
 
     def names(self) -> list[str]:
         self._ensure_looked(fresh=False)
-        return list(self.store) + [n for n in self.parts.names() if _is_furniture_name(n, self.parts)]
+        movable = set(self.parts.objects())  # the parts' perception knows the objects too; the store answers for them
+        return list(self.store) + [n for n in self.parts.names() if n not in movable]
 
     def objects(self) -> list[str]:
         self._ensure_looked(fresh=False)
@@ -291,10 +290,6 @@ def _moved(obj: SeenObject, motion: Transform) -> SeenObject:
 
 def _name(phrase: str) -> str:
     return phrase.replace(" ", "_")
-
-
-def _is_furniture_name(name: str, parts: Perception) -> bool:
-    return name not in parts.objects()
 
 
 def _library_type(phrase: str) -> ObjectType | None:
