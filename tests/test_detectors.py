@@ -11,6 +11,7 @@ import sys
 
 import pytest
 
+from roboscript.api.tools import ToolAPI
 from roboscript.backends.mujoco_backend import MujocoBackend
 from roboscript.perception.detectors import DetectorError, OpenVocabularyDetector, _iou, closest_phrase
 from roboscript.perception.modes import DETECTOR_ENV, make_perception
@@ -156,17 +157,21 @@ def test_bad_detector_input_says_what_is_wrong(tmp_path, models):
     assert closest_phrase("table", PHRASES) is None
 
 
-def test_det_2d_perception_takes_the_detector_the_environment_names(models, monkeypatch):
+def test_full_perception_takes_the_detector_the_environment_names(models, monkeypatch):
     monkeypatch.setenv(DETECTOR_ENV, f"owlv2:{models['owlv2']}")
     backend = MujocoBackend("world_2_pick_and_place", robot="panda", settle=0)
     try:
-        perception = make_perception("det-2d", backend)
-        assert isinstance(perception.grounder, OpenVocabularyDetector)
-        perception.detect(["apple"])  # a random model finds what it finds; the look must go through
-        assert perception.looks == 1
+        assert isinstance(make_perception("gt-scene", backend).grounder, OpenVocabularyDetector)
+        api = ToolAPI.for_simulation(backend, perception="full")
+        assert isinstance(api.perception.grounder, OpenVocabularyDetector)
+        api.detect_objects(["apple"])  # a random model finds what it finds; the look must go through
+        assert api.perception.looks == 1
+        scene = api.motion.scene  # and the planning scene is built from what the cameras saw
+        assert api.motion.scene_source is not None and "scene" in scene.body_labels
+        assert scene.is_free(backend.joint_positions())
     finally:
         backend.close()
     env = {k: v for k, v in os.environ.items() if k != DETECTOR_ENV}
-    command = [sys.executable, "-m", "roboscript.cli", "exec", "x.py", "--task", "simple_0", "--perception", "det-2d"]
+    command = [sys.executable, "-m", "roboscript.cli", "exec", "x.py", "--task", "simple_0", "--perception", "full"]
     run = subprocess.run(command, capture_output=True, text=True, timeout=120, env=env)
-    assert run.returncode == 2 and "perception det-2d needs a detector: set ROBOSCRIPT_DETECTOR=KIND:DIR" in run.stderr
+    assert run.returncode == 2 and "perception full needs a detector: set ROBOSCRIPT_DETECTOR=KIND:DIR" in run.stderr

@@ -293,7 +293,17 @@ def _add_perception_option(parser: argparse.ArgumentParser) -> None:
     from roboscript.perception.modes import PERCEPTION_MODES
 
     modes = "; ".join(f"{m}: {what}" for m, what in PERCEPTION_MODES.items())
-    parser.add_argument("--perception", choices=list(PERCEPTION_MODES), default="gt", help=modes)
+    modes += "; gt-2d, gt-3d and gt-scene combine with '+' (gt-2d+gt-scene)"
+    parser.add_argument("--perception", type=_perception_mode, default="gt", metavar="MODE", help=modes)
+
+
+def _perception_mode(text: str) -> str:
+    from roboscript.perception.modes import check_mode
+
+    try:
+        return check_mode(text)
+    except ValueError as exc:
+        raise argparse.ArgumentTypeError(str(exc)) from None
 
 
 def build_parser() -> argparse.ArgumentParser:

@@ -61,10 +61,14 @@ class ToolAPI:
     def for_simulation(cls, backend, seed: int = 0, perception: str = "gt") -> ToolAPI:
         """A planning scene with the world's exact geometry, and perception as ``perception`` says (see
         :data:`roboscript.perception.modes.PERCEPTION_MODES`): ground truth by default."""
-        from roboscript.perception.modes import make_perception
+        from roboscript.perception.modes import make_perception, parse_mode
 
-        motion = MotionPlanner.for_mujoco(backend, seed=seed)
-        return cls(backend, make_perception(perception, backend, seed), motion, seed)
+        seen = make_perception(perception, backend, seed)
+        if parse_mode(perception).observed_scene:
+            motion = MotionPlanner.perceived_in_mujoco(backend, seen, seed=seed)
+        else:
+            motion = MotionPlanner.for_mujoco(backend, seed=seed)
+        return cls(backend, seen, motion, seed)
 
     # --- the program's view ----------------------------------------------------------------------------------
 
@@ -114,6 +118,7 @@ class ToolAPI:
                 raise TypeError(f"object_list must be a list of names, e.g. ['apple', 'bowl'], got {object_list!r}")
             object_list = list(object_list)
         self.perception.detect(object_list)
+        self.motion.world_changed()
 
     @tool
     def get_object_center_position(self, object_name: str) -> np.ndarray:
@@ -364,10 +369,11 @@ class ToolAPI:
         if name not in self._held:
             raise ValueError(f"{name!r} is not attached; attached: {', '.join(self._held) or 'nothing'}")
         self._held.remove(name)
+        self.perception.released(name, self.backend.tcp_pose())
         if name in self.perception.objects():
-            self.perception.released(name, self.backend.tcp_pose())
             self.motion.detach(name)
             self.motion.scene.allow("gripper", name)
+        self.motion.world_changed()
         self._touch_allowed.add(name)
 
     # --- internals -------------------------------------------------------------------------------------------

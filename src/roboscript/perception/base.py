@@ -117,6 +117,10 @@ class Perception(ABC):
     def scene_points(self) -> np.ndarray:
         """Every observed surface point, (N, 3): for collision checks of grasp candidates."""
 
+    def last_frames(self) -> list:
+        """The camera frames :meth:`scene_points` came from (empty if it did not come from cameras)."""
+        return []
+
     @abstractmethod
     def receptacle(self, name: str) -> Receptacle | None:
         """The volume where things put into ``name`` go, or ``None`` if it holds nothing (an apple)."""
@@ -140,8 +144,8 @@ class Perception(ABC):
 
     def released(self, name: str, gripper: Transform) -> None:  # noqa: B027 (a hook: nothing to do by default)
         """The robot let ``name`` go with its gripper at ``gripper``: it moved as the gripper did since
-        :meth:`carried`. Perception that keeps what it saw moves it along; perception that reads the world's state
-        has nothing to do."""
+        :meth:`carried` (or, for a part such as a drawer, as the robot pulled it). Perception that keeps what it
+        saw moves it along; perception that reads the world's state has nothing to do."""
 
 
 def outside(points: np.ndarray, box: Box3D, margin: float = 0.0) -> np.ndarray:

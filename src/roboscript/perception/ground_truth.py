@@ -144,6 +144,9 @@ class GroundTruthPerception(Perception):
             clouds.append(world[keep])
         return np.concatenate(clouds) if clouds else np.zeros((0, 3))
 
+    def last_frames(self) -> list[CameraFrame]:
+        return self._camera_frames()
+
     def receptacle(self, name: str) -> Receptacle | None:
         entity = self._entity(name)
         if entity.kind == "object":

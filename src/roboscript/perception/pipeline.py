@@ -9,8 +9,10 @@ everything looked for so far, and each object seen again keeps its name (matched
 what the robot carried moved with the gripper). Something not seen again (hidden in a drawer) keeps its last
 estimate.
 
-Furniture and its parts (``cabinet.drawer_1``), their joints and the planning scene still come from ground truth
-in this version: articulation estimated from points is the next step.
+Furniture and its parts (``cabinet.drawer_1``) and their joints still come from ground truth in this version
+(``parts``): articulation estimated from points (:mod:`roboscript.perception.articulation`) is not yet wired in.
+The planning scene is built from what this store saw (:mod:`roboscript.planning.perceived_scene`) unless the mode
+takes it from ground truth.
 """
 
 from __future__ import annotations
@@ -193,12 +195,11 @@ class PipelinePerception(Perception):
 
     def released(self, name: str, gripper: Transform) -> None:
         """``name`` was let go: its points move as the gripper did since it was taken; the next question looks
-        again."""
-        start = self._carried.pop(name, None)
-        if start is None:
-            return
-        self.store[name] = _moved(self.store[name], gripper.compose(start.inverse()))
+        again (a part let go, a drawer pulled, has moved too)."""
         self._stale = True  # what was let go may settle, roll or push others: look again before answering
+        start = self._carried.pop(name, None)
+        if start is not None:
+            self.store[name] = _moved(self.store[name], gripper.compose(start.inverse()))
 
     # --- the questions ----------------------------------------------------------------------------------------
 
@@ -264,6 +265,9 @@ class PipelinePerception(Perception):
     def scene_points(self) -> np.ndarray:
         self._ensure_looked()
         return self.scene
+
+    def last_frames(self) -> list:
+        return list(self.last.frames) if self.last else []
 
     def receptacle(self, name: str) -> Receptacle | None:
         obj = self._object(name)

@@ -6,6 +6,7 @@ This is what the tool API's motion tools call. Every motion starts from the back
 from __future__ import annotations
 
 from collections.abc import Callable, Sequence
+from typing import Protocol
 
 import numpy as np
 
@@ -21,8 +22,23 @@ from roboscript.planning.timing import time_parameterize
 from roboscript.sim.simulator import ExecutionReport
 
 
+class SceneSource(Protocol):
+    """A planning scene that is rebuilt from observations (see :mod:`roboscript.planning.perceived_scene`)."""
+
+    def current(self) -> PlanningScene: ...
+
+    def state(self) -> np.ndarray: ...
+
+    def mark_stale(self) -> None: ...
+
+
 class MotionPlanner:
-    """Joint-space, pose and Cartesian motions for one arm, executed on a backend with tracking monitoring."""
+    """Joint-space, pose and Cartesian motions for one arm, executed on a backend with tracking monitoring.
+
+    The scene is either fixed (the simulator's geometry, kept in step by ``world_state``) or comes from a
+    :class:`SceneSource`, asked for the scene at every use: when it builds a new one, the contacts allowed in the
+    old one and what the gripper holds are carried over by name.
+    """
 
     def __init__(
         self,
@@ -33,15 +49,17 @@ class MotionPlanner:
         speed_scale: float = 0.5,
         tracking_tolerance: float = 0.02,
         seed: int | None = None,
+        scene_source: SceneSource | None = None,
     ):
         """``seed`` seeds the sampling planners, for repeatable runs (see :func:`seed_sampling`)."""
         if seed is not None:
             seed_sampling(seed)
         self.backend = backend
-        self.scene = scene
+        self._scene = scene
         self.kinematics = kinematics
         self.planner = JointPlanner(scene)
         self._world_state = world_state
+        self.scene_source = scene_source
         self.speed_scale = speed_scale
         self.tracking_tolerance = tracking_tolerance
         self.default_planner = "RRTConnect"
@@ -57,6 +75,48 @@ class MotionPlanner:
         scene = PlanningScene.from_sim_world(world, padding=padding)
         kinematics = ArmKinematics(description, robot_mount(world.spec, description))
         return cls(backend, scene, kinematics, lambda: world.data.qpos.copy(), **kwargs)
+
+    @classmethod
+    def perceived_in_mujoco(cls, backend, perception, padding: float = 0.005, **kwargs) -> MotionPlanner:
+        """A planner whose scene is built from what ``perception`` saw in the simulated world; only the robot's
+        joint readings are taken from the simulator."""
+        from roboscript.planning.perceived_scene import PerceivedSceneSource
+        from roboscript.sim.world import robot_joint_readings, robot_mount
+
+        world = backend.sim_world
+        description = world.robot.description
+        mount = robot_mount(world.spec, description)
+        robot = world.entity("robot").index
+        source = PerceivedSceneSource(perception, description, mount, robot_joint_readings(world), padding, robot)
+        kinematics = ArmKinematics(description, mount)
+        return cls(backend, source.current(), kinematics, source.state, scene_source=source, **kwargs)
+
+    @property
+    def scene(self) -> PlanningScene:
+        """The planning scene, rebuilt first if its source has seen the world change."""
+        if self.scene_source is not None:
+            fresh = self.scene_source.current()
+            if fresh is not self._scene:
+                self._adopt(fresh)
+        return self._scene
+
+    def _adopt(self, fresh: PlanningScene) -> None:
+        old = self._scene
+        for a, b in old.allowed_names():
+            if fresh.has(a) and fresh.has(b):
+                fresh.allow(a, b)
+        fresh.update(self._world_state())
+        q = self.backend.joint_positions()
+        for name in old.attached:
+            if name in fresh.object_bodies:
+                fresh.attach(name, q)
+        self._scene = fresh
+        self.planner = JointPlanner(fresh)
+
+    def world_changed(self) -> None:
+        """Something was let go or moved: a scene built from observations is rebuilt before it is next used."""
+        if self.scene_source is not None:
+            self.scene_source.mark_stale()
 
     # --- planning ------------------------------------------------------------------------------------------
 

@@ -5,8 +5,8 @@ pairs that involve the robot (or an object it holds) are tested: MuJoCo's contyp
 robot geoms collide with everything, and the rest of the world does not collide with itself (objects resting on
 the table are not a planning problem). Contacts closer than ``padding`` count as collisions.
 
-Objects come from ground truth here (:meth:`PlanningScene.from_sim_world` copies the simulated geometry and
-:meth:`update` copies its state); a perception-built scene supplies its own model in the same form.
+:meth:`PlanningScene.from_sim_world` copies the simulated geometry (ground truth) and :meth:`update` copies its
+state; :mod:`roboscript.planning.perceived_scene` builds a model of the same form from observed surfaces.
 """
 
 from __future__ import annotations
@@ -255,6 +255,18 @@ class PlanningScene:
     def allow(self, a: str, b: str, allowed: bool = True) -> None:
         """Allows (or forbids again) contact between two named things, e.g. the fingers and an object to grasp."""
         self._allow_bodies(self._bodies_named(a), self._bodies_named(b), allowed)
+
+    def has(self, name: str) -> bool:
+        """Whether ``name`` (or "gripper") names something in the scene."""
+        return name == "gripper" or name in self.body_labels
+
+    def allowed_names(self) -> set[tuple[str, str]]:
+        """The allowed contacts as pairs of names (gripper parts by their body names), to carry them into a
+        rebuilt scene."""
+        pairs = set()
+        for a, b in zip(*np.nonzero(np.triu(self._allowed)), strict=True):
+            pairs.add((self.body_labels[a], self.body_labels[b]))
+        return pairs
 
     def _bodies_named(self, name: str) -> list[int]:
         if name == "gripper":

@@ -7,6 +7,7 @@ the table, the robot) that ground truth, segmentation and the backend use.
 from __future__ import annotations
 
 import math
+from collections.abc import Callable
 from dataclasses import dataclass, field
 from typing import Literal
 
@@ -212,6 +213,18 @@ def attach_robot(spec: mujoco.MjSpec, description: RobotDescription, mount: Tran
     """Adds the robot (names prefixed ``robot/``) to ``spec`` with its base frame at ``mount``."""
     frame = spec.worldbody.add_frame(pos=list(mount.position), quat=list(quat_to_mujoco(mount.quaternion)))
     spec.attach(description.build_spec(), prefix=ROBOT_PREFIX, frame=frame)
+
+
+def robot_joint_readings(world: SimWorld) -> Callable[[], dict[str, float]]:
+    """The robot's joint readings by joint name (arm and gripper), as its encoders would give them."""
+    model = world.model
+    joints = [
+        (model.joint(j).name, int(model.jnt_qposadr[j]))
+        for j in range(model.njnt)
+        if model.joint(j).name.startswith(ROBOT_PREFIX)
+        and int(model.jnt_type[j]) in (int(mujoco.mjtJoint.mjJNT_HINGE), int(mujoco.mjtJoint.mjJNT_SLIDE))
+    ]
+    return lambda: {name: float(world.data.qpos[adr]) for name, adr in joints}
 
 
 def build_world(world: WorldSpec, robot: str | None = None) -> SimWorld:

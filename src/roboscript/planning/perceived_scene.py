@@ -1,0 +1,210 @@
+"""A planning scene from what the cameras saw: the robot's own model, each known object as a movable body of
+occupancy boxes (so it can be carried), and every other observed surface as fixed occupancy boxes named after the
+furniture part it lies on (so a gripper may be let touch a drawer it pulls), or ``scene``.
+
+Nothing here reads the simulator's geometry: the input is points. :class:`PerceivedSceneSource` rebuilds the
+scene from a :class:`~roboscript.perception.base.Perception` whenever the robot let something go or perception
+looked again, which is when what was seen may have moved.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable, Mapping
+from dataclasses import dataclass
+
+import mujoco
+import numpy as np
+
+from roboscript.geometry import Box3D, Transform
+from roboscript.perception.base import Perception
+from roboscript.perception.memory import remembered
+from roboscript.planning.occupancy import VOXEL, occupied_boxes
+from roboscript.planning.scene import PlanningScene
+from roboscript.robots.description import RobotDescription
+from roboscript.sim.world import RobotBinding, attach_robot, configure_options
+
+OBJECT_VOXEL = 0.01  # metres: objects are small and are reached into, so their boxes are finer
+UNKNOWN = "scene"  # the name of observed surfaces that belong to no known object or part
+OBJECT_MARGIN = 0.01  # metres around an object's box whose points are taken to be its own
+PART_MARGIN = 0.01  # metres around a part's box whose points are taken to be its own
+REACH = 1.2  # metres from the robot's base beyond which surfaces are no obstacle (either arm reaches < 1 m)
+BELOW_BASE = 0.05  # metres below the robot's base (the table it stands on) beyond which surfaces are no obstacle
+
+
+@dataclass(frozen=True)
+class SceneContents:
+    """Observed points sorted by what they belong to: ``objects`` move (and may be carried), ``fixed`` do not."""
+
+    objects: Mapping[str, np.ndarray]
+    fixed: Mapping[str, np.ndarray]
+
+
+def build_perceived_scene(
+    description: RobotDescription, mount: Transform, contents: SceneContents, padding: float = 0.005
+) -> PlanningScene:
+    """A :class:`PlanningScene` of the robot at ``mount`` and occupancy boxes of ``contents``. Every name in
+    ``contents`` is a body of the scene, even with no points, so tools may allow or forbid contacts with it."""
+    spec = mujoco.MjSpec()
+    spec.modelname = "perceived"
+    configure_options(spec)
+    attach_robot(spec, description, mount)
+    for name, points in contents.fixed.items():
+        body = spec.worldbody.add_body(name=f"fixed/{name}")
+        _add_boxes(body, occupied_boxes(points, VOXEL), np.zeros(3))
+    for name, points in contents.objects.items():
+        points = np.asarray(points, dtype=float).reshape(-1, 3)
+        origin = points.mean(axis=0) if len(points) else np.zeros(3)
+        body = spec.worldbody.add_body(name=f"object/{name}", pos=list(origin))
+        body.add_freejoint()
+        # Planning never steps this model; a fixed mass spares bodies with no points MuJoCo's mass check.
+        body.mass, body.inertia, body.explicitinertial = 0.1, [1e-4, 1e-4, 1e-4], True
+        _add_boxes(body, occupied_boxes(points, OBJECT_VOXEL), origin)
+    model = spec.compile()
+    labels = []
+    for b in range(model.nbody):
+        name = model.body(b).name
+        labels.append(name.split("/", 1)[1] if name.startswith(("fixed/", "object/")) else name)
+    objects = {name: model.body(f"object/{name}").id for name in contents.objects}
+    return PlanningScene(model, RobotBinding.bind(model, description), labels, objects, padding)
+
+
+def _add_boxes(body, boxes, origin: np.ndarray) -> None:
+    for box in boxes:
+        body.add_geom(
+            type=mujoco.mjtGeom.mjGEOM_BOX,
+            pos=list(box.center - origin),
+            size=list(np.maximum(box.half_size, 1e-4)),
+            contype=1,
+            conaffinity=1,
+            group=3,
+        )
+
+
+def sort_points(
+    scene_points: np.ndarray,
+    objects: Mapping[str, np.ndarray],
+    object_boxes: Mapping[str, Box3D],
+    parts: Mapping[str, Box3D],
+) -> SceneContents:
+    """Observed points sorted for :func:`build_perceived_scene`: each object keeps its own points, and surfaces
+    near an object's box are left out of the fixed ones (they are its unclaimed edges, and a hand reaching for it
+    must not find them in the way). The rest goes to the smallest part box it lies in, else to ``scene``.
+
+    Points under an object's box are kept: the table it stands on stays whole under it."""
+    rest = np.asarray(scene_points, dtype=float).reshape(-1, 3)
+    for box in object_boxes.values():
+        lower = box.lower - OBJECT_MARGIN
+        lower[2] = box.lower[2] + 0.005
+        inside = np.all((rest > lower) & (rest < box.upper + OBJECT_MARGIN), axis=1)
+        rest = rest[~inside]
+    fixed: dict[str, np.ndarray] = {name: np.zeros((0, 3)) for name in parts}
+    owner = np.full(len(rest), -1)
+    smallest = np.full(len(rest), np.inf)
+    names = list(parts)
+    for k, name in enumerate(names):
+        box = parts[name]
+        inside = np.all((rest > box.lower - PART_MARGIN) & (rest < box.upper + PART_MARGIN), axis=1)
+        volume = float(np.prod(box.upper - box.lower))
+        better = inside & (volume < smallest)
+        owner[better], smallest[better] = k, volume
+    for k, name in enumerate(names):
+        fixed[name] = rest[owner == k]
+    fixed[UNKNOWN] = rest[owner == -1]
+    return SceneContents(dict(objects), fixed)
+
+
+def filled_below(points: np.ndarray, floor: float, step: float = OBJECT_VOXEL / 2) -> np.ndarray:
+    """``points`` with each column of them filled down to ``floor``: an object resting on something is solid
+    under the surfaces seen from above (its sides and underside are often out of every camera's sight, and a
+    finger must not pass under a banana's seen top). A bowl's inside is filled only below its seen bottom."""
+    points = np.asarray(points, dtype=float).reshape(-1, 3)
+    if len(points) == 0:
+        return points
+    columns = np.floor(points[:, :2] / step).astype(np.int64)
+    keys, inverse = np.unique(columns, axis=0, return_inverse=True)
+    lowest = np.full(len(keys), np.inf)
+    np.minimum.at(lowest, inverse.reshape(-1), points[:, 2])
+    fill = []
+    for (i, j), low in zip(keys, lowest, strict=True):
+        heights = np.arange(floor, low, step)
+        if len(heights):
+            xy = (np.array([i, j]) + 0.5) * step
+            fill.append(np.column_stack([np.full(len(heights), xy[0]), np.full(len(heights), xy[1]), heights]))
+    return np.vstack([points, *fill]) if fill else points
+
+
+def within_reach(points: np.ndarray, mount: Transform) -> np.ndarray:
+    """The points the arm mounted at ``mount`` could touch: within :data:`REACH` of its base and not below the
+    surface it stands on (the floor, far walls and the table's legs are out of its reach)."""
+    points = np.asarray(points, dtype=float).reshape(-1, 3)
+    near = np.linalg.norm(points - mount.position, axis=1) < REACH
+    return points[near & (points[:, 2] > mount.position[2] - BELOW_BASE)]
+
+
+class PerceivedSceneSource:
+    """Keeps a planning scene built from ``perception`` up to date.
+
+    ``robot_state`` gives the robot's joint readings by joint name (the arm's and the gripper's: proprioception,
+    which a real robot has too). Surfaces seen in earlier looks that the robot's body (segmentation index
+    ``robot_index``) now hides are remembered (:mod:`roboscript.perception.memory`). :meth:`current` rebuilds
+    the scene when :meth:`mark_stale` was called or perception has looked again since the last build.
+    """
+
+    def __init__(
+        self,
+        perception: Perception,
+        description: RobotDescription,
+        mount: Transform,
+        robot_state: Callable[[], Mapping[str, float]],
+        padding: float = 0.005,
+        robot_index: int | None = None,
+    ):
+        self.perception, self.description, self.mount = perception, description, mount
+        self.robot_state, self.padding, self.robot_index = robot_state, padding, robot_index
+        self._memory = np.zeros((0, 3))  # the observed surfaces the last scene was built from
+        self.builds = 0
+        self._scene: PlanningScene | None = None
+        self._looks = -1
+        self._stale = True
+
+    def mark_stale(self) -> None:
+        """What was seen may have moved (the robot let go of something, or moved a part): rebuild before use."""
+        self._stale = True
+
+    def current(self) -> PlanningScene:
+        looks = getattr(self.perception, "looks", 0)
+        if self._scene is None or self._stale or looks != self._looks:
+            contents = self.contents()  # may look again, which counts as a look
+            self._scene = build_perceived_scene(self.description, self.mount, contents, self.padding)
+            self._looks, self._stale = getattr(self.perception, "looks", 0), False
+            self.builds += 1
+        return self._scene
+
+    def contents(self) -> SceneContents:
+        perception = self.perception
+        objects = perception.objects()
+        scene_points = within_reach(perception.scene_points(), self.mount)
+        frames = perception.last_frames()
+        hidden = [
+            None if self.robot_index is None or f.segmentation is None else f.segmentation == self.robot_index
+            for f in frames
+        ]
+        if frames:
+            scene_points = np.vstack([scene_points, remembered(self._memory, frames, hidden)])
+        self._memory = scene_points
+        object_boxes = {name: perception.box(name) for name in objects}
+        object_points = {
+            name: filled_below(perception.points(name).points, float(object_boxes[name].lower[2])) for name in objects
+        }
+        parts = {name: perception.box(name) for name in perception.names() if name not in objects}
+        return sort_points(scene_points, object_points, object_boxes, parts)
+
+    def state(self) -> np.ndarray:
+        """The scene's ``qpos``: objects where they were seen, the robot's joints as read."""
+        scene = self._scene or self.current()  # the scene the planner has: it asked for it just before
+        qpos = scene.model.qpos0.copy()
+        readings = self.robot_state()
+        for name, value in readings.items():
+            joint = scene.model.joint(name)
+            qpos[joint.qposadr[0]] = value
+        return qpos

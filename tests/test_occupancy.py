@@ -1,0 +1,52 @@
+"""Occupancy boxes from points: an exact, disjoint cover of the occupied voxels, each box tight on its points."""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+
+from roboscript.planning.occupancy import THICKNESS, merge_voxels, occupied_boxes, occupied_voxels
+
+
+def _cover(boxes) -> list[tuple[int, int, int]]:
+    return [
+        (i, j, k)
+        for first, last in boxes
+        for i in range(first[0], last[0] + 1)
+        for j in range(first[1], last[1] + 1)
+        for k in range(first[2], last[2] + 1)
+    ]
+
+
+def test_merged_boxes_cover_the_occupied_voxels_exactly_once():
+    rng = np.random.default_rng(3)
+    cells = {tuple(int(v) for v in c) for c in rng.integers(0, 6, size=(120, 3))}
+    covered = _cover(merge_voxels(cells))
+    assert len(covered) == len(set(covered))  # disjoint
+    assert set(covered) == cells  # exact
+
+
+def test_a_flat_sheet_becomes_one_box():
+    cells = {(i, j, 4) for i in range(10) for j in range(7)}
+    assert len(merge_voxels(cells)) == 1
+
+
+def test_a_table_with_a_box_on_it_keeps_the_table_top_where_it_was_seen():
+    rng = np.random.default_rng(0)
+    table = np.column_stack([rng.uniform(-0.5, 0.5, 40000), rng.uniform(-0.4, 0.4, 40000), np.full(40000, 0.82)])
+    box = rng.uniform(0.0, 0.1, (8000, 3)) + np.array([0.1, 0.1, 0.82])
+    boxes = occupied_boxes(np.vstack([table, box]))
+    away = [b for b in boxes if b.upper[0] < 0.05 or b.lower[0] > 0.25]  # table away from the box
+    assert away and all(abs(b.upper[2] - 0.82) < 1e-9 and b.lower[2] < 0.82 - THICKNESS / 2 for b in away)
+    assert len(boxes) < 100  # merged, not one box per voxel (there are over 900)
+    points = np.vstack([table, box])[::50]
+    inside = [np.any([np.all((p >= b.lower - 1e-9) & (p <= b.upper + 1e-9)) for b in boxes]) for p in points]
+    assert all(inside)  # every point is in a box
+
+
+def test_bad_sizes_are_refused():
+    with pytest.raises(ValueError, match="voxel must be a positive size in metres, got 0"):
+        occupied_voxels(np.zeros((3, 3)), 0)
+    with pytest.raises(ValueError, match="thickness must be >= 0 metres"):
+        occupied_boxes(np.zeros((3, 3)), thickness=-1)
+    assert occupied_boxes(np.zeros((0, 3))) == []

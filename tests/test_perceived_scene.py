@@ -1,0 +1,94 @@
+"""The planning scene built from what the cameras saw: it agrees with the simulator's geometry on which arm
+configurations collide, carries objects, and is rebuilt when the world changed, keeping what was allowed and held."""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+
+from roboscript.api.tools import ToolAPI
+from roboscript.backends.mujoco_backend import MujocoBackend
+from roboscript.geometry import Box3D
+from roboscript.perception.modes import parse_mode
+from roboscript.planning.perceived_scene import UNKNOWN, sort_points
+from roboscript.planning.scene import PlanningScene
+from roboscript.sim.world import robot_joint_readings
+
+
+@pytest.fixture(scope="module")
+def world():
+    backend = MujocoBackend("world_2_pick_and_place", robot="panda")
+    yield backend
+    backend.close()
+
+
+def test_the_perceived_scene_agrees_with_the_simulators_geometry(world):
+    truth = PlanningScene.from_sim_world(world.sim_world)
+    api = ToolAPI.for_simulation(world, perception="gt-2d")
+    scene = api.motion.scene
+    assert {"apple", "footed_bowl", UNKNOWN} <= set(scene.body_labels)
+    assert "table" not in scene.body_labels  # nothing named from the simulator's geometry: the table is seen
+    state = api.motion.scene_source.state()
+    readings = robot_joint_readings(world.sim_world)()
+    assert any("finger" in name for name in readings)  # the gripper's joints too: open fingers are wider
+    for name, value in readings.items():
+        assert state[scene.model.joint(name).qposadr[0]] == value
+    scene.update(state)
+    rng = np.random.default_rng(1)
+    samples = [rng.uniform(truth.joint_lower, truth.joint_upper) for _ in range(300)]
+    verdicts = [(truth.is_free(q), scene.is_free(q)) for q in samples]
+    agreement = np.mean([a == b for a, b in verdicts])
+    assert agreement >= 0.95, agreement
+    assert sum(not a for a, _ in verdicts) > 30  # the sample does collide often enough to tell
+    assert scene.is_free(world.joint_positions())
+
+
+def test_a_rebuilt_scene_keeps_what_was_allowed_and_what_is_held(world):
+    api = ToolAPI.for_simulation(world, perception="gt-2d")
+    motion = api.motion
+    first = motion.scene
+    first.allow("gripper", "apple")
+    motion.attach("apple")
+    motion.world_changed()
+    second = motion.scene
+    assert second is not first and motion.scene_source.builds == 2
+    assert second.attached == ["apple"]
+    with_apple = {pair for pair in first.allowed_names() if "apple" in pair}
+    assert with_apple and with_apple <= second.allowed_names()
+    assert motion.scene is second  # nothing changed since: no rebuild
+    motion.detach("apple")
+
+
+def test_points_near_an_object_are_its_own_and_parts_take_theirs():
+    table = np.column_stack([np.linspace(-0.5, 0.5, 200), np.zeros(200), np.full(200, 0.82)])
+    apple = np.array([[0.0, 0.0, 0.85], [0.02, 0.0, 0.87]])
+    handle = np.array([[0.4, 0.0, 0.9]])
+    contents = sort_points(
+        np.vstack([table, apple, handle]),
+        {"apple": apple},
+        {"apple": Box3D(np.array([-0.03, -0.03, 0.82]), np.array([0.03, 0.03, 0.88]))},
+        {
+            "cabinet": Box3D(np.array([0.3, -0.2, 0.82]), np.array([0.6, 0.2, 1.2])),
+            "cabinet.handle_0": Box3D(np.array([0.39, -0.01, 0.89]), np.array([0.41, 0.01, 0.91])),
+        },
+    )
+    assert np.array_equal(contents.objects["apple"], apple)
+    assert len(contents.fixed["cabinet.handle_0"]) == 1  # the smallest part box a point lies in takes it
+    under = contents.fixed[UNKNOWN]
+    assert np.any(np.abs(under[:, 0]) < 0.02)  # the table under the apple stays
+    assert not np.any(np.isin(apple, contents.fixed[UNKNOWN]).all(axis=1))
+
+
+@pytest.mark.parametrize(
+    ("mode", "truth"),
+    [("gt", {"2d", "3d", "scene"}), ("full", set()), ("gt-2d", {"2d"}), ("gt-2d+gt-scene", {"2d", "scene"})],
+)
+def test_modes_name_the_stages_taken_from_ground_truth(mode, truth):
+    assert parse_mode(mode).from_truth == truth
+
+
+def test_an_unknown_mode_lists_the_modes():
+    for bad in ("gt-4d", "gt-2d+gt-2d", "2d", "gt+gt-2d"):
+        with pytest.raises(ValueError, match=r"unknown perception mode .*modes: gt \(ground truth everywhere\)"):
+            parse_mode(bad)
+    assert parse_mode("gt-2d").needs_detector is False and parse_mode("gt-scene").needs_detector is True
