@@ -51,3 +51,27 @@ def test_a_door_turns_about_the_edge_away_from_its_handle(cabinet):
 def test_too_few_points_for_a_front_is_an_error():
     with pytest.raises(ValueError, match="at least 10 points, got 3"):
         front_plane(np.zeros((3, 3)), np.ones(3))
+
+
+def test_the_camera_pipeline_estimates_every_cabinet_joint(cabinet):
+    """With ground-truth 2D boxes (no segmentation masks), fronts and handles are cut from the fused views as any
+    object is, and the joints estimated from them."""
+    backend, _, truth = cabinet
+    seen = make_perception("gt-2d", backend)
+    expected, found = truth.joints("cabinet"), seen.joints("cabinet")
+    assert [j.part for j in found] == [j.part for j in expected] and len(found) == 4
+    for e, f in zip(expected, found, strict=True):
+        assert f.type == e.type
+        assert np.degrees(np.arccos(np.clip(f.axis @ e.axis, -1, 1))) < 1.0  # same direction, same sign
+        offset = f.position - e.position
+        assert np.linalg.norm(offset - (offset @ e.axis) * e.axis) < 0.01  # the same line
+    assert seen.joints("cabinet.handle_1")[0].part == "cabinet.drawer_1"
+
+
+def test_a_part_no_view_saw_cannot_have_its_joint_estimated(cabinet):
+    backend, _, _ = cabinet
+    seen = make_perception("gt-2d", backend)
+    seen.detect(["mug"])
+    del seen.part_points["cabinet.drawer_2"]
+    with pytest.raises(KeyError, match=r"'cabinet.drawer_2' was not found: its front was not seen well enough"):
+        seen.joints("cabinet")

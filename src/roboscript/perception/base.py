@@ -7,6 +7,8 @@ questions, so the tools and the benchmark's ablations switch between them withou
 from __future__ import annotations
 
 from abc import ABC, abstractmethod
+from collections.abc import Iterator
+from contextlib import contextmanager
 from dataclasses import dataclass
 
 import numpy as np
@@ -136,6 +138,14 @@ class Perception(ABC):
         for name in ignore:
             points = outside(points, self.box(name), OCCUPANCY_MARGIN)
         return points
+
+    @contextmanager
+    def without_looking(self) -> Iterator[None]:
+        """Within this block, questions are answered from what is known, without looking again. The planning
+        scene is rebuilt at the first motion after a let-go, while the hand still hides what it let go of: that
+        look would be a poor one, and the next question about an object, asked once the hand has moved away,
+        makes a better one."""
+        yield
 
     def carried(self, name: str, gripper: Transform) -> None:  # noqa: B027 (a hook: nothing to do by default)
         """The robot took hold of ``name`` with its gripper at ``gripper``: until :meth:`released`, it goes where

@@ -89,7 +89,7 @@ class SegmentationGrounder(Grounder):
         noise: GroundingNoise | None = None,
         seed: int = 0,
     ):
-        self.entities = [e for e in entities if e.kind == "object"]
+        self.entities = [e for e in entities if e.kind in ("object", "part")]  # parts: fronts and handles
         self.min_pixels = min_pixels
         self.noise = noise or GroundingNoise()
         self._rng = np.random.default_rng(seed)

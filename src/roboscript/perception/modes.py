@@ -6,8 +6,9 @@ observed surfaces as occupancy boxes). ``full`` takes none from ground truth, ``
 ``gt-scene`` each take one, and can be combined with ``+`` (``gt-2d+gt-scene``) to isolate the rest.
 
 Without ground-truth 2D boxes, the boxes come from an open-vocabulary detector whose weights the user provides
-(``$ROBOSCRIPT_DETECTOR=owlv2:DIR`` or ``grounding-dino:DIR``). Furniture parts and their joints come from ground
-truth in every mode so far (:mod:`roboscript.perception.articulation` estimates them from points, not yet wired).
+(``$ROBOSCRIPT_DETECTOR=owlv2:DIR`` or ``grounding-dino:DIR``). Where objects are observed, furniture joints are
+estimated from the points of the parts' fronts and handles (:mod:`roboscript.perception.articulation`); the parts'
+boxes, points and interiors still come from ground truth in every mode.
 """
 
 from __future__ import annotations

@@ -9,8 +9,9 @@ everything looked for so far, and each object seen again keeps its name (matched
 what the robot carried moved with the gripper). Something not seen again (hidden in a drawer) keeps its last
 estimate.
 
-Furniture and its parts (``cabinet.drawer_1``) and their joints still come from ground truth in this version
-(``parts``): articulation estimated from points (:mod:`roboscript.perception.articulation`) is not yet wired in.
+Furniture parts (``cabinet.drawer_1``, ``cabinet.handle_1``) are looked for with every look too, and their joints
+estimated from their points (:mod:`roboscript.perception.articulation`); their boxes, points and interiors still
+come from ground truth in this version (``parts``).
 The planning scene is built from what this store saw (:mod:`roboscript.planning.perceived_scene`) unless the mode
 takes it from ground truth.
 """
@@ -18,13 +19,15 @@ takes it from ground truth.
 from __future__ import annotations
 
 import math
-from collections.abc import Sequence
+from collections.abc import Iterator, Sequence
+from contextlib import contextmanager
 from dataclasses import dataclass, field
 
 import numpy as np
 
 from roboscript.backends.base import Backend
 from roboscript.geometry import Box3D, Transform, quat_from_yaw
+from roboscript.perception.articulation import door_joint, drawer_joint
 from roboscript.perception.base import (
     OCCUPANCY_MARGIN,
     ArticulationJoint,
@@ -99,6 +102,7 @@ class PipelinePerception(Perception):
         self.vocabulary = [normalize_phrase(v) for v in vocabulary]
         self.robot_index, self.settings = robot_index, settings
         self.store: dict[str, SeenObject] = {}
+        self.part_points: dict[str, np.ndarray] = {}  # furniture parts (fronts, handles) as last seen
         self.not_found: dict[str, str] = {}
         self.scene: np.ndarray = np.zeros((0, 3))
         self.last: Observation | None = None
@@ -107,6 +111,9 @@ class PipelinePerception(Perception):
         self._carried: dict[str, Transform] = {}  # objects in the gripper, with where the gripper took them
         self._looked = False
         self._stale = False
+        self._joints: dict[str, ArticulationJoint] = {}  # estimated from the last look, by moving part
+        self._vacated: list[Box3D] = []  # where objects were taken from since the last look
+        self._holding_looks = False
 
     # --- looking ----------------------------------------------------------------------------------------------
 
@@ -121,11 +128,18 @@ class PipelinePerception(Perception):
         masks = None
         if self.robot_index is not None:
             masks = [None if f.segmentation is None else f.segmentation == self.robot_index for f in frames]
-        seen = observe(frames, self.grounder, phrases, self.settings, masks)
+        part_phrases = {p: n for p, n in self._part_phrases().items() if p not in phrases}
+        seen = observe(frames, self.grounder, phrases + list(part_phrases), self.settings, masks)
         self.last, self._looked, self._stale = seen, True, False
+        self._vacated = []
         self.looks += 1
         self.scene = seen.scene.points
         self._asked += [p for p in phrases if p not in self._asked]
+        self._joints.clear()
+        for phrase, part in part_phrases.items():
+            found = [i for i in seen.instances if i.label == phrase]
+            if found:
+                self.part_points[part] = max(found, key=lambda i: len(i.points)).points
         for phrase in phrases:
             found = [i for i in seen.instances if i.label == phrase]
             self.not_found.pop(phrase, None)
@@ -177,21 +191,22 @@ class PipelinePerception(Perception):
         do not need a fresh look, geometry does: by the time it is asked for the hand has usually moved away)."""
         if not self._looked:
             self.detect(None)
-        elif fresh and self._stale:
+        elif fresh and self._stale and not self._holding_looks:
             self.backend.wait(SETTLE_TIME)  # what was let go may still be rolling
             self._look(list(self._asked))
 
-    def occupied(self, ignore: list[str]) -> np.ndarray:
-        """As :meth:`Perception.occupied`; an object that was carried away leaves no ghost where it was seen."""
-        points = super().occupied(ignore)
-        for name in ignore:
-            if name in self.store:  # where the last look saw it
-                points = outside(points, self.store[name].box, OCCUPANCY_MARGIN)
-        return points
+    @contextmanager
+    def without_looking(self) -> Iterator[None]:
+        holding, self._holding_looks = self._holding_looks, True
+        try:
+            yield
+        finally:
+            self._holding_looks = holding
 
     def carried(self, name: str, gripper: Transform) -> None:
         if name in self.store:
             self._carried[name] = gripper
+            self._vacated.append(self.store[name].box)
 
     def released(self, name: str, gripper: Transform) -> None:
         """``name`` was let go: its points move as the gripper did since it was taken; the next question looks
@@ -248,7 +263,40 @@ class PipelinePerception(Perception):
         return Transform(np.array([center[0], center[1], obj.box.lower[2]]), quat_from_yaw(yaw))
 
     def joints(self, name: str) -> list[ArticulationJoint]:
-        return [] if self._object(name) else self.parts.joints(name)
+        """The joints of furniture or a part, estimated from the points of each moving part's front and its
+        handle (:mod:`roboscript.perception.articulation`). Which parts move, and whether they slide or turn, is
+        what their labels say (``parts``); where and along what they move is from the points."""
+        if self._object(name):
+            return []
+        return [self._estimated(truth) for truth in self.parts.joints(name)]
+
+    def _part_phrases(self) -> dict[str, str]:
+        """Phrase -> name of each furniture part (``cabinet.drawer_1``, ``cabinet.handle_1``), looked for with
+        every look so that their joints can be estimated."""
+        movable = set(self.parts.objects())
+        return {normalize_phrase(n): n for n in self.parts.names() if n not in movable and "." in n}
+
+    def _estimated(self, labelled: ArticulationJoint) -> ArticulationJoint:
+        part = labelled.part
+        if part in self._joints:
+            return self._joints[part]
+        front = self.part_points.get(part)
+        if front is None or len(front) < 10:
+            points = 0 if front is None else len(front)
+            raise ObjectNotFoundError(
+                part, self.names(), f"its front was not seen well enough to estimate its joint ({points} points)"
+            )
+        handles = [n for n in self.part_points if ".handle" in n]
+        if not handles:
+            raise ObjectNotFoundError(
+                part, self.names(), "no handle was seen, and a joint is estimated from its handle"
+            )
+        center = front.mean(axis=0)
+        handle = min(handles, key=lambda n: float(np.linalg.norm(self.part_points[n].mean(axis=0) - center)))
+        handle_center = self.part_points[handle].mean(axis=0)
+        estimate = drawer_joint if labelled.type == "prismatic" else door_joint
+        self._joints[part] = estimate(part, front, handle_center)
+        return self._joints[part]
 
     def plane_normal(self, name: str, position: np.ndarray) -> np.ndarray:
         obj = self._object(name)
@@ -263,8 +311,12 @@ class PipelinePerception(Perception):
         return ObjectPoints(obj.points, obj.normals)
 
     def scene_points(self) -> np.ndarray:
+        """The surfaces of the last look, less where objects were taken from since (they are gone from there)."""
         self._ensure_looked()
-        return self.scene
+        points = self.scene
+        for box in self._vacated:
+            points = outside(points, box, OCCUPANCY_MARGIN)
+        return points
 
     def last_frames(self) -> list:
         return list(self.last.frames) if self.last else []

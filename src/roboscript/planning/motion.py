@@ -43,7 +43,7 @@ class MotionPlanner:
     def __init__(
         self,
         backend: Backend,
-        scene: PlanningScene,
+        scene: PlanningScene | None,
         kinematics: ArmKinematics,
         world_state: Callable[[], np.ndarray],
         speed_scale: float = 0.5,
@@ -55,9 +55,11 @@ class MotionPlanner:
         if seed is not None:
             seed_sampling(seed)
         self.backend = backend
+        if scene is None and scene_source is None:
+            raise ValueError("a motion planner needs a planning scene or a source of one")
         self._scene = scene
         self.kinematics = kinematics
-        self.planner = JointPlanner(scene)
+        self._planner = JointPlanner(scene) if scene is not None else None
         self._world_state = world_state
         self.scene_source = scene_source
         self.speed_scale = speed_scale
@@ -89,16 +91,25 @@ class MotionPlanner:
         robot = world.entity("robot").index
         source = PerceivedSceneSource(perception, description, mount, robot_joint_readings(world), padding, robot)
         kinematics = ArmKinematics(description, mount)
-        return cls(backend, source.current(), kinematics, source.state, scene_source=source, **kwargs)
+        # The scene is built at the first motion: by then the program has said what to look for.
+        return cls(backend, None, kinematics, source.state, scene_source=source, **kwargs)
 
     @property
     def scene(self) -> PlanningScene:
         """The planning scene, rebuilt first if its source has seen the world change."""
         if self.scene_source is not None:
             fresh = self.scene_source.current()
-            if fresh is not self._scene:
+            if self._scene is None:
+                self._scene, self._planner = fresh, JointPlanner(fresh)
+            elif fresh is not self._scene:
                 self._adopt(fresh)
         return self._scene
+
+    @property
+    def planner(self) -> JointPlanner:
+        """The joint-space planner of the current scene."""
+        self.scene  # noqa: B018 (brings the scene, and with it the planner, up to date)
+        return self._planner
 
     def _adopt(self, fresh: PlanningScene) -> None:
         old = self._scene
@@ -111,7 +122,7 @@ class MotionPlanner:
             if name in fresh.object_bodies:
                 fresh.attach(name, q)
         self._scene = fresh
-        self.planner = JointPlanner(fresh)
+        self._planner = JointPlanner(fresh)
 
     def world_changed(self) -> None:
         """Something was let go or moved: a scene built from observations is rebuilt before it is next used."""

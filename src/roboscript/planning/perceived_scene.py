@@ -174,7 +174,8 @@ class PerceivedSceneSource:
     def current(self) -> PlanningScene:
         looks = getattr(self.perception, "looks", 0)
         if self._scene is None or self._stale or looks != self._looks:
-            contents = self.contents()  # may look again, which counts as a look
+            with self.perception.without_looking():
+                contents = self.contents()
             self._scene = build_perceived_scene(self.description, self.mount, contents, self.padding)
             self._looks, self._stale = getattr(self.perception, "looks", 0), False
             self.builds += 1
