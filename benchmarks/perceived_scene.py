@@ -20,6 +20,7 @@ import numpy as np
 
 from roboscript.api.tools import ToolAPI
 from roboscript.backends.mujoco_backend import MujocoBackend
+from roboscript.perception.modes import parse_mode
 from roboscript.planning.scene import PlanningScene
 from roboscript.sim.world_catalog import world_names
 
@@ -69,6 +70,8 @@ def main() -> None:
     parser.add_argument("--robot", choices=["panda", "ur5e"], default="panda")
     parser.add_argument("--mode", default="gt-2d", help="a perception mode whose planning scene is observed")
     args = parser.parse_args()
+    if not parse_mode(args.mode).observed_scene:
+        parser.error(f"--mode {args.mode} takes the planning scene from ground truth; give one that observes it")
     print(f"{'world':34} {'agree':>6} {'missed':>6} {'extra':>6} {'colliding':>9} {'boxes':>6} {'build s':>8}")
     rows = []
     for world in world_names():

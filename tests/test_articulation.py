@@ -75,3 +75,21 @@ def test_a_part_no_view_saw_cannot_have_its_joint_estimated(cabinet):
     del seen.part_points["cabinet.drawer_2"]
     with pytest.raises(KeyError, match=r"'cabinet.drawer_2' was not found: its front was not seen well enough"):
         seen.joints("cabinet")
+
+
+def test_an_open_drawers_axis_is_still_its_fronts_normal():
+    """Open, a drawer shows the cameras above it more bottom than front: the front is the upright plane."""
+    backend = MujocoBackend("world_5_mug_to_cabinet", robot="panda")
+    try:
+        truth = make_perception("gt", backend)
+        (closed,) = truth.joints("cabinet.drawer_1")
+        world = backend.sim_world
+        body = world.entity("cabinet.drawer_1").bodies[0]
+        world.data.qpos[world.model.jnt_qposadr[world.model.body_jntadr[body]]] = 0.2  # pulled out 20 cm
+        backend.wait(0.2)
+        assert truth.joints("cabinet.drawer_1")[0].value > 0.15
+        seen = make_perception("gt-2d", backend)
+        (found,) = seen.joints("cabinet.drawer_1")
+        assert np.degrees(np.arccos(np.clip(found.axis @ closed.axis, -1, 1))) < 2.0
+    finally:
+        backend.close()

@@ -275,7 +275,7 @@ class ToolAPI:
         self._allow_start_contacts()
         # The fingers may touch the object only on the final straight approach, not on the way to its start.
         q = self.motion.sync()
-        with _touch(self.motion.scene, self._new_touches(target.position)):
+        with _touch(self.motion, self._new_touches(target.position)):
             goal, approach = self.motion.straight_approach(target, PRE_GRASP_DISTANCE, q)
         self.motion.move_to_joints(approach[0] if approach is not None else self.motion.ik(pre, goal))
         self._allow_touch_near(target.position)
@@ -420,13 +420,12 @@ class ToolAPI:
     def _first_reachable(self, name: str, candidates: list[Transform], kind: str) -> Transform:
         """The first candidate whose grasp and pre-grasp poses have collision-free IK (the gripper may touch the
         object itself); each is also tried turned half a turn about its approach axis."""
-        scene = self.motion.scene
         q = self.motion.sync()
         errors: list[str] = []
         flip = Transform(np.zeros(3), np.array([0.0, 0.0, 1.0, 0.0]))
         fallback: Transform | None = None
         new = [n for n in self._grasp_family(name) if n not in self._touch_allowed and n not in self._held]
-        with _touch(scene, new):
+        with _touch(self.motion, new):
             for candidate in candidates:
                 for pose in (candidate, candidate.compose(flip)):
                     try:
@@ -588,16 +587,18 @@ class ToolAPI:
 class _touch:
     """Context: the gripper may touch these names while candidate grasps are checked."""
 
-    def __init__(self, scene, names: list[str]):
-        self.scene, self.names = scene, names
+    # The motion, not its scene: a scene rebuilt within the block (a look on the way) carries the allowance over,
+    # and it is withdrawn from the scene in use at the end.
+    def __init__(self, motion, names: list[str]):
+        self.motion, self.names = motion, names
 
     def __enter__(self):
         for name in self.names:
-            self.scene.allow("gripper", name)
+            self.motion.scene.allow("gripper", name)
 
     def __exit__(self, *exc):
         for name in self.names:
-            self.scene.allow("gripper", name, False)
+            self.motion.scene.allow("gripper", name, False)
 
 
 def _clear_of(spots: list, points: np.ndarray, radius: float) -> list:

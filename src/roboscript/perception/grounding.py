@@ -102,7 +102,8 @@ class SegmentationGrounder(Grounder):
         present = np.unique(seg)
         out = []
         for entity in self.entities:
-            names = entity_phrases(entity)
+            # A part answers to its full name only: asking for "handle" should not put handles among the objects.
+            names = entity_phrases(entity) if entity.kind == "object" else {normalize_phrase(entity.name)}
             label = next((p for p in wanted if p in names), None)
             if label is None or entity.index not in present:
                 continue

@@ -29,6 +29,7 @@ PERCEPTION_MODES = {
     "gt-scene": "as full, with the ground-truth planning scene (the simulator's geometry)",
 }
 DETECTOR_ENV = "ROBOSCRIPT_DETECTOR"
+ALIASES = {"det-2d": "gt-scene"}  # the earlier name of detector boxes with the exact planning scene, for old runs
 
 
 @dataclass(frozen=True)
@@ -56,6 +57,8 @@ def parse_mode(mode: str) -> PerceptionMode:
     by ``+``."""
     if not isinstance(mode, str):
         raise TypeError(f"a perception mode is a string such as 'gt-2d', got {type(mode).__name__} {mode!r}")
+    if mode in ALIASES:
+        return PerceptionMode(mode, parse_mode(ALIASES[mode]).from_truth)
     if mode == "gt":
         return PerceptionMode(mode, frozenset(STAGES))
     if mode == "full":
@@ -105,9 +108,15 @@ def detector_spec(mode: str = "full") -> tuple[str, str]:
         raise DetectorError(
             f"perception {mode} needs a detector: set {DETECTOR_ENV}=KIND:DIR with KIND one of "
             f"{', '.join(DETECTOR_KINDS)} and DIR a model saved with save_pretrained (got {spec!r}), or take the "
-            "2D boxes from ground truth with gt-2d"
+            f"2D boxes from ground truth with {_with_truth_2d(mode)}"
         )
     return kind, check_model_dir(kind, path)
+
+
+def _with_truth_2d(mode: str) -> str:
+    """``mode`` with ground-truth 2D boxes added: ``full`` -> ``gt-2d``, ``gt-scene`` -> ``gt-2d+gt-scene``."""
+    stages = ["2d", *(s for s in STAGES if s in parse_mode(mode).from_truth)]
+    return "+".join(f"gt-{s}" for s in stages)
 
 
 def require_ready(mode: str) -> None:

@@ -178,6 +178,8 @@ class PipelinePerception(Perception):
             taken.add(names[k])
         for k, instance in enumerate(found):
             self.store[names[k]] = self._seen(names[k], phrase, instance, seen)
+            if names[k] in self._carried:  # seen in the hand: it goes with the gripper from where it is now
+                self._carried[names[k]] = self.backend.tcp_pose()
 
     def _seen(self, name: str, phrase: str, instance: Instance3D, seen: Observation) -> SeenObject:
         views = sum(1 for b in instance.boxes if b != -1)
@@ -276,6 +278,11 @@ class PipelinePerception(Perception):
         movable = set(self.parts.objects())
         return {normalize_phrase(n): n for n in self.parts.names() if n not in movable and "." in n}
 
+    def _moves(self, handle: str) -> str | None:
+        """The part a handle moves, as the labels say (which handle is on which drawer)."""
+        joints = self.parts.joints(handle)
+        return joints[0].part if joints else None
+
     def _estimated(self, labelled: ArticulationJoint) -> ArticulationJoint:
         part = labelled.part
         if part in self._joints:
@@ -286,14 +293,12 @@ class PipelinePerception(Perception):
             raise ObjectNotFoundError(
                 part, self.names(), f"its front was not seen well enough to estimate its joint ({points} points)"
             )
-        handles = [n for n in self.part_points if ".handle" in n]
-        if not handles:
-            raise ObjectNotFoundError(
-                part, self.names(), "no handle was seen, and a joint is estimated from its handle"
-            )
-        center = front.mean(axis=0)
-        handle = min(handles, key=lambda n: float(np.linalg.norm(self.part_points[n].mean(axis=0) - center)))
-        handle_center = self.part_points[handle].mean(axis=0)
+        handles = [n for n in self._part_phrases().values() if ".handle" in n and self._moves(n) == part]
+        seen = [n for n in handles if len(self.part_points.get(n, ())) > 0]
+        if not seen:
+            why = f"its handle ({', '.join(handles) or 'none'}) was not seen, and its joint is estimated from it"
+            raise ObjectNotFoundError(part, self.names(), why)
+        handle_center = self.part_points[seen[0]].mean(axis=0)
         estimate = drawer_joint if labelled.type == "prismatic" else door_joint
         self._joints[part] = estimate(part, front, handle_center)
         return self._joints[part]

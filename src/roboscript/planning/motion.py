@@ -113,14 +113,22 @@ class MotionPlanner:
 
     def _adopt(self, fresh: PlanningScene) -> None:
         old = self._scene
+        held = set(old.attached)
+        missing = [name for name in held if name not in fresh.object_bodies]
+        if missing:
+            raise RuntimeError(
+                f"the rebuilt planning scene lacks {', '.join(missing)}, which the gripper holds; objects in it: "
+                f"{', '.join(sorted(fresh.object_bodies)) or 'none'}"
+            )
+        # Contacts of a held object are worked out again when it is attached in the new scene: those it had when
+        # grasped are allowed only until it has left them, which a copied pair would not be.
         for a, b in old.allowed_names():
-            if fresh.has(a) and fresh.has(b):
+            if a not in held and b not in held and fresh.has(a) and fresh.has(b):
                 fresh.allow(a, b)
         fresh.update(self._world_state())
         q = self.backend.joint_positions()
         for name in old.attached:
-            if name in fresh.object_bodies:
-                fresh.attach(name, q)
+            fresh.attach(name, q)
         self._scene = fresh
         self._planner = JointPlanner(fresh)
 

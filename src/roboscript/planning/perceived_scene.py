@@ -27,6 +27,7 @@ OBJECT_VOXEL = 0.01  # metres: objects are small and are reached into, so their 
 UNKNOWN = "scene"  # the name of observed surfaces that belong to no known object or part
 OBJECT_MARGIN = 0.01  # metres around an object's box whose points are taken to be its own
 PART_MARGIN = 0.01  # metres around a part's box whose points are taken to be its own
+SUPPORT_BAND = 0.002  # metres above an object's underside within which points are what it stands on
 REACH = 1.2  # metres from the robot's base beyond which surfaces are no obstacle (either arm reaches < 1 m)
 BELOW_BASE = 0.05  # metres below the robot's base (the table it stands on) beyond which surfaces are no obstacle
 
@@ -94,7 +95,7 @@ def sort_points(
     rest = np.asarray(scene_points, dtype=float).reshape(-1, 3)
     for box in object_boxes.values():
         lower = box.lower - OBJECT_MARGIN
-        lower[2] = box.lower[2] + 0.005
+        lower[2] = box.lower[2] + SUPPORT_BAND
         inside = np.all((rest > lower) & (rest < box.upper + OBJECT_MARGIN), axis=1)
         rest = rest[~inside]
     fixed: dict[str, np.ndarray] = {name: np.zeros((0, 3)) for name in parts}
@@ -192,13 +193,15 @@ class PerceivedSceneSource:
         ]
         if frames:
             scene_points = np.vstack([scene_points, remembered(self._memory, frames, hidden)])
-        self._memory = scene_points
         object_boxes = {name: perception.box(name) for name in objects}
         object_points = {
             name: filled_below(perception.points(name).points, float(object_boxes[name].lower[2])) for name in objects
         }
         parts = {name: perception.box(name) for name in perception.names() if name not in objects}
-        return sort_points(scene_points, object_points, object_boxes, parts)
+        contents = sort_points(scene_points, object_points, object_boxes, parts)
+        # Only fixed surfaces are remembered: an object's are where it was, and it may be carried off.
+        self._memory = np.vstack([np.zeros((0, 3)), *contents.fixed.values()])
+        return contents
 
     def state(self) -> np.ndarray:
         """The scene's ``qpos``: objects where they were seen, the robot's joints as read."""
