@@ -3,8 +3,9 @@
 Run: python benchmarks/perception.py [--repeats 5] [--robot panda] [--voxel 0.005] [--jitter 0] [--dropout 0]
 
 Per world, with 2D boxes from the simulator's segmentation (optionally perturbed): median 3D box IoU and median
-centre error of every object found against its ground-truth box, the objects found, and the share of cross-view
-tuples whose boxes all show one object. Timing, median over ``--repeats``: rendering the cameras, TSDF fusion,
+centre error of every object found against its ground-truth box, the objects and furniture parts found (a look
+asks for both, as ``detect_objects`` does, the parts for their joints), and the share of cross-view tuples whose
+boxes all show one object or part. Timing, median over ``--repeats``: rendering the cameras, TSDF fusion,
 and the rest (grounding, projection, matching, instances); "look" is their sum, what ``detect_objects`` costs.
 """
 
@@ -19,7 +20,7 @@ import numpy as np
 from roboscript.backends.mujoco_backend import MujocoBackend
 from roboscript.perception.evaluation import score_instances, tuple_is_correct
 from roboscript.perception.fusion import FusionSettings
-from roboscript.perception.grounding import GroundingNoise, SegmentationGrounder
+from roboscript.perception.grounding import GroundingNoise, SegmentationGrounder, normalize_phrase
 from roboscript.perception.observation import observe
 from roboscript.sim.world_catalog import world_names
 
@@ -29,6 +30,7 @@ def measure(world: str, robot: str, repeats: int, settings: FusionSettings, nois
     try:
         gt = backend.ground_truth
         objects = [e.name for e in gt.world.entities if e.kind == "object"]
+        parts = [e.name for e in gt.world.entities if e.kind == "part"]  # looked for too, for their joints
         robot_index = gt.world.entity("robot").index
         grounder = SegmentationGrounder(gt.world.entities, noise=noise)
         render, fusion, rest = [], [], []
@@ -37,17 +39,20 @@ def measure(world: str, robot: str, repeats: int, settings: FusionSettings, nois
             frames = [backend.capture(c) for c in backend.camera_names()]
             t1 = time.perf_counter()
             masks = [f.segmentation == robot_index for f in frames]
-            seen = observe(frames, grounder, objects, settings, masks)
+            seen = observe(frames, grounder, objects + parts, settings, masks)
             t2 = time.perf_counter()
             render.append(t1 - t0)
             fusion.append(seen.scene.seconds)
             rest.append(t2 - t1 - seen.scene.seconds)
-        scores = score_instances(seen.instances, seen.detections, gt)
+        labels = {normalize_phrase(o) for o in objects}
+        scores = score_instances([i for i in seen.instances if i.label in labels], seen.detections, gt)
         correct = [tuple_is_correct(m, seen.detections) for m in seen.matched]
         return {
             "world": world,
             "objects": len(objects),
             "found": len({s.name for s in scores}),
+            "parts": len(parts),
+            "parts_found": len({i.label for i in seen.instances} - labels),
             "iou": float(np.median([s.iou for s in scores])) if scores else 0.0,
             "center_cm": float(np.median([s.center_error for s in scores]) * 100) if scores else float("nan"),
             "tuples_correct": float(np.mean(correct)) if correct else 0.0,
@@ -72,7 +77,7 @@ def main() -> None:
     settings = FusionSettings(voxel=args.voxel, truncation=4 * args.voxel)
     noise = GroundingNoise(box_jitter=args.jitter, dropout=args.dropout)
     header = (
-        f"{'world':32s} {'found':>7s} {'IoU':>5s} {'ctr cm':>6s} {'tuples':>6s} {'cams':>4s} "
+        f"{'world':32s} {'found':>7s} {'parts':>7s} {'IoU':>5s} {'ctr cm':>6s} {'tuples':>6s} {'cams':>4s} "
         f"{'render':>7s} {'fusion':>7s} {'rest':>6s} {'look':>6s}"
     )
     print(header, flush=True)
@@ -81,7 +86,8 @@ def main() -> None:
         r = measure(world, args.robot, args.repeats, settings, noise)
         rows.append(r)
         print(
-            f"{r['world']:32s} {r['found']:>3d}/{r['objects']:<3d} {r['iou']:5.2f} {r['center_cm']:6.2f} "
+            f"{r['world']:32s} {r['found']:>3d}/{r['objects']:<3d} {r['parts_found']:>3d}/{r['parts']:<3d} "
+            f"{r['iou']:5.2f} {r['center_cm']:6.2f} "
             f"{r['tuples_correct']:6.0%} {r['cameras']:>4d} {r['render_s']:7.3f} {r['fusion_s']:7.3f} "
             f"{r['rest_s']:6.3f} {r['look_s']:6.3f}",
             flush=True,

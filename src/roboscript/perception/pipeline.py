@@ -41,6 +41,7 @@ from roboscript.perception.fusion import FusionSettings
 from roboscript.perception.grounding import Grounder, normalize_phrase
 from roboscript.perception.instances import Instance3D, fit_box, footprint_points, object_box
 from roboscript.perception.observation import Observation, observe
+from roboscript.perception.points import point_map
 from roboscript.sim.objects import ObjectType, object_types
 
 SETTLE_TIME = 0.5  # seconds given to what was let go to come to rest before looking again
@@ -133,7 +134,7 @@ class PipelinePerception(Perception):
         self.last, self._looked, self._stale = seen, True, False
         self._vacated = []
         self.looks += 1
-        self.scene = seen.scene.points
+        self.scene = surface_points(frames, masks, seen.scene.used)
         self._asked += [p for p in phrases if p not in self._asked]
         self._joints.clear()
         for phrase, part in part_phrases.items():
@@ -333,6 +334,25 @@ class PipelinePerception(Perception):
         if obj.kind is None or not obj.kind.container or obj.kind.interior is None:
             return None
         return interior_of(obj.points, obj.outline, obj.kind, name)
+
+
+def surface_points(
+    frames: Sequence, robot_masks: Sequence[np.ndarray | None] | None, used: Sequence[str], stride: int = 2
+) -> np.ndarray:
+    """The observed surfaces as the depth pixels of the frames fusion used (every ``stride``-th pixel), less the
+    robot's own. Depth pixels lie on the surfaces themselves; the fused surface blurs into a skirt a few millimetres
+    high around objects' feet, which a finger reaching down beside a low box would find in its way."""
+    clouds = []
+    for k, frame in enumerate(frames):
+        if frame.name not in used:
+            continue
+        world = point_map(frame)[::stride, ::stride]
+        keep = np.isfinite(world).all(axis=-1)
+        mask = None if robot_masks is None else robot_masks[k]
+        if mask is not None:
+            keep &= ~mask[::stride, ::stride]
+        clouds.append(world[keep])
+    return np.concatenate(clouds) if clouds else np.zeros((0, 3))
 
 
 def _moved(obj: SeenObject, motion: Transform) -> SeenObject:
