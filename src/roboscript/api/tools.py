@@ -59,8 +59,8 @@ class ToolAPI:
 
     @classmethod
     def for_simulation(cls, backend, seed: int = 0, perception: str = "gt") -> ToolAPI:
-        """A planning scene with the world's exact geometry, and perception as ``perception`` says (see
-        :data:`roboscript.perception.modes.PERCEPTION_MODES`): ground truth by default."""
+        """The tools on a simulated ``backend``, with perception and the planning scene as the mode
+        ``perception`` says (see :mod:`roboscript.perception.modes`): ground truth by default."""
         from roboscript.perception.modes import make_perception, parse_mode
 
         seen = make_perception(perception, backend, seed)

@@ -158,7 +158,11 @@ class Perception(ABC):
         saw moves it along; perception that reads the world's state has nothing to do."""
 
 
+def within(points: np.ndarray, box: Box3D, margin: float = 0.0) -> np.ndarray:
+    """Which of the points, (N,) bool, lie within ``box`` grown by ``margin``."""
+    return np.all((points > box.lower - margin) & (points < box.upper + margin), axis=1)
+
+
 def outside(points: np.ndarray, box: Box3D, margin: float = 0.0) -> np.ndarray:
     """The points not within ``box`` grown by ``margin``."""
-    inside = np.all((points > box.lower - margin) & (points < box.upper + margin), axis=1)
-    return points[~inside]
+    return points[~within(points, box, margin)]

@@ -15,7 +15,7 @@ import numpy as np
 from roboscript.backends.base import Backend
 from roboscript.geometry import Box3D, Transform, quat_from_yaw
 from roboscript.perception.base import ArticulationJoint, ObjectPoints, Perception, Receptacle, UnknownObjectError
-from roboscript.perception.points import entity_points, point_map
+from roboscript.perception.points import entity_points, robot_masks, surface_points
 from roboscript.sim.cameras import CameraFrame
 from roboscript.sim.furniture import drawer_interior
 
@@ -135,14 +135,8 @@ class GroundTruthPerception(Perception):
         return ObjectPoints(points, normals)
 
     def scene_points(self) -> np.ndarray:
-        clouds = []
-        robot = self.world.entity("robot").index
-        for frame in self._camera_frames():
-            world = point_map(frame)[:: self.point_stride, :: self.point_stride]
-            seg = frame.segmentation[:: self.point_stride, :: self.point_stride]
-            keep = np.isfinite(world).all(axis=-1) & (seg != robot)
-            clouds.append(world[keep])
-        return np.concatenate(clouds) if clouds else np.zeros((0, 3))
+        frames = self._camera_frames()
+        return surface_points(frames, robot_masks(frames, self.world.entity("robot").index), self.point_stride)
 
     def last_frames(self) -> list[CameraFrame]:
         return self._camera_frames()

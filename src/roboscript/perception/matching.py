@@ -28,6 +28,7 @@ class Projection:
     u: np.ndarray  # (N,) int column, -1 off the image
     v: np.ndarray  # (N,) int row
     visible: np.ndarray  # (N,) bool
+    z: np.ndarray  # (N,) distance along the camera's axis, metres
 
 
 def project(points: np.ndarray, frame: CameraFrame, tolerance: float = VISIBILITY_TOLERANCE) -> Projection:
@@ -47,7 +48,7 @@ def project(points: np.ndarray, frame: CameraFrame, tolerance: float = VISIBILIT
     seen = np.zeros(len(points), dtype=bool)
     depth = frame.depth[v[inside], u[inside]]
     seen[inside] = (depth > 0) & (z[inside] <= depth + tolerance)
-    return Projection(u, v, seen)
+    return Projection(u, v, seen, z)
 
 
 def membership(projection: Projection, box: tuple[int, int, int, int]) -> np.ndarray:

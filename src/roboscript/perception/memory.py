@@ -38,7 +38,5 @@ def remembered(
         informative = inside & np.isfinite(depth) & (depth > 0)
         if mask is not None:
             informative[inside] &= ~mask[seen.v[inside], seen.u[inside]]
-        to_camera = frame.extrinsics.inverse()
-        z = (old @ to_camera.rotation.T + to_camera.position)[:, 2]
-        keep &= ~(informative & (depth > z - tolerance))  # seen through, or seen again
+        keep &= ~(informative & (depth > seen.z - tolerance))  # seen through, or seen again
     return old[keep]

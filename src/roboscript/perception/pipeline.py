@@ -41,12 +41,13 @@ from roboscript.perception.fusion import FusionSettings
 from roboscript.perception.grounding import Grounder, normalize_phrase
 from roboscript.perception.instances import Instance3D, fit_box, footprint_points, object_box
 from roboscript.perception.observation import Observation, observe
-from roboscript.perception.points import point_map
+from roboscript.perception.points import robot_masks, surface_points
 from roboscript.sim.objects import ObjectType, object_types
 
 SETTLE_TIME = 0.5  # seconds given to what was let go to come to rest before looking again
 SHALLOW = 0.035  # metres: containers lower than this (plates, saucers) hold things on top, not inside
 RIM = 0.02  # metres of a shallow container's edge that things should not rest on
+SURFACE_STRIDE = 2  # every how many depth pixels one stands for the observed surfaces (as ground truth's do)
 PLANE_RADIUS = 0.03  # metres around the queried point whose points a face's plane is fitted to
 
 
@@ -126,15 +127,14 @@ class PipelinePerception(Perception):
 
     def _look(self, phrases: list[str]) -> None:
         frames = [self.backend.capture(c) for c in self.backend.camera_names()]
-        masks = None
-        if self.robot_index is not None:
-            masks = [None if f.segmentation is None else f.segmentation == self.robot_index for f in frames]
+        masks = robot_masks(frames, self.robot_index)
         part_phrases = {p: n for p, n in self._part_phrases().items() if p not in phrases}
         seen = observe(frames, self.grounder, phrases + list(part_phrases), self.settings, masks)
         self.last, self._looked, self._stale = seen, True, False
         self._vacated = []
         self.looks += 1
-        self.scene = surface_points(frames, masks, seen.scene.used)
+        used = [k for k, f in enumerate(frames) if f.name in seen.scene.used]  # broken depth images are not
+        self.scene = surface_points([frames[k] for k in used], [masks[k] for k in used], SURFACE_STRIDE)
         self._asked += [p for p in phrases if p not in self._asked]
         self._joints.clear()
         for phrase, part in part_phrases.items():
@@ -334,25 +334,6 @@ class PipelinePerception(Perception):
         if obj.kind is None or not obj.kind.container or obj.kind.interior is None:
             return None
         return interior_of(obj.points, obj.outline, obj.kind, name)
-
-
-def surface_points(
-    frames: Sequence, robot_masks: Sequence[np.ndarray | None] | None, used: Sequence[str], stride: int = 2
-) -> np.ndarray:
-    """The observed surfaces as the depth pixels of the frames fusion used (every ``stride``-th pixel), less the
-    robot's own. Depth pixels lie on the surfaces themselves; the fused surface blurs into a skirt a few millimetres
-    high around objects' feet, which a finger reaching down beside a low box would find in its way."""
-    clouds = []
-    for k, frame in enumerate(frames):
-        if frame.name not in used:
-            continue
-        world = point_map(frame)[::stride, ::stride]
-        keep = np.isfinite(world).all(axis=-1)
-        mask = None if robot_masks is None else robot_masks[k]
-        if mask is not None:
-            keep &= ~mask[::stride, ::stride]
-        clouds.append(world[keep])
-    return np.concatenate(clouds) if clouds else np.zeros((0, 3))
 
 
 def _moved(obj: SeenObject, motion: Transform) -> SeenObject:

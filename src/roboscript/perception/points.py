@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+from collections.abc import Sequence
+
 import numpy as np
 
 from roboscript.sim.cameras import CameraFrame
@@ -17,6 +19,29 @@ def point_map(frame: CameraFrame) -> np.ndarray:
     world = camera @ frame.extrinsics.rotation.T + frame.extrinsics.position
     world[z <= 0] = np.nan
     return world
+
+
+def robot_masks(frames: Sequence[CameraFrame], robot_index: int | None) -> list[np.ndarray | None]:
+    """Per frame, the pixels that show the robot (segmentation index ``robot_index``); None where that cannot be
+    told (no index, or a frame without segmentation)."""
+    return [None if robot_index is None or f.segmentation is None else f.segmentation == robot_index for f in frames]
+
+
+def surface_points(
+    frames: Sequence[CameraFrame], masks: Sequence[np.ndarray | None] | None = None, stride: int = 1
+) -> np.ndarray:
+    """The depth pixels of ``frames`` (every ``stride``-th) in world coordinates, (N, 3), less those ``masks``
+    marks (the robot's own). Depth pixels lie on the surfaces themselves; a fused surface blurs into a skirt a few
+    millimetres high around objects' feet, which a finger reaching down beside a low box would find in its way."""
+    clouds = []
+    for k, frame in enumerate(frames):
+        world = point_map(frame)[::stride, ::stride]
+        keep = np.isfinite(world).all(axis=-1)
+        mask = None if masks is None else masks[k]
+        if mask is not None:
+            keep &= ~mask[::stride, ::stride]
+        clouds.append(world[keep])
+    return np.concatenate(clouds) if clouds else np.zeros((0, 3))
 
 
 def normal_map(points: np.ndarray, camera_position: np.ndarray) -> np.ndarray:

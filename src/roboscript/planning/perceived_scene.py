@@ -16,8 +16,9 @@ import mujoco
 import numpy as np
 
 from roboscript.geometry import Box3D, Transform
-from roboscript.perception.base import Perception
+from roboscript.perception.base import Perception, outside, within
 from roboscript.perception.memory import remembered
+from roboscript.perception.points import robot_masks
 from roboscript.planning.occupancy import VOXEL, occupied_boxes
 from roboscript.planning.scene import PlanningScene
 from roboscript.robots.description import RobotDescription
@@ -94,17 +95,16 @@ def sort_points(
     Points under an object's box are kept: the table it stands on stays whole under it."""
     rest = np.asarray(scene_points, dtype=float).reshape(-1, 3)
     for box in object_boxes.values():
-        lower = box.lower - OBJECT_MARGIN
-        lower[2] = box.lower[2] + SUPPORT_BAND
-        inside = np.all((rest > lower) & (rest < box.upper + OBJECT_MARGIN), axis=1)
-        rest = rest[~inside]
+        # Grown by the margin on every side but the bottom, which rises to just above what it stands on.
+        lower = np.array([*box.lower[:2], box.lower[2] + SUPPORT_BAND + OBJECT_MARGIN])
+        rest = outside(rest, Box3D(lower, box.upper), OBJECT_MARGIN)
     fixed: dict[str, np.ndarray] = {name: np.zeros((0, 3)) for name in parts}
     owner = np.full(len(rest), -1)
     smallest = np.full(len(rest), np.inf)
     names = list(parts)
     for k, name in enumerate(names):
         box = parts[name]
-        inside = np.all((rest > box.lower - PART_MARGIN) & (rest < box.upper + PART_MARGIN), axis=1)
+        inside = within(rest, box, PART_MARGIN)
         volume = float(np.prod(box.upper - box.lower))
         better = inside & (volume < smallest)
         owner[better], smallest[better] = k, volume
@@ -162,7 +162,7 @@ class PerceivedSceneSource:
     ):
         self.perception, self.description, self.mount = perception, description, mount
         self.robot_state, self.padding, self.robot_index = robot_state, padding, robot_index
-        self._memory = np.zeros((0, 3))  # the observed surfaces the last scene was built from
+        self._memory = np.zeros((0, 3))  # the fixed surfaces the last scene was built from
         self.builds = 0
         self._scene: PlanningScene | None = None
         self._looks = -1
@@ -187,11 +187,8 @@ class PerceivedSceneSource:
         objects = perception.objects()
         scene_points = within_reach(perception.scene_points(), self.mount)
         frames = perception.last_frames()
-        hidden = [
-            None if self.robot_index is None or f.segmentation is None else f.segmentation == self.robot_index
-            for f in frames
-        ]
         if frames:
+            hidden = robot_masks(frames, self.robot_index)
             scene_points = np.vstack([scene_points, remembered(self._memory, frames, hidden)])
         object_boxes = {name: perception.box(name) for name in objects}
         object_points = {
