@@ -4,9 +4,10 @@ Run: python benchmarks/perception.py [--repeats 5] [--robot panda] [--voxel 0.00
 
 Per world, with 2D boxes from the simulator's segmentation (optionally perturbed): median 3D box IoU and median
 centre error of every object found against its ground-truth box, the objects and furniture parts found (a look
-asks for both, as ``detect_objects`` does, the parts for their joints), and the share of cross-view tuples whose
-boxes all show one object or part. Timing, median over ``--repeats``: rendering the cameras, TSDF fusion,
-and the rest (grounding, projection, matching, instances); "look" is their sum, what ``detect_objects`` costs.
+asks for both, as ``detect_objects`` does, the furniture and parts for their geometry), and the share of
+cross-view tuples whose boxes all show one object or part. Timing, median over ``--repeats``: rendering the
+cameras, TSDF fusion, and the rest (grounding, projection, matching, instances); "look" is their sum, what
+``detect_objects`` costs.
 """
 
 from __future__ import annotations
@@ -30,7 +31,9 @@ def measure(world: str, robot: str, repeats: int, settings: FusionSettings, nois
     try:
         gt = backend.ground_truth
         objects = [e.name for e in gt.world.entities if e.kind == "object"]
-        parts = [e.name for e in gt.world.entities if e.kind == "part"]  # looked for too, for their joints
+        # Furniture and its parts are looked for too, as detect_objects does: their geometry is measured from them.
+        parts = [e.name for e in gt.world.entities if e.kind in ("furniture", "part")]
+        pieces = {normalize_phrase(p) for p in parts}
         robot_index = gt.world.entity("robot").index
         grounder = SegmentationGrounder(gt.world.entities, noise=noise)
         render, fusion, rest = [], [], []
@@ -39,7 +42,7 @@ def measure(world: str, robot: str, repeats: int, settings: FusionSettings, nois
             frames = [backend.capture(c) for c in backend.camera_names()]
             t1 = time.perf_counter()
             masks = [f.segmentation == robot_index for f in frames]
-            seen = observe(frames, grounder, objects + parts, settings, masks)
+            seen = observe(frames, grounder, objects + parts, settings, masks, pieces=pieces)
             t2 = time.perf_counter()
             render.append(t1 - t0)
             fusion.append(seen.scene.seconds)

@@ -72,7 +72,7 @@ def test_a_part_no_view_saw_cannot_have_its_joint_estimated(cabinet):
     backend, _, _ = cabinet
     seen = make_perception("gt-2d", backend)
     seen.detect(["mug"])
-    del seen.part_points["cabinet.drawer_2"]
+    del seen.parts_seen["cabinet.drawer_2"]
     with pytest.raises(KeyError, match=r"'cabinet.drawer_2' was not found: its front was not seen well enough"):
         seen.joints("cabinet")
 

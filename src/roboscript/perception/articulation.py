@@ -19,15 +19,18 @@ DRAWER_TRAVEL = 0.3  # metres a drawer is assumed to slide out at most
 DOOR_TRAVEL = math.pi / 2  # radians a door is assumed to open at most
 PLANE_TOLERANCE = 0.004  # metres from the plane within which a point is on the front
 MAX_TILT = 0.3  # largest vertical component of a front's normal (fronts of drawers and doors stand upright)
+HANDLE_REACH = 0.1  # metres a handle stands out of its front at most
 
 
 def front_plane(points: np.ndarray, toward: np.ndarray, iterations: int = 200, seed: int = 0):
     """``(point, normal)`` of the dominant upright plane of ``points`` (RANSAC, then a least-squares refit on its
     inliers), the normal turned towards ``toward`` (the handle, which stands out of the front). Only upright
-    planes count: an open drawer shows the cameras above it more of its bottom than of its front."""
+    planes count, and only those ``toward`` stands at most :data:`HANDLE_REACH` out of: an open drawer shows the
+    cameras above it more of its bottom, and of its back wall, than of its front."""
     if len(points) < 10:
         raise ValueError(f"a front needs at least 10 points, got {len(points)}")
     rng = np.random.default_rng(seed)
+    toward = np.asarray(toward, dtype=float)
     best = np.zeros(len(points), dtype=bool)
     for _ in range(iterations):
         a, b, c = points[rng.choice(len(points), 3, replace=False)]
@@ -36,17 +39,20 @@ def front_plane(points: np.ndarray, toward: np.ndarray, iterations: int = 200, s
         if norm < 1e-9:
             continue
         normal /= norm
-        if abs(normal[2]) > MAX_TILT:
+        if abs(normal[2]) > MAX_TILT or abs(np.dot(toward - a, normal)) > HANDLE_REACH:
             continue
         inliers = np.abs((points - a) @ normal) < PLANE_TOLERANCE
         if inliers.sum() > best.sum():
             best = inliers
     if best.sum() < 10:
-        raise ValueError(f"no upright plane of at least 10 points among the {len(points)} points of a front")
+        raise ValueError(
+            f"no upright plane of at least 10 points within {HANDLE_REACH} m of the handle among the {len(points)} "
+            "points of a front"
+        )
     on_plane = points[best]
     center = on_plane.mean(axis=0)
     normal = np.linalg.svd(on_plane - center, full_matrices=False)[2][-1]
-    if np.dot(normal, np.asarray(toward, dtype=float) - center) < 0:
+    if np.dot(normal, toward - center) < 0:
         normal = -normal
     return center, normal / np.linalg.norm(normal), on_plane
 

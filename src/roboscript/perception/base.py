@@ -16,6 +16,9 @@ import numpy as np
 from roboscript.geometry import Box3D, Transform
 
 OCCUPANCY_MARGIN = 0.02  # metres around an ignored object's box whose points are taken to be its own
+# Room kept between the carcass front and where things are put into an open drawer: the panel above the drawer
+# overhangs that line and fingers need space.
+DRAWER_FRONT_CLEARANCE = 0.03
 
 
 class UnknownObjectError(KeyError):

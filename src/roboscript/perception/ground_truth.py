@@ -14,14 +14,17 @@ import numpy as np
 
 from roboscript.backends.base import Backend
 from roboscript.geometry import Box3D, Transform, quat_from_yaw
-from roboscript.perception.base import ArticulationJoint, ObjectPoints, Perception, Receptacle, UnknownObjectError
+from roboscript.perception.base import (
+    DRAWER_FRONT_CLEARANCE,
+    ArticulationJoint,
+    ObjectPoints,
+    Perception,
+    Receptacle,
+    UnknownObjectError,
+)
 from roboscript.perception.points import entity_points, robot_masks, surface_points
 from roboscript.sim.cameras import CameraFrame
 from roboscript.sim.furniture import drawer_interior
-
-# Room kept between the carcass front and where things are put into an open drawer: the panel above the drawer
-# overhangs that line and fingers need space.
-DRAWER_FRONT_CLEARANCE = 0.03
 
 
 class GroundTruthPerception(Perception):

@@ -89,7 +89,8 @@ class SegmentationGrounder(Grounder):
         noise: GroundingNoise | None = None,
         seed: int = 0,
     ):
-        self.entities = [e for e in entities if e.kind in ("object", "part")]  # parts: fronts and handles
+        # Furniture and its parts (fronts, handles) too: they answer to their full names only.
+        self.entities = [e for e in entities if e.kind in ("object", "furniture", "part")]
         self.min_pixels = min_pixels
         self.noise = noise or GroundingNoise()
         self._rng = np.random.default_rng(seed)
@@ -102,7 +103,7 @@ class SegmentationGrounder(Grounder):
         present = np.unique(seg)
         out = []
         for entity in self.entities:
-            # A part answers to its full name only: asking for "handle" should not put handles among the objects.
+            # Furniture answers to its full name only: asking for "handle" should not put handles among the objects.
             names = entity_phrases(entity) if entity.kind == "object" else {normalize_phrase(entity.name)}
             label = next((p for p in wanted if p in names), None)
             if label is None or entity.index not in present:

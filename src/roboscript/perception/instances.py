@@ -8,7 +8,7 @@ the table's height.
 
 from __future__ import annotations
 
-from collections.abc import Sequence
+from collections.abc import Collection, Sequence
 from dataclasses import dataclass
 
 import numpy as np
@@ -56,6 +56,7 @@ def support_height(points: np.ndarray, bin_size: float = 0.002) -> float:
 
 FOOTPRINT_HEIGHT = 0.015  # metres above the support below which the fused surface blurs into it
 CLUSTER_GAP = 0.0125  # metres between points of one object (2.5 voxels of 5 mm)
+PIECE_SHARE = 0.2  # a furniture part keeps every piece at least this share of its largest
 
 
 def fit_box(points: np.ndarray, trim: float = 1.0) -> Box3D:
@@ -88,9 +89,10 @@ def object_box(points: np.ndarray, support: float) -> Box3D:
     )
 
 
-def largest_cluster(points: np.ndarray, gap: float = CLUSTER_GAP) -> np.ndarray:
+def largest_cluster(points: np.ndarray, gap: float = CLUSTER_GAP, share: float = 1.0) -> np.ndarray:
     """Indices of the largest group of points connected by steps of at most ``gap`` (stray bits of the
-    neighbours' surfaces fall away)."""
+    neighbours' surfaces fall away); with ``share`` below 1, also of every group at least that share of its
+    size (a thing seen in pieces: an open drawer's front and, apart from it, its inside)."""
     import open3d as o3d
 
     if len(points) < 10:
@@ -99,8 +101,9 @@ def largest_cluster(points: np.ndarray, gap: float = CLUSTER_GAP) -> np.ndarray:
     labels = np.asarray(cloud.cluster_dbscan(eps=gap, min_points=3))
     if labels.max() < 0:
         return np.arange(len(points))
-    biggest = np.bincount(labels[labels >= 0]).argmax()
-    return np.flatnonzero(labels == biggest)
+    sizes = np.bincount(labels[labels >= 0])
+    kept = np.flatnonzero(sizes >= share * sizes.max())
+    return np.flatnonzero(np.isin(labels, kept))
 
 
 def build_instances(
@@ -112,9 +115,11 @@ def build_instances(
     support: float,
     box_areas: Sequence[Sequence[float]] | None = None,
     min_points: int = 30,
+    pieces: Collection[str] = (),
 ) -> list[Instance3D]:
     """An :class:`Instance3D` per matched object with at least ``min_points`` points above ``support`` (the
-    table's height).
+    table's height). Objects are one connected piece; things labelled one of ``pieces`` (furniture parts) may
+    show as several (:data:`PIECE_SHARE`).
 
     A point claimed by several objects goes to the one with the smallest boxes (``box_areas[v][i]``: pixels of
     box ``i`` in view ``v``): a small thing in front of a large one is seen inside the large one's boxes too.
@@ -134,7 +139,7 @@ def build_instances(
     kept = _merge_fragments(kept, points)
     out = []
     for obj, idx in kept:
-        idx = idx[largest_cluster(points[idx])]
+        idx = idx[largest_cluster(points[idx], share=PIECE_SHARE if obj.label in pieces else 1.0)]
         if len(idx) < min_points:
             continue
         out.append(Instance3D(obj.label, points[idx], normals[idx], object_box(points[idx], support), obj.boxes))

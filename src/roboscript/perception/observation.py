@@ -3,7 +3,7 @@ instances (DESIGN.md §6). :func:`observe` is the whole chain; each step is its 
 
 from __future__ import annotations
 
-from collections.abc import Sequence
+from collections.abc import Collection, Sequence
 from dataclasses import dataclass
 
 import numpy as np
@@ -47,9 +47,11 @@ def observe(
     phrases: Sequence[str],
     settings: FusionSettings | None = None,
     robot_masks: Sequence[np.ndarray] | None = None,
+    pieces: Collection[str] = (),
 ) -> Observation:
     """Runs the chain on ``frames`` for the things ``phrases`` name. ``robot_masks``: per frame, the pixels of the
-    robot itself (from its model), left out of the fused surface."""
+    robot itself (from its model), left out of the fused surface; ``pieces``: the phrases of furniture parts,
+    which may be seen in several pieces (an open drawer's front and its inside)."""
     if not frames:
         raise ValueError("observe needs at least one camera frame")
     scene = fuse(frames, settings, robot_masks)
@@ -63,7 +65,9 @@ def observe(
     matched = match_views(memberships, detections)
     support = support_height(scene.points)
     areas = [[(d.box[2] - d.box[0]) * (d.box[3] - d.box[1]) for d in ds] for ds in detections]
-    instances = build_instances(matched, scene.points, scene.normals, memberships, projections, support, areas)
+    instances = build_instances(
+        matched, scene.points, scene.normals, memberships, projections, support, areas, pieces=pieces
+    )
     maps = [point_map(f) for f in usable]
     normals = [normal_map(m, f.extrinsics.position) for m, f in zip(maps, usable, strict=True)]
     instances = [refine_with_depth(i, detections, maps, normals, support) for i in instances]

@@ -9,9 +9,11 @@ everything looked for so far, and each object seen again keeps its name (matched
 what the robot carried moved with the gripper). Something not seen again (hidden in a drawer) keeps its last
 estimate.
 
-Furniture parts (``cabinet.drawer_1``, ``cabinet.handle_1``) are looked for with every look too, and their joints
-estimated from their points (:mod:`roboscript.perception.articulation`); their boxes, points and interiors still
-come from ground truth in this version (``parts``).
+Furniture and its parts (``cabinet``, ``cabinet.drawer_1``, ``cabinet.handle_1``) are looked for with every look
+too, and answered for from their points as objects are: boxes, points, plane normals, joints
+(:mod:`roboscript.perception.articulation`) and drawers' insides (:mod:`roboscript.perception.drawers`). What
+parts there are, and which part each handle moves and how (slides, turns), are their labels (``parts``: the
+furniture's description); a part no camera has seen yet is "not found".
 The planning scene is built from what this store saw (:mod:`roboscript.planning.perceived_scene`) unless the mode
 takes it from ground truth.
 """
@@ -27,7 +29,7 @@ import numpy as np
 
 from roboscript.backends.base import Backend
 from roboscript.geometry import Box3D, Transform, quat_from_yaw
-from roboscript.perception.articulation import door_joint, drawer_joint
+from roboscript.perception.articulation import DRAWER_TRAVEL, door_joint, drawer_joint, front_plane
 from roboscript.perception.base import (
     OCCUPANCY_MARGIN,
     ArticulationJoint,
@@ -37,6 +39,7 @@ from roboscript.perception.base import (
     UnknownObjectError,
     outside,
 )
+from roboscript.perception.drawers import carcass_front, closed_drawer, drawer_receptacle, opening_frame
 from roboscript.perception.fusion import FusionSettings
 from roboscript.perception.grounding import Grounder, normalize_phrase
 from roboscript.perception.instances import Instance3D, fit_box, footprint_points, object_box
@@ -49,6 +52,7 @@ SHALLOW = 0.035  # metres: containers lower than this (plates, saucers) hold thi
 RIM = 0.02  # metres of a shallow container's edge that things should not rest on
 SURFACE_STRIDE = 2  # every how many depth pixels one stands for the observed surfaces (as ground truth's do)
 PLANE_RADIUS = 0.03  # metres around the queried point whose points a face's plane is fitted to
+HANDLE_PROUD = 0.004  # metres out of its front from which a point is the handle's, not the front's
 
 
 class ObjectNotFoundError(UnknownObjectError):
@@ -85,10 +89,11 @@ class SeenObject:
 
 
 class PipelinePerception(Perception):
-    """Perception from ``backend``'s cameras through ``grounder``; ``parts`` answers for furniture and its parts.
+    """Perception from ``backend``'s cameras through ``grounder``; ``parts`` labels furniture and its parts (what
+    parts there are, which part a handle moves and how).
 
-    ``vocabulary``: the phrases ``detect_objects()`` looks for when given none; ``robot_index``: the segmentation
-    index of the robot, whose own pixels are left out of the fused surface (a real rig renders its model for this).
+        ``vocabulary``: the phrases ``detect_objects()`` looks for when given none; ``robot_index``: the segmentation
+        index of the robot, whose own pixels are left out of the fused surface (a real rig renders its model for this).
     """
 
     def __init__(
@@ -104,7 +109,7 @@ class PipelinePerception(Perception):
         self.vocabulary = [normalize_phrase(v) for v in vocabulary]
         self.robot_index, self.settings = robot_index, settings
         self.store: dict[str, SeenObject] = {}
-        self.part_points: dict[str, np.ndarray] = {}  # furniture parts (fronts, handles) as last seen
+        self.parts_seen: dict[str, ObjectPoints] = {}  # furniture and its parts, as last seen
         self.not_found: dict[str, str] = {}
         self.scene: np.ndarray = np.zeros((0, 3))
         self.last: Observation | None = None
@@ -116,6 +121,7 @@ class PipelinePerception(Perception):
         self._joints: dict[str, ArticulationJoint] = {}  # estimated from the last look, by moving part
         self._vacated: list[Box3D] = []  # where objects were taken from since the last look
         self._holding_looks = False
+        self._look_time = -1.0  # the backend's time at the last look
 
     # --- looking ----------------------------------------------------------------------------------------------
 
@@ -125,22 +131,26 @@ class PipelinePerception(Perception):
             raise ValueError("nothing to look for: pass category_list, e.g. ['apple', 'bowl']")
         self._look(phrases)
 
-    def _look(self, phrases: list[str]) -> None:
+    def _look(self, asked: list[str]) -> None:
         frames = [self.backend.capture(c) for c in self.backend.camera_names()]
         masks = robot_masks(frames, self.robot_index)
-        part_phrases = {p: n for p, n in self._part_phrases().items() if p not in phrases}
-        seen = observe(frames, self.grounder, phrases + list(part_phrases), self.settings, masks)
+        furniture = self._furniture_phrases()
+        phrases = [p for p in asked if p not in furniture]
+        seen = observe(frames, self.grounder, phrases + list(furniture), self.settings, masks, pieces=set(furniture))
         self.last, self._looked, self._stale = seen, True, False
+        self._look_time = self.backend.time()
         self._vacated = []
         self.looks += 1
         used = [k for k, f in enumerate(frames) if f.name in seen.scene.used]  # broken depth images are not
         self.scene = surface_points([frames[k] for k in used], [masks[k] for k in used], SURFACE_STRIDE)
         self._asked += [p for p in phrases if p not in self._asked]
         self._joints.clear()
-        for phrase, part in part_phrases.items():
+        for phrase, part in furniture.items():
             found = [i for i in seen.instances if i.label == phrase]
             if found:
-                self.part_points[part] = max(found, key=lambda i: len(i.points)).points
+                biggest = max(found, key=lambda i: len(i.points))
+                self.parts_seen[part] = ObjectPoints(biggest.points, biggest.normals)
+        self._trim_handles()
         for phrase in phrases:
             found = [i for i in seen.instances if i.label == phrase]
             self.not_found.pop(phrase, None)
@@ -189,6 +199,22 @@ class PipelinePerception(Perception):
             name, phrase, instance.points, instance.normals, views, seen.support, floor, _library_type(phrase)
         )
 
+    def _trim_handles(self) -> None:
+        """Keeps of each handle the points standing out of its part's front: its 2D boxes hold some of the front
+        around it, and the handle's centre decides where the gripper closes and where the joint's line runs."""
+        for handle in [n for n in self.parts_seen if ".handle_" in n]:
+            part = self._moves(handle)
+            if part is None or part not in self.parts_seen:
+                continue
+            points, normals = self.parts_seen[handle].points, self.parts_seen[handle].normals
+            try:
+                center, normal, _ = front_plane(self.parts_seen[part].points, points.mean(axis=0))
+            except ValueError:  # the front was seen too poorly to tell
+                continue
+            proud = (points - center) @ normal > HANDLE_PROUD
+            if proud.sum() >= 10:
+                self.parts_seen[handle] = ObjectPoints(points[proud], normals[proud])
+
     def _ensure_looked(self, fresh: bool = True) -> None:
         """Looks if nothing was seen yet; with ``fresh``, also if something was let go since the last look (names
         do not need a fresh look, geometry does: by the time it is asked for the hand has usually moved away)."""
@@ -223,8 +249,7 @@ class PipelinePerception(Perception):
 
     def names(self) -> list[str]:
         self._ensure_looked(fresh=False)
-        movable = set(self.parts.objects())  # the parts' perception knows the objects too; the store answers for them
-        return list(self.store) + [n for n in self.parts.names() if n not in movable]
+        return list(self.store) + [n for n in self._furniture_phrases().values() if n in self.parts_seen]
 
     def objects(self) -> list[str]:
         self._ensure_looked(fresh=False)
@@ -235,6 +260,8 @@ class PipelinePerception(Perception):
             phrase = normalize_phrase(name)
             if phrase in self.not_found:
                 raise ObjectNotFoundError(name, self.names(), self.not_found[phrase])
+            if name in self._furniture_phrases().values():
+                raise ObjectNotFoundError(name, self.names(), f"no camera has seen it in {self.looks} looks")
         return super().require(name)
 
     def _object(self, name: str) -> SeenObject | None:
@@ -244,24 +271,31 @@ class PipelinePerception(Perception):
             return _moved(self.store[name], motion)
         if name in self.store:
             return self.store[name]
-        if name not in self.names():
-            raise UnknownObjectError(name, self.names())
+        self.require(name)
         return None
+
+    def _part(self, name: str) -> ObjectPoints:
+        """The points of furniture or a part as last seen (:meth:`_object` has checked the name)."""
+        return self.parts_seen[name]
 
     def box(self, name: str) -> Box3D:
         obj = self._object(name)
-        return obj.box if obj else self.parts.box(name)
+        return obj.box if obj else fit_box(self._part(name).points)
 
     def footprint(self, name: str) -> tuple[np.ndarray, float, np.ndarray]:
+        """Of furniture and parts, their box from above (as ground truth gives it)."""
         obj = self._object(name)
         if obj is None:
-            return self.parts.footprint(name)
+            box = fit_box(self._part(name).points)
+            return box.center[:2], 0.0, box.size[:2] / 2
         return footprint_of(obj.outline)
 
     def pose(self, name: str) -> Transform:
+        """Of objects, the centre of their bottom face turned as their footprint; of furniture and parts, the
+        centre of their box, unturned."""
         obj = self._object(name)
         if obj is None:
-            return self.parts.pose(name)
+            return Transform(self.box(name).center, quat_from_yaw(0.0))
         center, yaw, _ = footprint_of(obj.outline)
         return Transform(np.array([center[0], center[1], obj.box.lower[2]]), quat_from_yaw(yaw))
 
@@ -273,11 +307,11 @@ class PipelinePerception(Perception):
             return []
         return [self._estimated(truth) for truth in self.parts.joints(name)]
 
-    def _part_phrases(self) -> dict[str, str]:
-        """Phrase -> name of each furniture part (``cabinet.drawer_1``, ``cabinet.handle_1``), looked for with
-        every look so that their joints can be estimated."""
+    def _furniture_phrases(self) -> dict[str, str]:
+        """Phrase -> name of furniture and each of its parts (``cabinet``, ``cabinet.drawer_1``,
+        ``cabinet.handle_1``), as their labels name them; looked for with every look."""
         movable = set(self.parts.objects())
-        return {normalize_phrase(n): n for n in self.parts.names() if n not in movable and "." in n}
+        return {normalize_phrase(n): n for n in self.parts.names() if n not in movable}
 
     def _moves(self, handle: str) -> str | None:
         """The part a handle moves, as the labels say (which handle is on which drawer)."""
@@ -288,32 +322,37 @@ class PipelinePerception(Perception):
         part = labelled.part
         if part in self._joints:
             return self._joints[part]
-        front = self.part_points.get(part)
+        front = self.parts_seen[part].points if part in self.parts_seen else None
         if front is None or len(front) < 10:
             points = 0 if front is None else len(front)
             raise ObjectNotFoundError(
                 part, self.names(), f"its front was not seen well enough to estimate its joint ({points} points)"
             )
-        handles = [n for n in self._part_phrases().values() if ".handle" in n and self._moves(n) == part]
-        seen = [n for n in handles if len(self.part_points.get(n, ())) > 0]
-        if not seen:
-            why = f"its handle ({', '.join(handles) or 'none'}) was not seen, and its joint is estimated from it"
-            raise ObjectNotFoundError(part, self.names(), why)
-        handle_center = self.part_points[seen[0]].mean(axis=0)
+        handle_center = self._handle(part).points.mean(axis=0)
         estimate = drawer_joint if labelled.type == "prismatic" else door_joint
         self._joints[part] = estimate(part, front, handle_center)
         return self._joints[part]
 
+    def _handle(self, part: str) -> ObjectPoints:
+        """The points of the handle the labels put on ``part``; "not found" if none was seen."""
+        handles = [n for n in self._furniture_phrases().values() if ".handle" in n and self._moves(n) == part]
+        seen = [n for n in handles if n in self.parts_seen]
+        if not seen:
+            why = f"its handle ({', '.join(handles) or 'none'}) was not seen, and its geometry is measured from it"
+            raise ObjectNotFoundError(part, self.names(), why)
+        return self.parts_seen[seen[0]]
+
     def plane_normal(self, name: str, position: np.ndarray) -> np.ndarray:
         obj = self._object(name)
-        if obj is None:
-            return self.parts.plane_normal(name, position)
+        if obj is None:  # a front seen from one side: its normal faces the cameras, as its points' normals do
+            seen = self._part(name)
+            return plane_normal_at(seen.points, np.asarray(position, dtype=float), normals=seen.normals)
         return plane_normal_at(obj.points, np.asarray(position, dtype=float))
 
     def points(self, name: str) -> ObjectPoints:
         obj = self._object(name)
         if obj is None:
-            return self.parts.points(name)
+            return self._part(name)
         return ObjectPoints(obj.points, obj.normals)
 
     def scene_points(self) -> np.ndarray:
@@ -330,10 +369,38 @@ class PipelinePerception(Perception):
     def receptacle(self, name: str) -> Receptacle | None:
         obj = self._object(name)
         if obj is None:
-            return self.parts.receptacle(name)
+            return self._drawer_inside(name)
         if obj.kind is None or not obj.kind.container or obj.kind.interior is None:
             return None
         return interior_of(obj.points, obj.outline, obj.kind, name)
+
+    def _drawer_inside(self, name: str, retried: bool = False) -> Receptacle | None:
+        """The free inside of a drawer, from its points, its joint, its handle and its cabinet's front; other
+        furniture and parts hold nothing."""
+        joints = self.parts.joints(name) if ".drawer_" in name else []
+        if not joints or joints[0].type != "prismatic" or joints[0].part != name:
+            return None
+        frame = opening_frame(self._estimated(joints[0]))
+        furniture = name.split(".", 1)[0]
+        if furniture not in self.parts_seen:
+            raise ObjectNotFoundError(
+                furniture,
+                self.names(),
+                f"no camera has seen it, and how far {name!r} stands out of it is measured from its front",
+            )
+        carcass = carcass_front(self.parts_seen[furniture].points, frame, DRAWER_TRAVEL + 0.05)
+        points = self._part(name).points
+        inside = drawer_receptacle(name, points, self._part(name).normals, frame, carcass)
+        if inside is None and not retried and self._may_look_again():
+            # The arm, which has just pulled the drawer, may have hidden its inside from that look.
+            self._look(list(self._asked))
+            return self._drawer_inside(name, retried=True)
+        return inside if inside is not None else closed_drawer(name, points, frame)
+
+    def _may_look_again(self) -> bool:
+        """Whether a new look could show more than the last: the robot has moved since, and looking is not
+        held off."""
+        return not self._holding_looks and self.backend.time() > self._look_time
 
 
 def _moved(obj: SeenObject, motion: Transform) -> SeenObject:
@@ -411,15 +478,21 @@ def _rectangle(xy: np.ndarray, angle: float) -> tuple[float, np.ndarray, np.ndar
     return float(np.prod(upper - lower)), lower, upper
 
 
-def plane_normal_at(points: np.ndarray, position: np.ndarray, radius: float = PLANE_RADIUS) -> np.ndarray:
+def plane_normal_at(
+    points: np.ndarray, position: np.ndarray, radius: float = PLANE_RADIUS, normals: np.ndarray | None = None
+) -> np.ndarray:
     """Normal of the plane fitted to the points within ``radius`` of ``position``, pointing away from the
-    object's middle; with too few points there, the normal of the box face nearest ``position``."""
-    near = points[np.linalg.norm(points - position, axis=1) < radius]
+    object's middle, or, given the points' ``normals``, the way theirs point there (a flat front, seen from one
+    side, has its middle on its plane); with too few points there, the normal of the box face nearest
+    ``position``."""
+    close = np.linalg.norm(points - position, axis=1) < radius
+    near = points[close]
     center = points.mean(axis=0)
     if len(near) >= 10:
         centered = near - near.mean(axis=0)
         normal = np.linalg.svd(centered, full_matrices=False)[2][-1]
-        if np.dot(normal, position - center) < 0:
+        facing = normals[close].sum(axis=0) if normals is not None else position - center
+        if np.dot(normal, facing) < 0:
             normal = -normal
         return normal / np.linalg.norm(normal)
     box = fit_box(points)
