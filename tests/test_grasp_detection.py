@@ -7,7 +7,7 @@ import numpy as np
 from roboscript.api.placement import fits, spot_at, spots_in_receptacle
 from roboscript.geometry import Box3D, Transform
 from roboscript.perception.base import ObjectPoints, Receptacle
-from roboscript.perception.grasp_detection import GraspPreferences, GripperGeometry, detect_grasps
+from roboscript.perception.grasp_detection import GraspPreferences, GripperGeometry, collides, detect_grasps
 
 
 def box_surface(center, half, spacing=0.004, skip_bottom=True):
@@ -61,6 +61,19 @@ def test_preferences_steer_the_ranking_and_too_wide_objects_get_nothing():
     assert detect_grasps(ObjectPoints(wide_points, wide_normals), scene, GripperGeometry(0.08)) == []
 
 
+def test_the_hand_is_as_wide_as_the_hand_and_the_fingers_sweep_from_open():
+    """A point 9 cm along the closing direction and 4 cm back from the TCP is inside the Franka hand (a mug's far
+    rim under the hand); a point 5 cm out, beside the tips, is where an open finger comes down before closing."""
+    gripper = GripperGeometry(max_width=0.08)
+    upright = np.eye(3)
+    beside_the_hand = np.array([[0.0, 0.09, -0.04]])
+    assert collides(upright, np.zeros(3), beside_the_hand, gripper, width=0.02)
+    beside_the_tips = np.array([[0.0, 0.045, -0.01]])
+    assert collides(upright, np.zeros(3), beside_the_tips, gripper, width=0.02)
+    clear = np.array([[0.0, 0.09, 0.02], [0.0, 0.0, 0.03], [0.05, 0.0, -0.02]])  # past the tips; in front; aside
+    assert not collides(upright, np.zeros(3), clear, gripper, width=0.02)
+
+
 def test_placement_spots_avoid_occupants_and_fill_from_the_corner():
     receptacle = Receptacle("tray", Transform.identity(), np.array([-0.1, -0.1, 0.8]), np.array([0.1, 0.1, 0.9]))
     occupant = Box3D(np.array([-0.1, -0.1, 0.8]), np.array([0.0, 0.0, 0.85]))
@@ -81,3 +94,55 @@ def test_spot_at_never_sinks_below_the_support():
     assert math.isclose(spot.center[2], 0.82 + 0.04 + 0.012)
     high = spot_at(np.array([0.1, 0.2, 1.0]), np.array([0.05, 0.05, 0.08]), support_top=0.82)
     assert high.center[2] == 1.0
+
+
+def test_each_robots_hand_box_holds_its_hand():
+    """The hand boxes in the robot descriptions against the models: every vertex of the gripper's collision
+    meshes that are not fingers lies within the box (fully open, in the TCP frame), and the box is no more than
+    2 mm larger than they are."""
+    import mujoco
+
+    from roboscript.backends.mujoco_backend import MujocoBackend
+
+    fingers = {"panda": ("left_finger", "right_finger"), "ur5e": ("follower", "pad")}
+    for robot in ("panda", "ur5e"):
+        backend = MujocoBackend("world_2_pick_and_place", robot=robot)
+        try:
+            model, data = backend.sim_world.model, backend.sim_world.data
+            tcp = backend.tcp_pose()
+            hand = int(model.site(backend.robot.qualified(backend.robot.tcp_site)).bodyid[0])
+            lower, upper = (np.array(c) for c in backend.robot.gripper.hand_box)
+            checked, seen_lower, seen_upper = 0, np.full(3, np.inf), np.full(3, -np.inf)
+            for g in range(model.ngeom):
+                body = int(model.geom_bodyid[g])
+                if not _descends(model, body, hand) or any(f in model.body(body).name for f in fingers[robot]):
+                    continue
+                if model.geom_contype[g] == 0 and model.geom_conaffinity[g] == 0:
+                    continue
+                assert model.geom_type[g] == mujoco.mjtGeom.mjGEOM_MESH, model.body(body).name
+                mesh = model.geom_dataid[g]
+                start = model.mesh_vertadr[mesh]
+                vertices = model.mesh_vert[start : start + model.mesh_vertnum[mesh]]
+                local = tcp.inverse().apply(data.geom_xpos[g] + vertices @ data.geom_xmat[g].reshape(3, 3).T)
+                assert np.all(local >= lower) and np.all(local <= upper), (robot, model.body(body).name)
+                seen_lower, seen_upper = (
+                    np.minimum(seen_lower, local.min(axis=0)),
+                    np.maximum(seen_upper, local.max(axis=0)),
+                )
+                checked += 1
+            assert np.all(seen_lower - lower < 0.002) and np.all(upper - seen_upper < 0.002), (
+                robot,
+                seen_lower,
+                seen_upper,
+            )
+            assert checked >= (1 if robot == "panda" else 7), (robot, checked)
+        finally:
+            backend.close()
+
+
+def _descends(model, body: int, root: int) -> bool:
+    while body > 0:
+        if body == root:
+            return True
+        body = int(model.body_parentid[body])
+    return False

@@ -50,7 +50,10 @@ class ToolAPI:
         self.perception = perception
         self.motion = motion
         self.seed = seed
-        self.gripper = GripperGeometry(max_width=backend.robot.gripper.max_width)
+        gripper = backend.robot.gripper
+        self.gripper = GripperGeometry(
+            max_width=gripper.max_width, hand_lower=gripper.hand_box[0], hand_upper=gripper.hand_box[1]
+        )
         self.base_xy = np.asarray(motion.kinematics.mount.position[:2], dtype=float)
         self._held: list[str] = []
         # Names the gripper may touch until it has moved clear of them (what it grasped or just let go of).

@@ -20,14 +20,19 @@ from roboscript.perception.base import ObjectPoints
 
 @dataclass(frozen=True)
 class GripperGeometry:
-    """Collision proxy of a parallel gripper in the TCP frame (z: approach, y: closing, origin between the tips)."""
+    """Collision proxy of a parallel gripper in the TCP frame (z: approach, y: closing, origin between the tips).
+
+    The fingers are checked over all they sweep while closing from ``max_width`` (the gripper approaches open)
+    to the grasp's width; the hand behind them is the box ``hand_lower``..``hand_upper`` (defaults: the Franka
+    hand, 21 cm across the closing direction: a hand proxy no wider than the opening let it sink onto a mug's far
+    rim)."""
 
     max_width: float
-    finger_length: float = 0.045  # how far the fingers reach back from the TCP to the palm
+    finger_length: float = 0.045  # how far the fingers reach back from the TCP to the hand
     finger_thickness: float = 0.012
     finger_breadth: float = 0.02  # along x
-    palm_breadth: float = 0.06
-    palm_depth: float = 0.06
+    hand_lower: tuple[float, float, float] = (-0.033, -0.105, -0.13)
+    hand_upper: tuple[float, float, float] = (0.033, 0.101, -0.036)
 
 
 @dataclass(frozen=True)
@@ -108,16 +113,17 @@ def grasp_frames(center: np.ndarray, closing: np.ndarray, approaches: int = 12) 
 def collides(
     rotation: np.ndarray, center: np.ndarray, scene: np.ndarray, gripper: GripperGeometry, width: float
 ) -> bool:
-    """Whether the open fingers (at ``width`` plus a margin) or the palm would contain any scene point."""
+    """Whether the fingers, closing from fully open to ``width`` (plus a margin), or the hand behind them would
+    contain any scene point."""
     local = (scene - center) @ rotation
     x, y, z = local[:, 0], local[:, 1], local[:, 2]
     inner = width / 2 + 0.006
+    outer = max(inner, gripper.max_width / 2) + gripper.finger_thickness
     in_finger_x = np.abs(x) < gripper.finger_breadth / 2
-    fingers = in_finger_x & (np.abs(y) > inner) & (np.abs(y) < inner + gripper.finger_thickness)
+    fingers = in_finger_x & (np.abs(y) > inner) & (np.abs(y) < outer)
     fingers &= (z > -gripper.finger_length) & (z < 0.012)
-    palm = (np.abs(x) < gripper.palm_breadth / 2) & (np.abs(y) < inner + gripper.finger_thickness)
-    palm &= (z <= -gripper.finger_length) & (z > -gripper.finger_length - gripper.palm_depth)
-    return bool(fingers.any() or palm.any())
+    hand = np.all((local > np.asarray(gripper.hand_lower)) & (local < np.asarray(gripper.hand_upper)), axis=1)
+    return bool(fingers.any() or hand.any())
 
 
 def pad_contact(rotation: np.ndarray, tcp: np.ndarray, points: np.ndarray, width: float, pad: float = 0.025) -> float:

@@ -21,7 +21,8 @@ class GripperDescription:
 
     ``open_ctrl``/``closed_ctrl`` are the actuator commands for fully open and fully closed. The opening width
     is measured as the distance between ``finger_bodies`` along the TCP's y axis (the closing direction),
-    less ``width_offset``.
+    less ``width_offset``. ``hand_box``: ``(lower, upper)`` corners, in the TCP frame, of a box around the hand
+    behind the fingers (its body and, fully open, its linkages), for the grasp detector's collision check.
     """
 
     actuator: str
@@ -32,6 +33,7 @@ class GripperDescription:
     max_width: float
     joints: tuple[str, ...]
     open_qpos: tuple[float, ...]  # positions of ``joints`` when open, to start worlds with the gripper open
+    hand_box: tuple[tuple[float, float, float], tuple[float, float, float]]
 
 
 @dataclass(frozen=True)

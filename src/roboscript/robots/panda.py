@@ -58,6 +58,7 @@ PANDA_DESCRIPTION = RobotDescription(
         max_width=0.08,
         joints=("finger_joint1", "finger_joint2"),
         open_qpos=(FINGER_STROKE, FINGER_STROKE),
+        hand_box=((-0.033, -0.105, -0.13), (0.033, 0.101, -0.036)),  # the hand mesh's vertices, 1 mm out
     ),
     build_spec=build_spec,
 )

@@ -59,6 +59,8 @@ UR5E_DESCRIPTION = RobotDescription(
         max_width=0.085,
         joints=(GRIPPER_PREFIX + "left_driver_joint", GRIPPER_PREFIX + "right_driver_joint"),
         open_qpos=(0.0, 0.0),
+        # The vertices of the base's, drivers', couplers' and spring links' meshes, fully open, 1 mm out.
+        hand_box=((-0.039, -0.075, -0.15), (0.039, 0.075, -0.034)),
     ),
     build_spec=build_spec,
 )
