@@ -93,3 +93,39 @@ def test_an_open_drawers_axis_is_still_its_fronts_normal():
         assert np.degrees(np.arccos(np.clip(found.axis @ closed.axis, -1, 1))) < 2.0
     finally:
         backend.close()
+
+
+def test_furniture_parts_are_measured_from_their_points(cabinet):
+    """With ground-truth 2D boxes, the handles' boxes (the points standing out of their fronts) against the
+    simulator's, the fronts' normals, and a part no camera saw, which is "not found" rather than answered."""
+    backend, _, truth = cabinet
+    seen = make_perception("gt-2d", backend)
+    seen.detect(["mug"])
+    for handle in ("cabinet.handle_0", "cabinet.handle_1", "cabinet.handle_2", "cabinet.handle_3"):
+        assert np.linalg.norm(seen.box(handle).center - truth.box(handle).center) < 0.006, handle
+    for drawer in ("cabinet.drawer_0", "cabinet.drawer_1", "cabinet.drawer_2"):
+        on_front = truth.box(drawer.replace("drawer", "handle")).center - np.array(
+            [0.02, 0.14, 0.0]
+        )  # clear of the handle
+        normal = seen.plane_normal(drawer, on_front)
+        assert normal @ truth.plane_normal(drawer, on_front) > np.cos(np.radians(2.0)), (drawer, normal)
+    assert seen.receptacle("cabinet.handle_1") is None and seen.receptacle("cabinet") is None
+    del seen.parts_seen["cabinet.handle_3"]
+    assert "cabinet.handle_3" not in seen.names()
+    with pytest.raises(KeyError, match=r"'cabinet.handle_3' was not found: no camera has seen it"):
+        seen.require("cabinet.handle_3")
+
+
+def test_a_front_and_a_handle_from_different_looks_give_no_joint(cabinet):
+    """A handle last seen in an earlier look may have moved with its drawer since: the joint is estimated only
+    from a front and a handle one look saw together (the robot has not moved, so looking again would not help)."""
+    backend, _, _ = cabinet
+    seen = make_perception("gt-2d", backend)
+    seen.detect(["mug"])
+    seen.detect(["mug"])
+    seen._part_look["cabinet.handle_1"] = seen.looks - 1
+    with pytest.raises(
+        KeyError, match=r"'cabinet.drawer_1' was not found: its front and its handle .* different looks"
+    ):
+        seen.joints("cabinet.drawer_1")
+    assert seen.joints("cabinet.drawer_0")[0].part == "cabinet.drawer_0"

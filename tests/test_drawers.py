@@ -78,13 +78,23 @@ def test_a_closed_drawer_shows_no_inside_and_has_no_room():
     assert closed.lower[1] == pytest.approx(-0.2, abs=0.01) and closed.upper[1] == pytest.approx(0.2, abs=0.01)
 
 
-def test_a_bottom_seen_only_along_one_edge_is_not_an_inside():
-    """The arm hid all of an open drawer's bottom but a strip along one wall: that is no inside to fill."""
-    drawer, carcass = _drawer(opening=0.25)
+def test_a_bottom_seen_only_along_one_wall_is_not_an_inside():
+    """The arm hid all of an open drawer's bottom but a 1 cm strip along one wall: too narrow to be an inside."""
     frame = opening_frame(_joint(0.25))
-    strip = drawer[(drawer[:, 2] > 1.0 + 0.002) | (drawer[:, 1] < -0.175) | (drawer[:, 0] >= 0.25)]
-    line = carcass_front(carcass[:, :3], frame, 0.35)
-    assert drawer_receptacle("cabinet.drawer_0", strip[:, :3], strip[:, 3:], frame, line) is None
+    strip = _sheet([-0.15, -0.18, 1.0], [0.385, 0, 0], [0, 0.01, 0], 400)
+    wall = _sheet([-0.15, -0.18, 1.0], [0.385, 0, 0], [0, 0, 0.1], 600, normal=(0, 1, 0))
+    seen = np.concatenate([strip, wall])
+    assert drawer_receptacle("cabinet.drawer_0", seen[:, :3], seen[:, 3:], frame, -0.25) is None
+    whole = np.concatenate([seen, _sheet([-0.15, -0.18, 1.0], [0.385, 0, 0], [0, 0.36, 0])])
+    assert drawer_receptacle("cabinet.drawer_0", whole[:, :3], whole[:, 3:], frame, -0.25) is not None
+
+
+def test_the_tops_of_two_walls_are_not_a_bottom():
+    """Seen from above with the bottom hidden, the walls' top edges are two level lines as far apart as the
+    drawer is wide: they cover too little of the rectangle between them to be its bottom."""
+    frame = opening_frame(_joint(0.25))
+    tops = np.concatenate([_sheet([-0.15, y, 1.1], [0.385, 0, 0], [0, 0.008, 0], 800) for y in (-0.188, 0.18)])
+    assert drawer_receptacle("cabinet.drawer_0", tops[:, :3], tops[:, 3:], frame, -0.25) is None
 
 
 def test_a_joint_that_does_not_slide_level_is_refused():
@@ -94,8 +104,8 @@ def test_a_joint_that_does_not_slide_level_is_refused():
 
 
 def test_the_seen_inside_of_the_simulated_drawer_matches_its_tray():
-    """Closed, no room. Then pulled out 22 cm while perception was not told: the inside it last saw is none, so
-    it looks again, and the inside from points matches the simulator's tray (less the part in the carcass)."""
+    """Closed, no room. Then pulled out 22 cm and let go of (as the tools tell perception after a pull): it looks
+    again, and the inside from points matches the simulator's tray (less the part in the carcass)."""
     backend = MujocoBackend("world_5_mug_to_cabinet", robot="panda")
     try:
         seen = make_perception("gt-2d", backend)
@@ -107,6 +117,7 @@ def test_the_seen_inside_of_the_simulated_drawer_matches_its_tray():
         backend.wait(0.2)
         truth = make_perception("gt", backend)
         looks = seen.looks
+        seen.released("cabinet.drawer_1", backend.tcp_pose())
         expected, found = truth.receptacle("cabinet.drawer_1"), seen.receptacle("cabinet.drawer_1")
         corners = [(r.frame.apply(r.lower[None])[0], r.frame.apply(r.upper[None])[0]) for r in (expected, found)]
         (lower, upper), (seen_lower, seen_upper) = corners

@@ -392,9 +392,24 @@ class ToolAPI:
         prefix, _, part = name.rpartition(".")
         if part.startswith(("drawer_", "door_", "handle_")):
             for other in self.perception.names():
-                if other.startswith(prefix + ".") and any(j.part in family for j in self.perception.joints(other)):
+                if other.startswith(prefix + ".") and any(j.part in family for j in self._joints_if_known(other)):
                     family.add(other)
         return sorted(family)
+
+    def _joints_if_known(self, name: str) -> list:
+        """The joints of ``name``, or none where perception cannot tell them (a part whose handle was not seen):
+        a question about one part should not fail over another."""
+        try:
+            return self.perception.joints(name)
+        except (UnknownObjectError, ValueError):
+            return []
+
+    def _holds_things(self, name: str) -> bool:
+        """Whether ``name`` is a receptacle, for an error message: False where perception cannot tell."""
+        try:
+            return self.perception.receptacle(name) is not None
+        except (UnknownObjectError, ValueError):
+            return False
 
     def _receptacle(self, receptacle_name: str, held: str) -> Receptacle:
         if receptacle_name == TABLE:
@@ -405,7 +420,7 @@ class ToolAPI:
             raise ValueError(f"cannot place {held!r} into itself")
         receptacle = self.perception.receptacle(name)
         if receptacle is None:
-            containers = [n for n in self.perception.names() if self.perception.receptacle(n) is not None]
+            containers = [n for n in self.perception.names() if self._holds_things(n)]
             raise ValueError(
                 f"{name!r} cannot hold things; receptacles here: {', '.join([*containers, TABLE])}; or pass position="
             )

@@ -71,10 +71,13 @@ def drawer_receptacle(
     inside = local[behind]
     if len(inside) < MIN_BOTTOM_POINTS:
         return None
-    floor = _densest_layer(inside[:, 2])  # the bottom is level: its points crowd one thin layer
     facing = (np.asarray(normals, dtype=float) @ frame.rotation)[behind]  # in the frame
+    up = facing[:, 2] > FACING_UP
+    if up.sum() < MIN_BOTTOM_POINTS:
+        return None
+    floor = _densest_layer(inside[up, 2])  # the bottom is level: its up-facing points crowd one thin layer
     on_floor = np.abs(inside[:, 2] - floor) < FLOOR_BAND / 2
-    bottom = inside[on_floor & (facing[:, 2] > FACING_UP)]
+    bottom = inside[on_floor & up]
     if len(bottom) < MIN_BOTTOM_POINTS or np.any(np.ptp(bottom[:, :2], axis=0) < MIN_SPREAD):
         return None
     if _cover(bottom[:, :2]) < MIN_COVER:

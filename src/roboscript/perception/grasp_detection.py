@@ -3,8 +3,9 @@
 Antipodal sampling over an object's observed points: a seed point's normal gives a closing line; a point on the
 far side of the object along that line whose normal is roughly opposite closes the pair. Each pair becomes grasps
 with several approach directions perpendicular to its closing axis. Candidates are scored by contact quality (how
-well both normals lie inside the friction cone), rejected where the open fingers or the palm would hit observed
-points, and ranked by the caller's preferences (position, approach direction, plane normal).
+well both normals lie inside the friction cone), rejected where the fingers (closing from fully open) or the hand
+behind them would hit observed points, and ranked by the caller's preferences (position, approach direction, plane
+normal).
 """
 
 from __future__ import annotations

@@ -102,8 +102,9 @@ def largest_cluster(points: np.ndarray, gap: float = CLUSTER_GAP, share: float =
     if labels.max() < 0:
         return np.arange(len(points))
     sizes = np.bincount(labels[labels >= 0])
-    kept = np.flatnonzero(sizes >= share * sizes.max())
-    return np.flatnonzero(np.isin(labels, kept))
+    if share >= 1.0:
+        return np.flatnonzero(labels == sizes.argmax())
+    return np.flatnonzero(np.isin(labels, np.flatnonzero(sizes >= share * sizes.max())))
 
 
 def build_instances(

@@ -6,9 +6,10 @@ observed surfaces as occupancy boxes). ``full`` takes none from ground truth, ``
 ``gt-scene`` each take one, and can be combined with ``+`` (``gt-2d+gt-scene``) to isolate the rest.
 
 Without ground-truth 2D boxes, the boxes come from an open-vocabulary detector whose weights the user provides
-(``$ROBOSCRIPT_DETECTOR=owlv2:DIR`` or ``grounding-dino:DIR``). Where objects are observed, furniture joints are
-estimated from the points of the parts' fronts and handles (:mod:`roboscript.perception.articulation`); the parts'
-boxes, points and interiors still come from ground truth in every mode.
+(``$ROBOSCRIPT_DETECTOR=owlv2:DIR`` or ``grounding-dino:DIR``). Where objects are observed, furniture is too:
+its boxes, points, joints (:mod:`roboscript.perception.articulation`) and drawers' insides
+(:mod:`roboscript.perception.drawers`) come from the points of the carcass, fronts and handles; only the labels
+(what parts there are, which part a handle moves, sliding or turning) come from the furniture's description.
 """
 
 from __future__ import annotations

@@ -53,6 +53,7 @@ RIM = 0.02  # metres of a shallow container's edge that things should not rest o
 SURFACE_STRIDE = 2  # every how many depth pixels one stands for the observed surfaces (as ground truth's do)
 PLANE_RADIUS = 0.03  # metres around the queried point whose points a face's plane is fitted to
 HANDLE_PROUD = 0.004  # metres out of its front from which a point is the handle's, not the front's
+MOVED = 0.005  # metres the gripper must have moved since a look for another look to be worth it
 
 
 class ObjectNotFoundError(UnknownObjectError):
@@ -121,7 +122,8 @@ class PipelinePerception(Perception):
         self._joints: dict[str, ArticulationJoint] = {}  # estimated from the last look, by moving part
         self._vacated: list[Box3D] = []  # where objects were taken from since the last look
         self._holding_looks = False
-        self._look_time = -1.0  # the backend's time at the last look
+        self._look_tcp: np.ndarray | None = None  # where the gripper was at the last look
+        self._part_look: dict[str, int] = {}  # the look each part in parts_seen is from
 
     # --- looking ----------------------------------------------------------------------------------------------
 
@@ -136,9 +138,11 @@ class PipelinePerception(Perception):
         masks = robot_masks(frames, self.robot_index)
         furniture = self._furniture_phrases()
         phrases = [p for p in asked if p not in furniture]
-        seen = observe(frames, self.grounder, phrases + list(furniture), self.settings, masks, pieces=set(furniture))
+        # A drawer, a door or the carcass may show in pieces (an open drawer's front and, apart, its inside).
+        pieces = {p for p, n in furniture.items() if ".handle_" not in n}
+        seen = observe(frames, self.grounder, phrases + list(furniture), self.settings, masks, pieces=pieces)
         self.last, self._looked, self._stale = seen, True, False
-        self._look_time = self.backend.time()
+        self._look_tcp = self.backend.tcp_pose().position.copy()
         self._vacated = []
         self.looks += 1
         used = [k for k, f in enumerate(frames) if f.name in seen.scene.used]  # broken depth images are not
@@ -150,6 +154,7 @@ class PipelinePerception(Perception):
             if found:
                 biggest = max(found, key=lambda i: len(i.points))
                 self.parts_seen[part] = ObjectPoints(biggest.points, biggest.normals)
+                self._part_look[part] = self.looks
         self._trim_handles()
         for phrase in phrases:
             found = [i for i in seen.instances if i.label == phrase]
@@ -201,10 +206,11 @@ class PipelinePerception(Perception):
 
     def _trim_handles(self) -> None:
         """Keeps of each handle the points standing out of its part's front: its 2D boxes hold some of the front
-        around it, and the handle's centre decides where the gripper closes and where the joint's line runs."""
-        for handle in [n for n in self.parts_seen if ".handle_" in n]:
+        around it, and the handle's centre decides where the gripper closes and where the joint's line runs. Only
+        a handle and a front of this look: one seen earlier may have moved since."""
+        for handle in [n for n in self.parts_seen if ".handle_" in n and self._part_look[n] == self.looks]:
             part = self._moves(handle)
-            if part is None or part not in self.parts_seen:
+            if part is None or self._part_look.get(part) != self.looks:
                 continue
             points, normals = self.parts_seen[handle].points, self.parts_seen[handle].normals
             try:
@@ -279,8 +285,14 @@ class PipelinePerception(Perception):
         return self.parts_seen[name]
 
     def box(self, name: str) -> Box3D:
+        """Of furniture, the box of all of it seen: the carcass with its parts (a handle stands out of it)."""
         obj = self._object(name)
-        return obj.box if obj else fit_box(self._part(name).points)
+        if obj:
+            return obj.box
+        if "." in name:
+            return fit_box(self._part(name).points)
+        pieces = [seen.points for part, seen in self.parts_seen.items() if part == name or part.startswith(name + ".")]
+        return fit_box(np.concatenate(pieces))
 
     def footprint(self, name: str) -> tuple[np.ndarray, float, np.ndarray]:
         """Of furniture and parts, their box from above (as ground truth gives it)."""
@@ -318,7 +330,10 @@ class PipelinePerception(Perception):
         joints = self.parts.joints(handle)
         return joints[0].part if joints else None
 
-    def _estimated(self, labelled: ArticulationJoint) -> ArticulationJoint:
+    def _estimated(self, labelled: ArticulationJoint, retried: bool = False) -> ArticulationJoint:
+        """The joint of ``labelled.part`` from its front and its handle as one look saw them (a drawer pulled
+        since an earlier look has moved away from a handle seen then); looks again once if they are from
+        different looks and the robot has moved since."""
         part = labelled.part
         if part in self._joints:
             return self._joints[part]
@@ -328,19 +343,31 @@ class PipelinePerception(Perception):
             raise ObjectNotFoundError(
                 part, self.names(), f"its front was not seen well enough to estimate its joint ({points} points)"
             )
-        handle_center = self._handle(part).points.mean(axis=0)
+        handle = self._handle(part)
+        if self._part_look[handle] != self._part_look[part]:
+            if not retried and self._may_look_again():
+                self._look(list(self._asked))
+                return self._estimated(labelled, retried=True)
+            why = (
+                f"its front and its handle {handle!r} were last seen in different looks ({self._part_look[part]} and "
+                f"{self._part_look[handle]}), and its joint is estimated from both as they stand together"
+            )
+            raise ObjectNotFoundError(part, self.names(), why)
         estimate = drawer_joint if labelled.type == "prismatic" else door_joint
-        self._joints[part] = estimate(part, front, handle_center)
+        try:
+            self._joints[part] = estimate(part, front, self.parts_seen[handle].points.mean(axis=0))
+        except ValueError as exc:
+            raise ObjectNotFoundError(part, self.names(), f"its joint could not be estimated: {exc}") from exc
         return self._joints[part]
 
-    def _handle(self, part: str) -> ObjectPoints:
-        """The points of the handle the labels put on ``part``; "not found" if none was seen."""
+    def _handle(self, part: str) -> str:
+        """The handle the labels put on ``part`` (the one seen last); "not found" if none was seen."""
         handles = [n for n in self._furniture_phrases().values() if ".handle" in n and self._moves(n) == part]
         seen = [n for n in handles if n in self.parts_seen]
         if not seen:
             why = f"its handle ({', '.join(handles) or 'none'}) was not seen, and its geometry is measured from it"
             raise ObjectNotFoundError(part, self.names(), why)
-        return self.parts_seen[seen[0]]
+        return max(seen, key=lambda n: self._part_look[n])
 
     def plane_normal(self, name: str, position: np.ndarray) -> np.ndarray:
         obj = self._object(name)
@@ -398,9 +425,11 @@ class PipelinePerception(Perception):
         return inside if inside is not None else closed_drawer(name, points, frame)
 
     def _may_look_again(self) -> bool:
-        """Whether a new look could show more than the last: the robot has moved since, and looking is not
-        held off."""
-        return not self._holding_looks and self.backend.time() > self._look_time
+        """Whether a new look could show more than the last: the gripper has moved since (the arm hides less, or
+        other things), and looking is not held off."""
+        if self._holding_looks or self._look_tcp is None:
+            return False
+        return float(np.linalg.norm(self.backend.tcp_pose().position - self._look_tcp)) > MOVED
 
 
 def _moved(obj: SeenObject, motion: Transform) -> SeenObject:
