@@ -118,7 +118,8 @@ def test_furniture_parts_are_measured_from_their_points(cabinet):
 
 def test_a_front_and_a_handle_from_different_looks_give_no_joint(cabinet):
     """A handle last seen in an earlier look may have moved with its drawer since: the joint is estimated only
-    from a front and a handle one look saw together (the robot has not moved, so looking again would not help)."""
+    from a front and a handle one look saw together; it does not look again by itself (it is asked for every part
+    near the gripper)."""
     backend, _, _ = cabinet
     seen = make_perception("gt-2d", backend)
     seen.detect(["mug"])

@@ -285,14 +285,9 @@ class PipelinePerception(Perception):
         return self.parts_seen[name]
 
     def box(self, name: str) -> Box3D:
-        """Of furniture, the box of all of it seen: the carcass with its parts (a handle stands out of it)."""
+        """Of furniture, the box of its carcass as seen (its parts have boxes of their own)."""
         obj = self._object(name)
-        if obj:
-            return obj.box
-        if "." in name:
-            return fit_box(self._part(name).points)
-        pieces = [seen.points for part, seen in self.parts_seen.items() if part == name or part.startswith(name + ".")]
-        return fit_box(np.concatenate(pieces))
+        return obj.box if obj else fit_box(self._part(name).points)
 
     def footprint(self, name: str) -> tuple[np.ndarray, float, np.ndarray]:
         """Of furniture and parts, their box from above (as ground truth gives it)."""
@@ -330,10 +325,10 @@ class PipelinePerception(Perception):
         joints = self.parts.joints(handle)
         return joints[0].part if joints else None
 
-    def _estimated(self, labelled: ArticulationJoint, retried: bool = False) -> ArticulationJoint:
+    def _estimated(self, labelled: ArticulationJoint) -> ArticulationJoint:
         """The joint of ``labelled.part`` from its front and its handle as one look saw them (a drawer pulled
-        since an earlier look has moved away from a handle seen then); looks again once if they are from
-        different looks and the robot has moved since."""
+        since an earlier look has moved away from a handle seen then). It does not look again by itself: it is
+        asked for every part near the gripper, and a look for each would cost a second apiece."""
         part = labelled.part
         if part in self._joints:
             return self._joints[part]
@@ -345,9 +340,6 @@ class PipelinePerception(Perception):
             )
         handle = self._handle(part)
         if self._part_look[handle] != self._part_look[part]:
-            if not retried and self._may_look_again():
-                self._look(list(self._asked))
-                return self._estimated(labelled, retried=True)
             why = (
                 f"its front and its handle {handle!r} were last seen in different looks ({self._part_look[part]} and "
                 f"{self._part_look[handle]}), and its joint is estimated from both as they stand together"
@@ -407,7 +399,13 @@ class PipelinePerception(Perception):
         joints = self.parts.joints(name) if ".drawer_" in name else []
         if not joints or joints[0].type != "prismatic" or joints[0].part != name:
             return None
-        frame = opening_frame(self._estimated(joints[0]))
+        try:
+            frame = opening_frame(self._estimated(joints[0]))
+        except UnknownObjectError:
+            if retried or not self._may_look_again():
+                raise
+            self._look(list(self._asked))  # the arm that pulled it may have hidden its handle from that look
+            return self._drawer_inside(name, retried=True)
         furniture = name.split(".", 1)[0]
         if furniture not in self.parts_seen:
             raise ObjectNotFoundError(
