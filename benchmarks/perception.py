@@ -33,7 +33,7 @@ def measure(world: str, robot: str, repeats: int, settings: FusionSettings, nois
         objects = [e.name for e in gt.world.entities if e.kind == "object"]
         # Furniture and its parts are looked for too, as detect_objects does: their geometry is measured from them.
         parts = [e.name for e in gt.world.entities if e.kind in ("furniture", "part")]
-        pieces = {normalize_phrase(p) for p in parts}
+        pieces = {normalize_phrase(p) for p in parts if ".handle_" not in p}  # as detect_objects: handles are one
         robot_index = gt.world.entity("robot").index
         grounder = SegmentationGrounder(gt.world.entities, noise=noise)
         render, fusion, rest = [], [], []
