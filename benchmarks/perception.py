@@ -23,6 +23,7 @@ from roboscript.perception.evaluation import score_instances, tuple_is_correct
 from roboscript.perception.fusion import FusionSettings
 from roboscript.perception.grounding import GroundingNoise, SegmentationGrounder, normalize_phrase
 from roboscript.perception.observation import observe
+from roboscript.perception.pipeline import shows_in_pieces
 from roboscript.sim.world_catalog import world_names
 
 
@@ -33,7 +34,7 @@ def measure(world: str, robot: str, repeats: int, settings: FusionSettings, nois
         objects = [e.name for e in gt.world.entities if e.kind == "object"]
         # Furniture and its parts are looked for too, as detect_objects does: their geometry is measured from them.
         parts = [e.name for e in gt.world.entities if e.kind in ("furniture", "part")]
-        pieces = {normalize_phrase(p) for p in parts if ".handle_" not in p}  # as detect_objects: handles are one
+        pieces = {normalize_phrase(p) for p in parts if shows_in_pieces(p)}
         robot_index = gt.world.entity("robot").index
         grounder = SegmentationGrounder(gt.world.entities, noise=noise)
         render, fusion, rest = [], [], []

@@ -2,12 +2,11 @@
 
 The frame is on the drawer's front, at the foot of its handle (the estimated joint's point,
 :mod:`roboscript.perception.articulation`), turned so that x points along the opening direction; the inside is
-behind the front (x < 0). Across
-and down it is the drawer's bottom as seen; forward, it reaches the front panel's inner face, which the panel's
-top edge shows (the bottom just behind the panel is in its shadow); its top is the highest of the walls seen, at
-most the front's top. Along x it reaches back to
-the cabinet's front only, less a clearance: the part still inside the carcass may be seen through the gap above
-the drawer, but cannot be reached from above.
+behind the front (x < 0). Across and down it is the drawer's bottom as seen; forward, it reaches the front panel's
+inner face, which the panel's top edge shows (the bottom just behind the panel is in its shadow); its top is the
+highest of the walls seen, at most the front's top. Along x it reaches back to the cabinet's front only, less a
+clearance: the part still inside the carcass may be seen through the gap above the drawer, but cannot be reached
+from above.
 """
 
 from __future__ import annotations
@@ -18,6 +17,7 @@ import numpy as np
 
 from roboscript.geometry import Transform, quat_from_yaw
 from roboscript.perception.base import DRAWER_FRONT_CLEARANCE, ArticulationJoint, Receptacle
+from roboscript.perception.instances import densest_layer
 
 FRONT_BAND = 0.005  # metres behind the front's plane still taken as the front's own points
 PANEL_SEARCH = 0.04  # metres behind the front's plane a front panel's top edge is looked for
@@ -53,9 +53,7 @@ def carcass_front(carcass_points: np.ndarray, frame: Transform, behind: float) -
         raise ValueError(
             f"none of the {len(carcass_points)} points of the cabinet lie within {behind} m behind the drawer's front"
         )
-    counts, edges = np.histogram(x, bins=np.arange(x.min(), x.max() + 2 * LAYER, LAYER))
-    peak = int(np.argmax(counts))
-    return float(edges[peak + 1])
+    return densest_layer(x, LAYER)[1]
 
 
 def drawer_receptacle(
@@ -131,6 +129,5 @@ def _cover(xy: np.ndarray) -> float:
 
 def _densest_layer(heights: np.ndarray) -> float:
     """The median of the thin layer of ``heights`` holding the most of them."""
-    counts, edges = np.histogram(heights, bins=np.arange(heights.min(), heights.max() + 2 * LAYER, LAYER))
-    peak = int(np.argmax(counts))
-    return float(np.median(heights[(heights >= edges[peak]) & (heights <= edges[peak + 1])]))
+    lower, upper = densest_layer(heights, LAYER)
+    return float(np.median(heights[(heights >= lower) & (heights <= upper)]))

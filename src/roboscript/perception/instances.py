@@ -46,12 +46,16 @@ def instance_mask(
     return inside & ~contradicted
 
 
+def densest_layer(values: np.ndarray, thickness: float) -> tuple[float, float]:
+    """``(lower, upper)`` bounds of the layer ``thickness`` thick holding the most of ``values``."""
+    counts, edges = np.histogram(values, bins=np.arange(values.min(), values.max() + 2 * thickness, thickness))
+    peak = int(np.argmax(counts))
+    return float(edges[peak]), float(edges[peak + 1])
+
+
 def support_height(points: np.ndarray, bin_size: float = 0.002) -> float:
     """Height of the scene's dominant horizontal surface (the table): the densest thin layer of points."""
-    z = points[:, 2]
-    counts, edges = np.histogram(z, bins=np.arange(z.min(), z.max() + 2 * bin_size, bin_size))
-    peak = int(np.argmax(counts))
-    return float(edges[peak + 1])
+    return densest_layer(points[:, 2], bin_size)[1]
 
 
 FOOTPRINT_HEIGHT = 0.015  # metres above the support below which the fused surface blurs into it

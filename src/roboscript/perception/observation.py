@@ -68,12 +68,9 @@ def observe(
     instances = build_instances(
         matched, scene.points, scene.normals, memberships, projections, support, areas, pieces=pieces
     )
-    maps = [point_map(f) for f in usable]
-    if robot_masks is not None:  # the robot's own pixels are no object's, nor any part's
-        by_name = {f.name: m for f, m in zip(frames, robot_masks, strict=True)}
-        for points, frame in zip(maps, usable, strict=True):
-            if by_name[frame.name] is not None:
-                points[by_name[frame.name]] = np.nan
+    # The robot's own pixels are no object's, nor any part's.
+    hidden = dict(zip((f.name for f in frames), robot_masks or [None] * len(frames), strict=True))
+    maps = [point_map(f, hidden[f.name]) for f in usable]
     normals = [normal_map(m, f.extrinsics.position) for m, f in zip(maps, usable, strict=True)]
     instances = [refine_with_depth(i, detections, maps, normals, support) for i in instances]
     instances = ground(instances, support)

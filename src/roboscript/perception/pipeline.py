@@ -93,8 +93,8 @@ class PipelinePerception(Perception):
     """Perception from ``backend``'s cameras through ``grounder``; ``parts`` labels furniture and its parts (what
     parts there are, which part a handle moves and how).
 
-        ``vocabulary``: the phrases ``detect_objects()`` looks for when given none; ``robot_index``: the segmentation
-        index of the robot, whose own pixels are left out of the fused surface (a real rig renders its model for this).
+    ``vocabulary``: the phrases ``detect_objects()`` looks for when given none; ``robot_index``: the segmentation
+    index of the robot, whose own pixels are left out of the fused surface (a real rig renders its model for this).
     """
 
     def __init__(
@@ -124,6 +124,11 @@ class PipelinePerception(Perception):
         self._holding_looks = False
         self._look_tcp: np.ndarray | None = None  # where the gripper was at the last look
         self._part_look: dict[str, int] = {}  # the look each part in parts_seen is from
+        # The labels, which do not change: phrase -> name of furniture and each of its parts, and what each handle
+        # moves.
+        movable = set(parts.objects())
+        self.furniture = {normalize_phrase(n): n for n in parts.names() if n not in movable}
+        self._moved_by = {n: _labelled_part(parts, n) for n in self.furniture.values() if ".handle_" in n}
 
     # --- looking ----------------------------------------------------------------------------------------------
 
@@ -136,11 +141,9 @@ class PipelinePerception(Perception):
     def _look(self, asked: list[str]) -> None:
         frames = [self.backend.capture(c) for c in self.backend.camera_names()]
         masks = robot_masks(frames, self.robot_index)
-        furniture = self._furniture_phrases()
-        phrases = [p for p in asked if p not in furniture]
-        # A drawer, a door or the carcass may show in pieces (an open drawer's front and, apart, its inside).
-        pieces = {p for p, n in furniture.items() if ".handle_" not in n}
-        seen = observe(frames, self.grounder, phrases + list(furniture), self.settings, masks, pieces=pieces)
+        phrases = [p for p in asked if p not in self.furniture]
+        pieces = {p for p, n in self.furniture.items() if shows_in_pieces(n)}
+        seen = observe(frames, self.grounder, phrases + list(self.furniture), self.settings, masks, pieces=pieces)
         self.last, self._looked, self._stale = seen, True, False
         self._look_tcp = self.backend.tcp_pose().position.copy()
         self._vacated = []
@@ -149,7 +152,7 @@ class PipelinePerception(Perception):
         self.scene = surface_points([frames[k] for k in used], [masks[k] for k in used], SURFACE_STRIDE)
         self._asked += [p for p in phrases if p not in self._asked]
         self._joints.clear()
-        for phrase, part in furniture.items():
+        for phrase, part in self.furniture.items():
             found = [i for i in seen.instances if i.label == phrase]
             if found:
                 biggest = max(found, key=lambda i: len(i.points))
@@ -209,7 +212,7 @@ class PipelinePerception(Perception):
         around it, and the handle's centre decides where the gripper closes and where the joint's line runs. Only
         a handle and a front of this look: one seen earlier may have moved since."""
         for handle in [n for n in self.parts_seen if ".handle_" in n and self._part_look[n] == self.looks]:
-            part = self._moves(handle)
+            part = self._moved_by[handle]
             if part is None or self._part_look.get(part) != self.looks:
                 continue
             points, normals = self.parts_seen[handle].points, self.parts_seen[handle].normals
@@ -255,7 +258,7 @@ class PipelinePerception(Perception):
 
     def names(self) -> list[str]:
         self._ensure_looked(fresh=False)
-        return list(self.store) + [n for n in self._furniture_phrases().values() if n in self.parts_seen]
+        return list(self.store) + [n for n in self.furniture.values() if n in self.parts_seen]
 
     def objects(self) -> list[str]:
         self._ensure_looked(fresh=False)
@@ -266,7 +269,7 @@ class PipelinePerception(Perception):
             phrase = normalize_phrase(name)
             if phrase in self.not_found:
                 raise ObjectNotFoundError(name, self.names(), self.not_found[phrase])
-            if name in self._furniture_phrases().values():
+            if name in self.furniture.values():
                 raise ObjectNotFoundError(name, self.names(), f"no camera has seen it in {self.looks} looks")
         return super().require(name)
 
@@ -314,17 +317,6 @@ class PipelinePerception(Perception):
             return []
         return [self._estimated(truth) for truth in self.parts.joints(name)]
 
-    def _furniture_phrases(self) -> dict[str, str]:
-        """Phrase -> name of furniture and each of its parts (``cabinet``, ``cabinet.drawer_1``,
-        ``cabinet.handle_1``), as their labels name them; looked for with every look."""
-        movable = set(self.parts.objects())
-        return {normalize_phrase(n): n for n in self.parts.names() if n not in movable}
-
-    def _moves(self, handle: str) -> str | None:
-        """The part a handle moves, as the labels say (which handle is on which drawer)."""
-        joints = self.parts.joints(handle)
-        return joints[0].part if joints else None
-
     def _estimated(self, labelled: ArticulationJoint) -> ArticulationJoint:
         """The joint of ``labelled.part`` from its front and its handle as one look saw them (a drawer pulled
         since an earlier look has moved away from a handle seen then). It does not look again by itself: it is
@@ -354,7 +346,7 @@ class PipelinePerception(Perception):
 
     def _handle(self, part: str) -> str:
         """The handle the labels put on ``part`` (the one seen last); "not found" if none was seen."""
-        handles = [n for n in self._furniture_phrases().values() if ".handle" in n and self._moves(n) == part]
+        handles = [n for n, moved in self._moved_by.items() if moved == part]
         seen = [n for n in handles if n in self.parts_seen]
         if not seen:
             why = f"its handle ({', '.join(handles) or 'none'}) was not seen, and its geometry is measured from it"
@@ -428,6 +420,18 @@ class PipelinePerception(Perception):
         if self._holding_looks or self._look_tcp is None:
             return False
         return float(np.linalg.norm(self.backend.tcp_pose().position - self._look_tcp)) > MOVED
+
+
+def shows_in_pieces(name: str) -> bool:
+    """Whether furniture or a part may be seen as several unconnected pieces: a drawer, a door or a carcass may (an
+    open drawer's front and, apart from it, its inside); a handle is one piece."""
+    return ".handle_" not in name
+
+
+def _labelled_part(parts: Perception, handle: str) -> str | None:
+    """The part a handle moves, as the labels say (which handle is on which drawer)."""
+    joints = parts.joints(handle)
+    return joints[0].part if joints else None
 
 
 def _moved(obj: SeenObject, motion: Transform) -> SeenObject:

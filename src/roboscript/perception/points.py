@@ -9,8 +9,9 @@ import numpy as np
 from roboscript.sim.cameras import CameraFrame
 
 
-def point_map(frame: CameraFrame) -> np.ndarray:
-    """World coordinates of every pixel, (H, W, 3); NaN where the depth is 0 (nothing seen)."""
+def point_map(frame: CameraFrame, hidden: np.ndarray | None = None) -> np.ndarray:
+    """World coordinates of every pixel, (H, W, 3); NaN where the depth is 0 (nothing seen) and where ``hidden``
+    (H, W) marks a pixel (the robot's own: no surface of the scene)."""
     h, w = frame.depth.shape
     k = frame.intrinsics
     u, v = np.meshgrid(np.arange(w, dtype=float), np.arange(h, dtype=float))
@@ -18,6 +19,8 @@ def point_map(frame: CameraFrame) -> np.ndarray:
     camera = np.stack([(u - k[0, 2]) * z / k[0, 0], (v - k[1, 2]) * z / k[1, 1], z], axis=-1)
     world = camera @ frame.extrinsics.rotation.T + frame.extrinsics.position
     world[z <= 0] = np.nan
+    if hidden is not None:
+        world[hidden] = np.nan
     return world
 
 
@@ -35,12 +38,8 @@ def surface_points(
     millimetres high around objects' feet, which a finger reaching down beside a low box would find in its way."""
     clouds = []
     for k, frame in enumerate(frames):
-        world = point_map(frame)[::stride, ::stride]
-        keep = np.isfinite(world).all(axis=-1)
-        mask = None if masks is None else masks[k]
-        if mask is not None:
-            keep &= ~mask[::stride, ::stride]
-        clouds.append(world[keep])
+        world = point_map(frame, None if masks is None else masks[k])[::stride, ::stride]
+        clouds.append(world[np.isfinite(world).all(axis=-1)])
     return np.concatenate(clouds) if clouds else np.zeros((0, 3))
 
 

@@ -105,9 +105,8 @@ def sort_points(
     for k, name in enumerate(names):
         box = parts[name]
         inside = within(rest, box, PART_MARGIN)
-        volume = float(np.prod(box.upper - box.lower))
-        better = inside & (volume < smallest)
-        owner[better], smallest[better] = k, volume
+        better = inside & (box.volume < smallest)
+        owner[better], smallest[better] = k, box.volume
     for k, name in enumerate(names):
         fixed[name] = rest[owner == k]
     fixed[UNKNOWN] = rest[owner == -1]
