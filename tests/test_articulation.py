@@ -15,7 +15,7 @@ from roboscript.perception.points import entity_points
 
 @pytest.fixture(scope="module")
 def cabinet():
-    backend = MujocoBackend("world_5_mug_to_cabinet", robot="panda")
+    backend = MujocoBackend("cluttered_5_mug_to_cabinet", robot="panda")
     frames = [backend.capture(c) for c in backend.camera_names()]
     truth = make_perception("gt", backend)
     yield backend, frames, truth
@@ -79,7 +79,7 @@ def test_a_part_no_view_saw_cannot_have_its_joint_estimated(cabinet):
 
 def test_an_open_drawers_axis_is_still_its_fronts_normal():
     """Open, a drawer shows the cameras above it more bottom than front: the front is the upright plane."""
-    backend = MujocoBackend("world_5_mug_to_cabinet", robot="panda")
+    backend = MujocoBackend("cluttered_5_mug_to_cabinet", robot="panda")
     try:
         truth = make_perception("gt", backend)
         (closed,) = truth.joints("cabinet.drawer_1")

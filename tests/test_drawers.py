@@ -106,7 +106,7 @@ def test_a_joint_that_does_not_slide_level_is_refused():
 def test_the_seen_inside_of_the_simulated_drawer_matches_its_tray():
     """Closed, no room. Then pulled out 22 cm and let go of (as the tools tell perception after a pull): it looks
     again, and the inside from points matches the simulator's tray (less the part in the carcass)."""
-    backend = MujocoBackend("world_5_mug_to_cabinet", robot="panda")
+    backend = MujocoBackend("cluttered_5_mug_to_cabinet", robot="panda")
     try:
         seen = make_perception("gt-2d", backend)
         closed = seen.receptacle("cabinet.drawer_1")

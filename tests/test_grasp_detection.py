@@ -4,7 +4,7 @@ import math
 
 import numpy as np
 
-from roboscript.api.placement import fits, spot_at, spots_in_receptacle
+from roboscript.api.placement import Footprint, fits, gap, spot_at, spots_in_receptacle
 from roboscript.geometry import Box3D, Transform
 from roboscript.perception.base import ObjectPoints, Receptacle
 from roboscript.perception.grasp_detection import GraspPreferences, GripperGeometry, collides, detect_grasps
@@ -76,7 +76,7 @@ def test_the_hand_is_as_wide_as_the_hand_and_the_fingers_sweep_from_open():
 
 def test_placement_spots_avoid_occupants_and_fill_from_the_corner():
     receptacle = Receptacle("tray", Transform.identity(), np.array([-0.1, -0.1, 0.8]), np.array([0.1, 0.1, 0.9]))
-    occupant = Box3D(np.array([-0.1, -0.1, 0.8]), np.array([0.0, 0.0, 0.85]))
+    occupant = Footprint.of_box(Box3D(np.array([-0.1, -0.1, 0.8]), np.array([0.0, 0.0, 0.85])))
     spots = spots_in_receptacle(receptacle, np.array([0.03, 0.03]), 0.0, 0.05, [occupant], np.array([-1.0, -1.0]))
     assert spots
     for spot in spots:
@@ -85,8 +85,20 @@ def test_placement_spots_avoid_occupants_and_fill_from_the_corner():
     assert min(spots[0].center[0], spots[0].center[1]) < -0.05
     assert fits(receptacle, np.array([0.09, 0.02]))
     assert not fits(receptacle, np.array([0.12, 0.02]))
-    full = Box3D(np.array([-0.1, -0.1, 0.8]), np.array([0.1, 0.1, 0.85]))
+    full = Footprint.of_box(Box3D(np.array([-0.1, -0.1, 0.8]), np.array([0.1, 0.1, 0.85])))
     assert spots_in_receptacle(receptacle, np.array([0.03, 0.03]), 0.0, 0.05, [full], np.array([0.0, 0.0])) == []
+
+
+def test_a_turned_occupant_blocks_only_the_strip_it_covers():
+    """A banana lying across a plate at 45 degrees: its world-aligned box would cover nearly all of a 20 cm plate,
+    its turned footprint leaves room beside it in two corners."""
+    plate = Receptacle("plate", Transform.identity(), np.array([-0.1, -0.1, 0.8]), np.array([0.1, 0.1, 0.9]))
+    banana = Footprint(np.zeros(2), math.pi / 4, np.array([0.1, 0.025]))
+    spots = spots_in_receptacle(plate, np.array([0.025, 0.025]), 0.0, 0.05, [banana], np.array([-1.0, 1.0]))
+    assert spots and all(gap(Footprint(s.center[:2], 0.0, np.array([0.025, 0.025])), banana) >= 0 for s in spots)
+    as_a_box = Footprint.of_box(Box3D(np.array([-0.08, -0.08, 0.8]), np.array([0.08, 0.08, 0.85])))
+    assert spots_in_receptacle(plate, np.array([0.025, 0.025]), 0.0, 0.05, [as_a_box], np.array([-1.0, 1.0])) == []
+    assert gap(Footprint(np.array([0.3, 0.0]), 0.0, np.array([0.1, 0.1])), banana) > 0.1
 
 
 def test_spot_at_never_sinks_below_the_support():

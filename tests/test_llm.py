@@ -2,8 +2,6 @@
 
 from __future__ import annotations
 
-import time
-
 import pytest
 
 from chat_server import ScriptedChatServer
@@ -41,12 +39,11 @@ def test_retries_give_up_and_say_why():
 
 
 def test_a_server_that_does_not_answer_times_out():
-    with ScriptedChatServer([{"delay": 3.0, "text": "late"}]) as server:
+    """The reply comes only after 60 s: a client that waited for it would get "late" and fail the match."""
+    with ScriptedChatServer([{"delay": 60.0, "text": "late"}]) as server:
         llm = OpenAICompatibleLLM("m", base_url=server.url, timeout=0.3, max_retries=1)
-        started = time.perf_counter()
         with pytest.raises(LLMError, match=r"did not answer within 0\.3 s"):
             llm.complete(LLMRequest(MESSAGES))
-        assert time.perf_counter() - started < 2.5
     assert len(server.requests) == 2
 
 

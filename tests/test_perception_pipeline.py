@@ -72,7 +72,7 @@ def test_a_broken_depth_image_is_reported_and_skipped():
 
 
 def test_phrases_name_objects_by_name_category_or_colour():
-    backend = MujocoBackend("world_6_mug_to_same_color_plate", robot="panda", settle=0)
+    backend = MujocoBackend("cluttered_6_mug_to_same_color_plate", robot="panda", settle=0)
     mug = backend.ground_truth.world.entity("white_mug")
     backend.close()
     assert normalize_phrase(" White_Mug ") == "white mug"
@@ -80,7 +80,7 @@ def test_phrases_name_objects_by_name_category_or_colour():
 
 
 def test_noise_drops_confuses_and_moves_boxes_as_asked():
-    backend, frames = _look("world_2_pick_and_place")
+    backend, frames = _look("cluttered_2_pick_and_place")
     entities = backend.ground_truth.world.entities
     backend.close()
     phrases = ["apple", "lemon", "plum"]

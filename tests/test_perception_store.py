@@ -6,6 +6,7 @@ from __future__ import annotations
 import json
 import math
 
+import mujoco
 import numpy as np
 import pytest
 
@@ -18,11 +19,12 @@ from roboscript.bench.trial import TrialSpec
 from roboscript.perception.evaluation import box_iou
 from roboscript.perception.modes import make_perception
 from roboscript.perception.pipeline import ObjectNotFoundError, footprint_of
+from roboscript.sim.world_file import parse_world
 
 
 @pytest.fixture(scope="module")
 def table_world():
-    backend = MujocoBackend("world_1_table_sort", robot="panda")
+    backend = MujocoBackend("cluttered_1_table_sort", robot="panda")
     yield backend, make_perception("gt", backend), make_perception("gt-2d", backend)
     backend.close()
 
@@ -126,7 +128,7 @@ def test_runs_are_compared_side_by_side(tmp_path):
 
 
 def test_putting_aside_keeps_clear_of_what_the_cameras_see_but_perception_was_not_asked_about():
-    backend = MujocoBackend("world_1_table_sort", robot="panda", seed=8, randomize=True)
+    backend = MujocoBackend("cluttered_1_table_sort", robot="panda", seed=8, randomize=True)
     try:
         tools = ToolAPI.for_simulation(backend, seed=8, perception="gt-2d")
         ns = tools.namespace()
@@ -144,5 +146,39 @@ def test_putting_aside_keeps_clear_of_what_the_cameras_see_but_perception_was_no
         plate = backend.ground_truth.box("white_plate")
         gap = np.maximum(np.maximum(plate.lower[:2] - center, center - plate.upper[:2]), 0.0)
         assert np.linalg.norm(gap) > apple.size[0] / 2  # the apple's footprint does not reach the plate
+    finally:
+        backend.close()
+
+
+def test_ground_truth_footprints_of_things_lying_on_their_side_are_turned_rectangles():
+    """A banana rolled onto its side is no longer upright: its footprint is the least rectangle round its parts,
+    turned as it lies, not its world-aligned box; a ball's stays its diameter however it has rolled."""
+    from roboscript.perception.ground_truth import GroundTruthPerception
+
+    world = parse_world(
+        {
+            "name": "lying",
+            "objects": [
+                {"name": "banana", "type": "banana", "position": [0.0, 0.0], "yaw": 40},
+                {"name": "apple", "type": "apple", "position": [0.0, -0.3]},
+            ],
+        }
+    )
+    backend = MujocoBackend(world, robot="panda", settle=0.3)
+    try:
+        data, model = backend.sim_world.data, backend.sim_world.model
+        for name, roll in (("banana", 1.2), ("apple", 0.9)):  # turn each about its long axis, as a roll would
+            adr = model.jnt_qposadr[model.body_jntadr[model.body(name).id]]
+            turned = np.zeros(4)
+            mujoco.mju_mulQuat(turned, data.qpos[adr + 3 : adr + 7].copy(), [np.cos(roll / 2), np.sin(roll / 2), 0, 0])
+            data.qpos[adr + 3 : adr + 7] = turned
+        mujoco.mj_forward(model, data)
+        truth = GroundTruthPerception(backend)
+        _, yaw, half = truth.footprint("banana")
+        box = truth.box("banana")
+        assert 2 * half[0] * 2 * half[1] < 0.8 * np.prod(box.size[:2])  # far less than its turned box
+        assert abs(abs(np.degrees(yaw)) - 40) < 15 or abs(abs(np.degrees(yaw)) - 140) < 15
+        _, _, apple = truth.footprint("apple")
+        np.testing.assert_allclose(apple, [0.038, 0.038], atol=0.002)
     finally:
         backend.close()

@@ -38,7 +38,7 @@ def objects_world(*objects):
 
 @pytest.fixture(scope="module", params=ROBOTS)
 def table_world(request):
-    return planner_for("world_1_table_sort", request.param)
+    return planner_for("cluttered_1_table_sort", request.param)
 
 
 def test_fk_of_ik_is_within_1mm_and_1_degree(table_world):
@@ -258,3 +258,57 @@ def test_straight_approach_ends_on_the_targets_branch_along_a_line(robot):
     for q in approach:
         offset = motion.kinematics.fk(q).position - target.position
         assert np.linalg.norm(offset[:2]) < 1e-3, "every waypoint lies on the vertical line"
+
+
+def test_a_contact_may_be_left_or_brushed_but_not_pushed_into():
+    """Fingers round a box they just let go of: the motion may start there and leave, but a configuration that
+    sinks the hand deeper into the box stays a collision; forbidding the pair again ends the allowance."""
+    world = objects_world({"name": "box", "type": "blue_box", "position": [0.0, 0.0]})
+    backend, motion = planner_for(world, "panda")
+    scene = motion.scene
+    center = backend.ground_truth.box("box").center
+    scene.update(backend.sim_world.data.qpos)
+    # Lower the open hand over the box until the scene first reports it (within the padding), then 1 cm more.
+    above = motion.ik(Transform(center + np.array([0.0, 0.0, 0.1]), DOWN))
+    heights = np.arange(0.1, -0.02, -0.002)
+    solve = motion.kinematics.solve  # IK alone: the scene would refuse the configurations that touch
+    configurations = [solve(Transform(center + np.array([0.0, 0.0, h]), DOWN), above).q for h in heights]
+    first = next(k for k, q in enumerate(configurations) if not scene.is_valid(q))
+    touching, deeper, clear = configurations[first], configurations[first + 5], configurations[0]
+    assert any(b == "box" for _, b in scene.collisions(touching))
+    scene.allow_leaving("gripper", "box", touching)
+    assert scene.is_valid(touching) and scene.is_valid(clear)
+    assert not scene.is_valid(deeper) and any(b == "box" for _, b in scene.collisions(deeper))
+    scene.allow("gripper", "box", False)
+    assert not scene.is_valid(touching)
+
+
+def test_a_transfer_lifts_the_held_object_clear_and_carries_it_clear():
+    """A box held as it rests on the table goes straight up until it is 2 cm clear of everything, stays so on the
+    planned part of the path, and comes straight down into the goal beside a wall."""
+    from roboscript.planning.transfer import HELD_CLEARANCE, plan_transfer
+
+    world = objects_world(
+        {"name": "box", "type": "blue_box", "position": [0.1, -0.25]},
+        {"name": "wall", "type": "cereal_box", "position": [0.1, 0.0], "yaw": 90},
+    )
+    backend, motion = planner_for(world, "panda")
+    scene, kinematics = motion.scene, motion.kinematics
+    center = backend.ground_truth.box("box").center
+    start = motion.ik(Transform(center, DOWN))
+    goal = motion.ik(Transform(center + np.array([0.0, 0.5, 0.0]), DOWN), start)
+    state = backend.sim_world.data.qpos.copy()
+    state[backend.sim_world.robot.qpos] = start
+    scene.update(state)
+    scene.attach("box", start)  # resting on the table: the contact is allowed until the box leaves it
+    path = plan_transfer(motion.planner, kinematics, start, goal, "RRTConnect", 5.0)
+    np.testing.assert_allclose(path.waypoints[0], start)
+    np.testing.assert_allclose(path.waypoints[-1], goal, atol=1e-6)
+    heights = [kinematics.fk(q).position[2] for q in path.waypoints]
+    assert max(heights) > center[2] + HELD_CLEARANCE
+    with scene.held_clearance(HELD_CLEARANCE):
+        clear = [scene.is_valid(q) for q in densify(path.waypoints, motion.planner.lever, 0.005)]
+    # Too close only along the straight lines at either end: where clear, the path stays clear until it descends.
+    first, last = clear.index(True), len(clear) - 1 - clear[::-1].index(True)
+    assert all(clear[first : last + 1])
+    motion.planner.validate(path.waypoints)  # and the whole of it is free with the ordinary padding

@@ -17,8 +17,8 @@ from roboscript.sim.world_file import parse_world
 
 @pytest.fixture(scope="module")
 def tools():
-    """world_2: apple, footed bowl, blue bowl, plum, baseball, lemon (tests here do not move the arm)."""
-    backend = MujocoBackend("world_2_pick_and_place", robot="panda", settle=0.5)
+    """cluttered_2: apple, footed bowl, blue bowl, plum, baseball, lemon (tests here do not move the arm)."""
+    backend = MujocoBackend("cluttered_2_pick_and_place", robot="panda", settle=0.5)
     yield ToolAPI.for_simulation(backend)
     backend.close()
 
@@ -203,7 +203,7 @@ def test_full_receptacle_and_closed_drawer(cabinet_tools):
 def test_a_motion_may_leave_a_contact_it_starts_in_but_not_make_new_ones():
     """An arm can end a motion inside the planning padding of something (tracking is not exact); the next motion
     must still be able to start, while everything it did not start in keeps blocking it."""
-    backend = MujocoBackend("world_2_pick_and_place", robot="panda", settle=0.5)
+    backend = MujocoBackend("cluttered_2_pick_and_place", robot="panda", settle=0.5)
     low = Pose()
     low.position.x, low.position.z = 0.3, 0.845
     low.orientation.x, low.orientation.w = 1.0, 0.0

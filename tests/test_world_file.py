@@ -12,17 +12,55 @@ def write(tmp_path, text, name="bad.yaml"):
     return path
 
 
-def test_packaged_worlds_are_the_six_benchmark_worlds():
-    assert world_names() == [
-        "world_1_table_sort",
-        "world_2_pick_and_place",
-        "world_3_mug_to_empty_plate",
-        "world_4_clear_table_to_basket",
-        "world_5_mug_to_cabinet",
-        "world_6_mug_to_same_color_plate",
-    ]
+PAPER_WORLDS = [
+    "world_1_table_sort",
+    "world_2_pick_and_place",
+    "world_3_mug_to_empty_plate",
+    "world_4_clear_table_to_basket",
+    "world_5_mug_to_cabinet",
+    "world_6_mug_to_same_color_plate",
+]
+
+
+def test_packaged_worlds_are_the_papers_six_and_their_cluttered_variants():
+    assert world_names() == sorted([w.replace("world_", "cluttered_") for w in PAPER_WORLDS] + PAPER_WORLDS)
     for name in world_names():
-        assert load_world(name).objects
+        world = load_world(name)
+        assert world.objects and world.query_names()[0] == "table"
+    for name in PAPER_WORLDS:  # every paper world has the cabinet the original's queries list
+        assert [c.name for c in load_world(name).cabinets] == ["cabinet"]
+
+
+def test_the_paper_worlds_hold_the_originals_objects_by_its_names():
+    assert load_world("world_1_table_sort").object_names() == [
+        "apple",
+        "banana",
+        "white_ceramic_plate",
+        "white_and_pink_box",
+        "brown_box",
+        "brown_medication_bottle",
+        "bleach_cleanser",
+        "red_plastic_bowl",
+        "mustard_bottle",
+    ]
+    assert load_world("world_2_pick_and_place").object_names() == ["apple", "footed_bowl"]
+    world_3 = load_world("world_3_mug_to_empty_plate")
+    lemon = next(o for o in world_3.objects if o.name == "lemon")
+    assert lemon.support == "turquoise_salad_plate" and lemon.support_kind == "on"
+    assert load_world("world_6_mug_to_same_color_plate").query_names() == [
+        "table",
+        "cabinet",
+        "green_plant_plate",
+        "white_ceramic_plate",
+        "red_plant_saucer",
+        "white_porcelain_mug",
+        "cabinet.drawer_0",
+        "cabinet.drawer_1",
+        "cabinet.drawer_2",
+        "cabinet.handle_0",
+        "cabinet.handle_1",
+        "cabinet.handle_2",
+    ]
 
 
 def test_unknown_object_type_names_file_entry_and_suggestion(tmp_path):

@@ -104,10 +104,23 @@ def cmd_render(args: argparse.Namespace) -> int:
 
 
 def cmd_tasks(args: argparse.Namespace) -> int:
-    from roboscript.bench.tasks import TASKS
+    from roboscript.bench.tasks import load_suite, suite_names
 
-    for task in TASKS.values():
-        print(f"{task.id:12s} {task.world:32s} {task.instruction}")
+    tasks = load_suite(args.suite)
+    if not args.json:
+        print(f"suite {args.suite} (suites: {', '.join(suite_names())})\n")
+    rows = []
+    for task in tasks.values():
+        checks = [c.describe() for c in task.checks]
+        world = Path(task.world).stem
+        rows.append({"id": task.id, "label": task.label, "world": world, "query": task.query, "checks": checks})
+        if not args.json:
+            label = f" (original label {task.label})" if task.label and task.label != task.id else ""
+            print(f"{task.id}{label}  world {world}")
+            print(f"    {task.query}")
+            print(f"    checks: {'; '.join(checks)}")
+    if args.json:
+        print(json.dumps({"suite": args.suite, "tasks": rows}))
     return 0
 
 
@@ -135,7 +148,7 @@ def cmd_exec(args: argparse.Namespace) -> int:
     from roboscript.bench.runner import run_isolated
     from roboscript.bench.tasks import get_task
 
-    get_task(args.task)
+    get_task(args.task, args.suite)
     path = Path(args.program)
     if not path.is_file():
         raise ValueError(f"no program file {str(path)!r}")
@@ -149,6 +162,7 @@ def cmd_exec(args: argparse.Namespace) -> int:
         args.timeout,
         args.video,
         perception=args.perception,
+        suite=args.suite,
     )
     records = run_isolated(specs, args.jobs, None if args.json else progress_printer(len(specs)))
     result = task_result(args.task, args.robot, records)
@@ -167,7 +181,7 @@ def cmd_bench(args: argparse.Namespace) -> int:
 
     if args.repair and not args.policy.startswith("llm:"):
         raise ValueError("--repair needs an LLM policy (--policy llm:SPEC)")
-    out = args.out or default_out(run_label(args.policy, args.repair), args.robot, args.perception)
+    out = args.out or default_out(run_label(args.policy, args.repair), args.robot, args.perception, args.suite)
     result = run_benchmark(
         args.policy,
         tasks,
@@ -180,6 +194,7 @@ def cmd_bench(args: argparse.Namespace) -> int:
         progress=not args.json,
         repair_rounds=args.repair,
         perception=args.perception,
+        suite=args.suite,
     )
     if args.json:
         print(json.dumps({"tasks": result["tasks"], "wall_time_s": result["wall_time_s"]}))
@@ -201,7 +216,7 @@ def cmd_run(args: argparse.Namespace) -> int:
         load_world(args.world)  # a bad world name or file fails here, before any LLM is asked
         label = free_task(args.world, args.instruction).id
     else:
-        label = get_task(args.task).id
+        label = get_task(args.task, args.suite).id
     llm = make_llm(args.llm)  # fails here, clearly, when no LLM is configured
     specs = trial_specs(
         label,
@@ -216,6 +231,7 @@ def cmd_run(args: argparse.Namespace) -> int:
         repair_rounds=args.repair,
         world=args.world,
         perception=args.perception,
+        suite=args.suite,
     )
     records = run_isolated(specs, args.jobs)
     result = task_result(label, args.robot, records)
@@ -240,8 +256,8 @@ def cmd_demo(args: argparse.Namespace) -> int:
     from roboscript.demo import DemoPlan, run_demo
     from roboscript.llm.spec import configured_spec
 
-    task = get_task(args.task)
-    plan = DemoPlan(task.id, args.robot, args.llm or configured_spec(), Path(args.out))
+    task = get_task(args.task, args.suite)
+    plan = DemoPlan(task.id, args.robot, args.llm or configured_spec(), Path(args.out), args.suite)
     print(f'RoboScript demo: {task.id} on the {args.robot}: "{task.instruction}"')
     print(f"program: {plan.source}")
     if plan.llm is not None:
@@ -287,6 +303,31 @@ def _add_run_options(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("--jobs", type=int, default=default_jobs(), help="trials run at once (one process each)")
     parser.add_argument("--json", action="store_true", help="print one JSON object")
     _add_perception_option(parser)
+    _add_suite_option(parser)
+
+
+def _add_suite_option(parser: argparse.ArgumentParser) -> None:
+    from roboscript.bench.tasks import DEFAULT_SUITE, suite_names
+
+    parser.add_argument(
+        "--suite",
+        type=_suite,
+        default=DEFAULT_SUITE,
+        help=f"the tasks' suite: {', '.join(suite_names())} (default {DEFAULT_SUITE}), or a suite file's path",
+    )
+
+
+def _suite(text: str) -> str:
+    """``--suite``: a packaged suite's name, or a suite file's path (made absolute for the trial processes)."""
+    from roboscript.bench.tasks import load_suite, suite_path
+
+    try:
+        path = suite_path(text)
+        load_suite(text)
+    except (KeyError, ValueError) as exc:
+        message = exc.args[0] if isinstance(exc, KeyError) and exc.args else str(exc)
+        raise argparse.ArgumentTypeError(message) from None
+    return str(path) if text.endswith((".yaml", ".yml", ".json")) or Path(text).is_file() else text
 
 
 def _add_perception_option(parser: argparse.ArgumentParser) -> None:
@@ -323,7 +364,10 @@ def build_parser() -> argparse.ArgumentParser:
     render.add_argument("--randomize", action="store_true", help="jitter object poses (deterministic per seed)")
     render.add_argument("--settle", type=float, default=1.0, help="simulated seconds to settle first")
     render.set_defaults(func=cmd_render)
-    sub.add_parser("tasks", help="list the benchmark's tasks and instructions").set_defaults(func=cmd_tasks)
+    tasks = sub.add_parser("tasks", help="list a suite's tasks: worlds, queries and checks")
+    tasks.add_argument("--json", action="store_true", help="print one JSON object")
+    _add_suite_option(tasks)
+    tasks.set_defaults(func=cmd_tasks)
     run = sub.add_parser("exec", help="run a program on a task's world and evaluate it")
     run.add_argument("program", help="a Python file written against the tool API")
     run.add_argument("--task", required=True, help="a task id (see `roboscript tasks`)")
@@ -370,10 +414,14 @@ def build_parser() -> argparse.ArgumentParser:
     demo.add_argument("--timeout", type=float, default=300.0, help="time limit of the program, wall seconds")
     demo.add_argument("--out", default="out/demo", help="where the video and the report go")
     _add_perception_option(demo)
+    _add_suite_option(demo)
     demo.set_defaults(func=cmd_demo)
     bench = sub.add_parser("bench", help="run the benchmark (resumes an interrupted run in --out)")
     bench.add_argument(
-        "--policy", default="reference", help="where programs come from: reference, or llm:SPEC (see `run --llm`)"
+        "--policy",
+        default="reference",
+        help="where programs come from: reference; llm:SPEC (see `run --llm`); or programs:PATH, a folder of "
+        "<task_id>.py files or files in the original's generated-code format (JSON: query, code_str, src_fs)",
     )
     bench.add_argument(
         "--repair",

@@ -11,7 +11,7 @@ from dataclasses import dataclass
 from pathlib import Path
 
 from roboscript.bench.runner import run_isolated
-from roboscript.bench.tasks import get_task
+from roboscript.bench.tasks import DEFAULT_SUITE, get_task
 from roboscript.bench.trial import TrialRecord, TrialSpec
 from roboscript.llm.openai_compatible import MODEL_ENV
 
@@ -26,6 +26,7 @@ class DemoPlan:
     robot: str
     llm: str | None
     out: Path
+    suite: str = DEFAULT_SUITE
 
     @property
     def source(self) -> str:
@@ -42,7 +43,7 @@ def run_demo(
 ) -> TrialRecord:
     """Runs the task once in a child process; writes ``<task>.mp4``, ``report.md`` and ``report.json`` in
     ``plan.out``."""
-    task = get_task(plan.task)
+    task = get_task(plan.task, plan.suite)
     plan.out.mkdir(parents=True, exist_ok=True)
     video = plan.out / f"{plan.task}.mp4"
     video.unlink(missing_ok=True)  # a video from an earlier demo must not pass for this one's
@@ -58,13 +59,16 @@ def run_demo(
         llm=plan.llm,
         repair_rounds=repair_rounds if plan.llm is not None else 0,
         perception=perception,
+        suite=plan.suite,
     )
     (record,) = run_isolated([spec])
     if plan.llm is None:
         record.program = program
     report = {
         "task": plan.task,
+        "suite": plan.suite,
         "instruction": task.instruction,
+        "query": task.query,
         "robot": plan.robot,
         "seed": seed,
         "perception": perception,

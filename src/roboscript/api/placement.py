@@ -2,7 +2,9 @@
 
 Candidates are object positions (the centre of the object's box) with a yaw turn; the tool layer turns them into
 gripper poses and keeps the first one the arm can reach. A spot is free when the object's footprint, with a margin,
-stays inside the receptacle's interior and clear of every other object's box.
+stays inside the receptacle's interior and clear of every other object's footprint. Footprints are turned
+rectangles: a banana lying at 30 degrees covers a strip of a plate, while its world-aligned box would cover most
+of it.
 """
 
 from __future__ import annotations
@@ -28,29 +30,46 @@ class ReceptacleFullError(PlacementError):
 
 
 @dataclass(frozen=True)
+class Footprint:
+    """A rectangle on the table: centre (x, y), turned by ``yaw`` radians, with half-extents along its own axes."""
+
+    center: np.ndarray
+    yaw: float
+    half: np.ndarray
+
+    @staticmethod
+    def of_box(box: Box3D) -> Footprint:
+        return Footprint(box.center[:2], 0.0, box.size[:2] / 2)
+
+    def axes(self) -> np.ndarray:
+        c, s = math.cos(self.yaw), math.sin(self.yaw)
+        return np.array([[c, s], [-s, c]])
+
+    def corners(self) -> np.ndarray:
+        signs = np.array([[1, 1], [1, -1], [-1, 1], [-1, -1]])
+        return np.asarray(self.center) + (signs * self.half) @ self.axes()
+
+
+def gap(a: Footprint, b: Footprint) -> float:
+    """How far apart two footprints are along the axis that separates them best (negative: they overlap)."""
+    best = -math.inf
+    ca, cb = a.corners(), b.corners()
+    for axis in np.vstack([a.axes(), b.axes()]):
+        pa, pb = ca @ axis, cb @ axis
+        best = max(best, float(pb.min() - pa.max()), float(pa.min() - pb.max()))
+    return best
+
+
+@dataclass(frozen=True)
 class PlacementSpot:
     """The object's box centre after placement, and the yaw turn (radians) about world z from its present pose;
-    ``score`` orders spots (higher first)."""
+    ``score`` orders spots (higher first). ``turns``: further turns about z the object may be given there (a spot
+    at a position does not care how the object faces; one squared to a receptacle may only be turned round)."""
 
     center: np.ndarray
     yaw: float
     score: float
-
-
-def _rotated_half(half_xy: np.ndarray, yaw: float) -> np.ndarray:
-    c, s = abs(math.cos(yaw)), abs(math.sin(yaw))
-    return np.array([c * half_xy[0] + s * half_xy[1], s * half_xy[0] + c * half_xy[1]])
-
-
-def _clearance(center_xy: np.ndarray, half_xy: np.ndarray, obstacles: list[Box3D]) -> float:
-    """Smallest gap between the footprint and any obstacle box (negative: overlap)."""
-    best = 1.0
-    for box in obstacles:
-        gap = np.maximum(np.abs(center_xy - box.center[:2]) - half_xy - box.size[:2] / 2, 0.0)
-        overlap = np.all(np.abs(center_xy - box.center[:2]) < half_xy + box.size[:2] / 2)
-        distance = -0.001 if overlap else float(np.linalg.norm(gap))
-        best = min(best, distance)
-    return best
+    turns: tuple[float, ...] = (0.0, math.pi)
 
 
 def spots_in_receptacle(
@@ -58,7 +77,7 @@ def spots_in_receptacle(
     half_xy: np.ndarray,
     object_yaw: float,
     height: float,
-    obstacles: list[Box3D],
+    obstacles: list[Footprint],
     corner_xy: np.ndarray,
     step: float = 0.015,
     near_xy: np.ndarray | None = None,
@@ -88,11 +107,12 @@ def spots_in_receptacle(
             continue
         xs = np.arange(lo[0], hi[0] + 1e-9, step) if hi[0] - lo[0] > step else np.array([(lo[0] + hi[0]) / 2])
         ys = np.arange(lo[1], hi[1] + 1e-9, step) if hi[1] - lo[1] > step else np.array([(lo[1] + hi[1]) / 2])
-        world_half = _rotated_half(half - wall_margin, frame_yaw)
+        own_half = (half_xy if quarter % 2 == 0 else half_xy[::-1]) + MARGIN
         for x in xs:
             for y in ys:
                 world = receptacle.frame.apply(np.array([[x, y, 0.0]]))[0]
-                if _clearance(world[:2], world_half + MARGIN, obstacles) < 0:
+                here = Footprint(world[:2], frame_yaw, own_half)
+                if any(gap(here, o) < 0 for o in obstacles):
                     continue
                 center = np.array([world[0], world[1], bottom + height / 2 + DROP])
                 # Nearest the corner first; among equals, the smaller turn.
@@ -116,4 +136,4 @@ def spot_at(position: np.ndarray, object_size: np.ndarray, support_top: float) -
     """The object centred at ``position``; never lower than resting on the support beneath it."""
     rest = support_top + object_size[2] / 2 + DROP
     center = np.array([position[0], position[1], max(float(position[2]), rest)])
-    return PlacementSpot(center, 0.0, 0.0)
+    return PlacementSpot(center, 0.0, 0.0, (0.0, math.pi / 2, -math.pi / 2, math.pi))

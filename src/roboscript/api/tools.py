@@ -13,6 +13,7 @@ import numpy as np
 
 from roboscript.api.placement import (
     MARGIN,
+    Footprint,
     PlacementError,
     PlacementSpot,
     ReceptacleFullError,
@@ -24,7 +25,7 @@ from roboscript.api.pose import Pose, _real
 from roboscript.api.signature import tool
 from roboscript.backends.base import Backend
 from roboscript.geometry import Box3D, Transform, quat_from_yaw, quat_to_matrix
-from roboscript.perception.base import Perception, Receptacle, UnknownObjectError
+from roboscript.perception.base import TABLE, Perception, Receptacle, UnknownObjectError
 from roboscript.perception.grasp_detection import GraspPreferences, GripperGeometry, detect_grasps
 from roboscript.perception.grasp_heuristics import GraspError, central_lift_grasps, horizontal_grasps
 from roboscript.planning.cartesian import arc_poses, cartesian_path
@@ -35,10 +36,9 @@ PRE_GRASP_DISTANCE = 0.1
 PULL_CHECK = 0.25  # metres a drawer handle grasp must be able to pull
 DRAWER_WALL_MARGIN = 0.025
 PLACE_IK_BUDGET = 96  # IK screens per parse_place_pose call (each costs a few milliseconds to ~0.1 s)
-TABLE = "table"
-# Where things may be put down on the table: in front of the robot, clear of its base.
-TABLE_REGION = (np.array([-0.3, -0.45]), np.array([0.28, 0.45]))
-TABLE_TOP = 0.82
+PLACE_RETREAT = 0.08  # metres a place pose should leave the hand room to retreat straight up
+# Where things may be put down on the table, from the robot's base: in front of it, clear of it, within reach.
+TABLE_REACH = (np.array([0.15, -0.45]), np.array([0.73, 0.45]))
 JOINT_TYPES = ("any", "revolute", "prismatic")
 
 
@@ -115,7 +115,7 @@ class ToolAPI:
 
     @tool
     def detect_objects(self, object_list: Sequence[str] | None = None) -> None:
-        """Runs perception for these categories (all if None); a no-op in ground-truth mode."""
+        """Runs perception for these categories (all if None): looks with the cameras and updates what is known."""
         if object_list is not None:
             if isinstance(object_list, str) or not all(isinstance(n, str) for n in object_list):
                 raise TypeError(f"object_list must be a list of names, e.g. ['apple', 'bowl'], got {object_list!r}")
@@ -279,8 +279,11 @@ class ToolAPI:
         # The fingers may touch the object only on the final straight approach, not on the way to its start.
         q = self.motion.sync()
         with _touch(self.motion, self._new_touches(target.position)):
-            goal, approach = self.motion.straight_approach(target, PRE_GRASP_DISTANCE, q)
-        self.motion.move_to_joints(approach[0] if approach is not None else self.motion.ik(pre, goal))
+            options = self.motion.straight_approaches(target, PRE_GRASP_DISTANCE, q)
+        # Each IK branch with a clear approach line is a goal: where the planner finds none to one branch's
+        # pre-grasp (it may be walled in by the table on a 6-joint arm), it tries the next.
+        starts = [approach[0] if approach is not None else self.motion.ik(pre, goal) for goal, approach in options]
+        goal, approach = options[self.motion.move_to_any(starts)]
         self._allow_touch_near(target.position)
         if approach is not None:
             approach[0] = self.motion.sync()
@@ -310,45 +313,53 @@ class ToolAPI:
         tcp = self.backend.tcp_pose()
         box = self.perception.box(name)
         size = box.size
-        others = [self.perception.box(o) for o in self.perception.objects() if o not in (name, receptacle_name)]
+        others = [o for o in self.perception.objects() if o not in (name, receptacle_name)]
         if position is not None:
             target = _vector(position, "position")
-            support = max([TABLE_TOP] + [b.upper[2] for b in others if _overlaps_xy(b, target[:2], size[:2] / 2)])
+            table_top = float(self.perception.box(TABLE).upper[2])
+            below = [self.perception.box(o) for o in others]
+            support = max([table_top] + [b.upper[2] for b in below if _overlaps_xy(b, target[:2], size[:2] / 2)])
             spots = [spot_at(target, size, support)]
             where = f"at {np.round(target, 3).tolist()}"
         else:
             receptacle = self._receptacle(receptacle_name, name)
             _, yaw, half = self.perception.footprint(name)
             if receptacle_name == TABLE:  # aside: clear of objects and furniture, near but not where it was
-                furniture = [
-                    self.perception.box(n) for n in self.perception.names() if _is_furniture(n, self.perception)
-                ]
+                obstacles = [self._footprint(o) for o in others]
+                obstacles += [Footprint.of_box(self.perception.box(n)) for n in self.perception.furniture()]
                 spots = spots_in_receptacle(
-                    receptacle, half, yaw, size[2], others + furniture, self.base_xy, near_xy=box.center[:2]
+                    receptacle, half, yaw, size[2], obstacles, self.base_xy, near_xy=box.center[:2]
                 )
                 # Also clear of whatever the cameras see there, known to perception or not.
-                spots = _clear_of(spots, self.perception.occupied([name]), float(np.linalg.norm(half)) + MARGIN)
+                radius = float(np.linalg.norm(half)) + MARGIN
+                spots = _clear_of(spots, self.perception.occupied([name]), radius, receptacle.lower[2])
                 spots = [s for s in spots if np.linalg.norm(s.center[:2] - box.center[:2]) > 0.15]
             else:
-                inside = [b for b in others if _within(b, receptacle)]
+                held = [o for o in others if _within(self.perception.box(o), receptacle)]
                 # A drawer's front and walls stand high around a held object that may swing a little.
                 wall_margin = DRAWER_WALL_MARGIN if ".drawer_" in receptacle.name else MARGIN
                 spots = spots_in_receptacle(
-                    receptacle, half, yaw, size[2], inside, self._fill_corner(receptacle), wall_margin=wall_margin
+                    receptacle,
+                    half,
+                    yaw,
+                    size[2],
+                    [self._footprint(o) for o in held],
+                    self._fill_corner(receptacle),
+                    wall_margin=wall_margin,
                 )
             if not spots:
-                inside = [
-                    o
-                    for o in self.perception.objects()
-                    if o not in (name, receptacle_name) and _within(self.perception.box(o), receptacle)
-                ]
+                inside = [o for o in others if _within(self.perception.box(o), receptacle)]
                 raise ReceptacleFullError(
                     f"{receptacle_name!r} has no free spot for {name!r} "
                     f"({size[0] * 100:.0f} x {size[1] * 100:.0f} cm); "
                     f"it holds {', '.join(inside) or 'nothing'}"
                 )
             where = f"in {receptacle_name!r}"
-        return Pose.from_transform(self._reachable_place(name, tcp, box, spots, where))
+        # Spots are where the middle of the object's footprint goes (for a curved banana lying turned, not the
+        # middle of its world-aligned box): the hand turns about that.
+        footprint_center = self.perception.footprint(name)[0]
+        pivot = np.array([footprint_center[0], footprint_center[1], box.center[2]])
+        return Pose.from_transform(self._reachable_place(name, tcp, pivot, spots, where))
 
     @tool
     def attach_object(self, object_name: str) -> None:
@@ -375,7 +386,7 @@ class ToolAPI:
         self.perception.released(name, self.backend.tcp_pose())
         if name in self.perception.objects():
             self.motion.detach(name)
-            self.motion.scene.allow("gripper", name)
+            self.motion.scene.allow_leaving("gripper", name, self.motion.sync())
         self.motion.world_changed()
         self._touch_allowed.add(name)
 
@@ -413,8 +424,7 @@ class ToolAPI:
 
     def _receptacle(self, receptacle_name: str, held: str) -> Receptacle:
         if receptacle_name == TABLE:
-            lower, upper = TABLE_REGION
-            return Receptacle(TABLE, Transform.identity(), np.array([*lower, TABLE_TOP]), np.array([*upper, 1.2]))
+            return self._table_region()
         name = self._name(receptacle_name)
         if name == held:
             raise ValueError(f"cannot place {held!r} into itself")
@@ -434,6 +444,21 @@ class ToolAPI:
                 f"whose free interior is {inner[0] * 100:.0f} x {inner[1] * 100:.0f} cm"
             )
         return receptacle
+
+    def _footprint(self, name: str) -> Footprint:
+        center, yaw, half = self.perception.footprint(name)
+        return Footprint(np.asarray(center, dtype=float), float(yaw), np.asarray(half, dtype=float))
+
+    def _table_region(self) -> Receptacle:
+        """Where things may be put aside on the table: its top as perception knows it, within the robot's reach."""
+        table = self.perception.box(TABLE)
+        reach_lower, reach_upper = self.base_xy + TABLE_REACH[0], self.base_xy + TABLE_REACH[1]
+        lower = np.maximum(table.lower[:2], reach_lower)
+        upper = np.minimum(table.upper[:2], reach_upper)
+        top = float(table.upper[2])
+        if np.any(upper <= lower):
+            raise PlacementError(f"no part of the table {np.round(table.as_array(), 3).tolist()} is within reach")
+        return Receptacle(TABLE, Transform.identity(), np.array([*lower, top]), np.array([*upper, top + 0.4]))
 
     def _first_reachable(self, name: str, candidates: list[Transform], kind: str) -> Transform:
         """The first candidate whose grasp and pre-grasp poses have collision-free IK (the gripper may touch the
@@ -501,39 +526,59 @@ class ToolAPI:
         return fronts[int(np.argmin(np.linalg.norm(fronts - self.base_xy, axis=1)))]
 
     def _reachable_place(
-        self, name: str, tcp: Transform, box: Box3D, spots: list[PlacementSpot], where: str
+        self, name: str, tcp: Transform, pivot: np.ndarray, spots: list[PlacementSpot], where: str
     ) -> Transform:
-        """The first spot (in order, skipping near-repeats of spots that failed) with a collision-free IK; each is
-        tried with the gripper turned half a turn, and released higher up so the hand clears a deep container's
-        walls."""
+        """The first spot (in order, skipping near-repeats of spots that failed) with a collision-free IK from which
+        the hand can also retreat straight up (:data:`PLACE_RETREAT`), as a place's retreat would: a hand put
+        down with a link against the cabinet has no way out but through what it let go. Each spot is tried with
+        the object turned as the spot allows (round, or any quarter turn at a position), and released higher up
+        so the hand clears a deep container's walls; of the turns and IK branches that work at a height, the one
+        nearest the arm's present configuration is taken (a hand kept facing one way can make the arm swing
+        round behind itself). Where no spot allows the retreat, the first reachable one is taken. The
+        configuration chosen becomes the motion's goal for that pose (:meth:`MotionPlanner.prefer_goal`)."""
         q = self.motion.sync()
         tried: list[PlacementSpot] = []
         first_error = ""
+        fallback: tuple[Transform, np.ndarray] | None = None
         budget = PLACE_IK_BUDGET
         for spot in spots:
             if any(np.linalg.norm(spot.center - t.center) < 0.05 and abs(spot.yaw - t.yaw) < 0.1 for t in tried):
                 continue
             tried.append(spot)
             for lift in (0.0, 0.02, 0.05, 0.1):
-                for dyaw in (0.0, math.pi):
-                    rotation = quat_to_matrix(quat_from_yaw(spot.yaw + dyaw))
+                leaving: list[tuple[Transform, np.ndarray]] = []
+                for turn in spot.turns:
+                    rotation = quat_to_matrix(quat_from_yaw(spot.yaw + turn))
                     # Turning the held object about world z around its centre turns the gripper with it.
-                    position = spot.center + [0.0, 0.0, lift] + rotation @ (tcp.position - box.center)
+                    position = spot.center + [0.0, 0.0, lift] + rotation @ (tcp.position - pivot)
                     pose = Transform.from_rotation(position, rotation @ tcp.rotation)
                     budget -= 1
                     try:
-                        self.motion.ik(pose, q, attempts=8, max_attempts=24)
-                        return pose
+                        goals = self.motion.ik_choices(pose, q, attempts=8, max_attempts=24)
                     except IKError as exc:
                         first_error = first_error or str(exc)
-                    if budget <= 0:
-                        raise PlacementError(
-                            f"no reachable, collision-free pose puts {name!r} {where} ({len(tried)} spots tried): "
-                            f"{first_error}"
-                        )
+                        continue
+                    leaving += [(pose, g) for g in goals if self._can_retreat(pose, g)]
+                    fallback = fallback or (pose, goals[0])
+                if leaving:
+                    pose, goal = min(leaving, key=lambda c: float(np.sum((c[1] - q) ** 2)))
+                    self.motion.prefer_goal(pose, goal)
+                    return pose
+                if budget <= 0:
+                    break
+            if budget <= 0:
+                break
+        if fallback is not None:
+            self.motion.prefer_goal(*fallback)
+            return fallback[0]
         raise PlacementError(
             f"no reachable, collision-free pose puts {name!r} {where} ({len(tried)} spots tried): {first_error}"
         )
+
+    def _can_retreat(self, pose: Transform, q: np.ndarray) -> bool:
+        """Whether the arm at ``q`` (the TCP at ``pose``) can move straight up by :data:`PLACE_RETREAT`."""
+        up = Transform(pose.position + np.array([0.0, 0.0, PLACE_RETREAT]), pose.quaternion)
+        return cartesian_path(self.motion.kinematics, self.motion.scene, q, [up]).fraction >= 1.0
 
     def _allow_touch_near(self, point: np.ndarray) -> None:
         """Lets the fingers touch what lies at the goal (the object to be grasped); withdrawn once clear of it.
@@ -550,9 +595,10 @@ class ToolAPI:
                 self._touch_allowed.add(name)
 
     def _near(self, point: np.ndarray, distance: float = 0.02) -> list[str]:
-        """Names whose box is within ``distance`` of ``point``."""
+        """Objects and furniture whose box is within ``distance`` of ``point`` (never the table, which everything
+        low is near)."""
         out = []
-        for name in self.perception.names():
+        for name in [*self.perception.objects(), *self.perception.furniture()]:
             box = self.perception.box(name)
             gap = np.maximum(np.maximum(box.lower - point, point - box.upper), 0.0)
             if float(np.linalg.norm(gap)) < distance:
@@ -567,21 +613,23 @@ class ToolAPI:
         return sorted({part for n in names for part in self._grasp_family(n)})
 
     def _allow_start_contacts(self) -> None:
-        """Lets the gripper keep touching what it touches now (an object that settled against the fingers after
-        being let go) until it has moved clear: the motion that leaves a contact must be allowed to start in it."""
+        """Lets the gripper leave what it touches now (an object that settled against the fingers after being let
+        go) until it has moved clear: the motion that leaves a contact must be allowed to start in it, though not
+        to push deeper into it (a planned motion that swept the hand through what was just put down would knock
+        it over)."""
         scene = self.motion.scene
         q = self.motion.sync()
         names = set(self.perception.names())
         for pair in scene.collisions(q):
             for name in pair:
-                if name in names and name not in self._touch_allowed and scene.touching("gripper", name, q):
+                if name in names and scene.touching("gripper", name, q):
                     for part in self._grasp_family(name):
-                        scene.allow("gripper", part)
+                        scene.allow_leaving("gripper", part, q)
                     self._touch_allowed.add(name)
         # An arm link can end a motion a few millimetres nearer furniture than planned (tracking), inside the
         # scene's padding; without this the next motion could not start at all.
         for pair in scene.collisions(q):
-            scene.allow(*pair)
+            scene.allow_leaving(*pair, q)
             self._link_contacts.add(pair)
 
     def _after_motion(self) -> None:
@@ -619,17 +667,13 @@ class _touch:
             self.motion.scene.allow("gripper", name, False)
 
 
-def _clear_of(spots: list, points: np.ndarray, radius: float) -> list:
+def _clear_of(spots: list, points: np.ndarray, radius: float, table_top: float) -> list:
     """The spots with no observed point above the table within ``radius`` of their centre (on the table's level:
     the table itself and what hangs high above it do not count)."""
-    band = points[(points[:, 2] > TABLE_TOP + 0.005) & (points[:, 2] < TABLE_TOP + 0.5)][:, :2]
+    band = points[(points[:, 2] > table_top + 0.005) & (points[:, 2] < table_top + 0.5)][:, :2]
     if len(band) == 0:
         return spots
     return [s for s in spots if float(np.min(np.linalg.norm(band - s.center[:2], axis=1))) > radius]
-
-
-def _is_furniture(name: str, perception: Perception) -> bool:
-    return "." not in name and name not in perception.objects()
 
 
 def _overlaps_xy(box: Box3D, center: np.ndarray, half: np.ndarray) -> bool:

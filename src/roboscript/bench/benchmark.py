@@ -11,27 +11,38 @@ from pathlib import Path
 from roboscript.bench.metrics import task_result
 from roboscript.bench.results import RunDirectory, provenance
 from roboscript.bench.runner import run_isolated
-from roboscript.bench.tasks import TASKS, get_task
+from roboscript.bench.stored_programs import PREFIX as PROGRAMS_PREFIX
+from roboscript.bench.stored_programs import StoredProgram, load_program_store
+from roboscript.bench.tasks import DEFAULT_SUITE, get_task, load_suite
 from roboscript.bench.trial import TrialRecord, TrialSpec
 
-POLICIES = ("reference", "llm:SPEC")
+POLICIES = ("reference", "llm:SPEC", "programs:PATH")
 
 
 def policy_llm(policy: str) -> str | None:
-    """The LLM spec of an ``llm:SPEC`` policy, None for the reference programs."""
-    if policy == "reference":
+    """The LLM spec of an ``llm:SPEC`` policy, None for stored programs (the reference ones or others)."""
+    if policy == "reference" or (policy.startswith(PROGRAMS_PREFIX) and len(policy) > len(PROGRAMS_PREFIX)):
         return None
     if policy.startswith("llm:") and len(policy) > 4:
         return policy[4:]
-    raise ValueError(f"unknown policy {policy!r}; policies: {', '.join(POLICIES)} (e.g. llm:openai:gpt-4o)")
+    raise ValueError(
+        f"unknown policy {policy!r}; policies: {', '.join(POLICIES)} (e.g. llm:openai:gpt-4o, programs:generated/)"
+    )
 
 
-def policy_programs(policy: str, tasks: list[str]) -> dict[str, str]:
-    """The program each task runs under ``policy`` (for an LLM policy: what generates it)."""
+def policy_programs(policy: str, tasks: list[str], suite: str = DEFAULT_SUITE) -> dict[str, StoredProgram]:
+    """The program each task runs under ``policy``, with where it came from (for an LLM policy: what writes it)."""
     llm = policy_llm(policy)
-    if llm is None:
-        return {t: get_task(t).reference_program() for t in tasks}
-    return {t: f"generated in each trial by {llm}" for t in tasks}
+    catalogue = load_suite(suite)
+    if llm is not None:
+        return {t: StoredProgram(t, f"generated in each trial by {llm}", f"llm:{llm}") for t in tasks}
+    if policy == "reference":
+        return {t: StoredProgram(t, catalogue[t].reference_program(), str(catalogue[t].reference)) for t in tasks}
+    path = policy[len(PROGRAMS_PREFIX) :]
+    store = load_program_store(path, catalogue)
+    for note in store.unmatched:
+        print(f"stored programs: not used: {note}", file=sys.stderr)
+    return store.require(tasks, path)
 
 
 def run_label(policy: str, repair_rounds: int = 0) -> str:
@@ -39,16 +50,17 @@ def run_label(policy: str, repair_rounds: int = 0) -> str:
     return f"{policy}+repair{repair_rounds}" if repair_rounds else policy
 
 
-def default_out(policy: str, robot: str, perception: str = "gt") -> str:
-    """``out/bench/<policy>_<robot>`` (``<policy>_<perception>_<robot>`` when perception is not ground truth),
-    the policy made safe for a directory name."""
+def default_out(policy: str, robot: str, perception: str = "gt", suite: str = DEFAULT_SUITE) -> str:
+    """``out/bench/<policy>_<robot>``, with the suite and the perception mode where they are not the defaults
+    (``<policy>_<suite>_<perception>_<robot>``), the policy made safe for a directory name."""
     mode = "" if perception == "gt" else f"_{perception}"
-    return f"out/bench/{re.sub(r'[^A-Za-z0-9._-]+', '_', policy)}{mode}_{robot}"
+    label = "" if suite == DEFAULT_SUITE else "_" + Path(suite).stem
+    return f"out/bench/{re.sub(r'[^A-Za-z0-9._-]+', '_', policy)}{label}{mode}_{robot}"
 
 
 def trial_specs(
     task: str,
-    program: str,
+    program: str | StoredProgram,
     robot: str,
     trials: int,
     seed: int,
@@ -59,10 +71,14 @@ def trial_specs(
     repair_rounds: int = 0,
     world: str | None = None,
     perception: str = "gt",
+    suite: str = DEFAULT_SUITE,
 ) -> list[TrialSpec]:
     """Trial ``i`` uses seed ``seed + i``; with several trials, videos get a ``_trial<i>`` suffix."""
     if trials < 1:
         raise ValueError(f"trials must be at least 1, got {trials}")
+    source = None
+    if isinstance(program, StoredProgram):
+        program, source = program.program, program.source
     specs = []
     for i in range(trials):
         path = None
@@ -84,6 +100,8 @@ def trial_specs(
                 repair_rounds=repair_rounds,
                 world=world,
                 perception=perception,
+                suite=suite,
+                program_source=source,
             )
         )
     return specs
@@ -117,15 +135,19 @@ def run_benchmark(
     progress: bool = True,
     repair_rounds: int = 0,
     perception: str = "gt",
+    suite: str = DEFAULT_SUITE,
 ) -> dict:
-    """Runs (or resumes) the benchmark in ``out``; returns ``{"tasks": {id: exec object}, "wall_time_s"}``."""
-    tasks = list(tasks or TASKS)
+    """Runs (or resumes) the benchmark of ``suite`` in ``out``; returns ``{"tasks": {id: exec object},
+    "wall_time_s"}``."""
+    tasks = list(tasks or load_suite(suite))
     for t in tasks:
-        get_task(t)
+        get_task(t, suite)
     started = time.perf_counter()
-    programs = policy_programs(policy, tasks)
+    programs = policy_programs(policy, tasks, suite)
+    texts = {t: p.program for t, p in programs.items()}
     run = RunDirectory(
-        out, provenance(run_label(policy, repair_rounds), robot, trials, seed, programs, perception, repair_rounds)
+        out,
+        provenance(run_label(policy, repair_rounds), robot, trials, seed, texts, perception, repair_rounds, suite),
     )
     done = run.done()
     specs = [
@@ -141,6 +163,7 @@ def run_benchmark(
             llm=policy_llm(policy),
             repair_rounds=repair_rounds,
             perception=perception,
+            suite=suite,
         )
         if (s.task, s.robot, s.trial) not in done
     ]

@@ -2,7 +2,7 @@
 
 ``in(a, b)``: at least 80% of a's box volume inside b's box. ``on(a, b)``: a's bottom above b's bottom and at
 least 80% of a's footprint over b's. ``at(a, p)``: a's centre within 0.1 m of p. ``joint(j) > x``: a drawer or
-door opened beyond x (metres or radians).
+door opened beyond x (metres or radians). Any of them negated (the original's ``flag_not``): ``not in(a, b)``.
 """
 
 from __future__ import annotations
@@ -29,23 +29,32 @@ class CheckResult:
 
 @dataclass(frozen=True)
 class Check:
-    """One check of a task; ``kind`` is in/on/at/joint."""
+    """One check of a task; ``kind`` is in/on/at/joint; ``negate``: it passes when the relation does not hold."""
 
     kind: str
     subject: str
     target: str = ""
     point: tuple[float, float, float] | None = None
     threshold: float = 0.0
+    negate: bool = False
 
     @property
     def name(self) -> str:
         if self.kind == "at":
-            return f"at({self.subject}, [{', '.join(f'{v:.3f}' for v in self.point)}])"
-        if self.kind == "joint":
-            return f"joint({self.subject}) > {self.threshold:g}"
-        return f"{self.kind}({self.subject}, {self.target})"
+            text = f"at({self.subject}, [{', '.join(f'{v:.3f}' for v in self.point)}])"
+        elif self.kind == "joint":
+            text = f"joint({self.subject}) > {self.threshold:g}"
+        else:
+            text = f"{self.kind}({self.subject}, {self.target})"
+        return f"not {text}" if self.negate else text
 
     def evaluate(self, gt: GroundTruth) -> CheckResult:
+        result = self._relation(gt)
+        if self.negate:
+            return CheckResult(self.name, not result.passed, result.detail)
+        return result
+
+    def _relation(self, gt: GroundTruth) -> CheckResult:
         if self.kind == "in":
             a, b = gt.box(self.subject), gt.box(self.target)
             inside = a.intersection(b).volume / max(a.volume, 1e-12)
@@ -75,6 +84,7 @@ class Check:
             "target": self.target,
             "point": self.point,
             "threshold": self.threshold,
+            "negate": self.negate,
         }
 
 

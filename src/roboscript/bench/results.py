@@ -44,6 +44,7 @@ def provenance(
     programs: dict[str, str],
     perception: str,
     repair_rounds: int = 0,
+    suite: str = "paper",
 ) -> dict:
     """Everything that decides a run's results, to be stored beside them."""
     versions = {"python": platform.python_version()}
@@ -54,6 +55,7 @@ def provenance(
             versions[package] = "absent"
     return {
         "policy": policy,
+        "suite": suite,
         "robot": robot,
         "trials": trials,
         "seed": seed,
@@ -83,6 +85,7 @@ class RunDirectory:
     # Settings that must match for a run to be resumed (a missing one counts as its default: runs from before it).
     FIXED: ClassVar[dict[str, object]] = {
         "policy": None,
+        "suite": "paper",
         "robot": None,
         "seed": None,
         "perception": None,
@@ -177,7 +180,10 @@ def markdown_table(summary: dict) -> str:
     """Metrics as rows and tasks as columns, as in the paper's table."""
     tasks = list(summary["tasks"])
     run = summary["provenance"]
-    header = f"Policy `{run['policy']}`, robot `{run['robot']}`, perception `{run['perception']}`\n\n"
+    header = (
+        f"Suite `{run.get('suite', 'paper')}`, policy `{run['policy']}`, robot `{run['robot']}`, "
+        f"perception `{run['perception']}`\n\n"
+    )
     lines = ["| Metric | " + " | ".join(tasks) + " |", "|---|" + "---|" * len(tasks)]
     rounds = run.get("repair_rounds")
     for metric in METRICS:

@@ -11,7 +11,7 @@ import time
 from dataclasses import asdict, dataclass, field, replace
 from pathlib import Path
 
-from roboscript.bench.tasks import Task, free_task, get_task
+from roboscript.bench.tasks import DEFAULT_SUITE, Task, free_task, get_task
 from roboscript.codegen.checker import check_program
 from roboscript.codegen.outcomes import Outcome
 from roboscript.codegen.program_process import run_program
@@ -42,6 +42,8 @@ class TrialSpec:
     repair_rounds: int = 0  # rounds of feeding errors (checker, runtime, planning) back to the LLM
     world: str | None = None  # a world name or file to run in without a task (no checks); ``task`` is then a label
     perception: str = "gt"  # where the tools' knowledge comes from (roboscript.perception.modes)
+    suite: str = DEFAULT_SUITE  # the suite ``task`` is of: a packaged suite's name or a suite file's path
+    program_source: str | None = None  # where a stored program came from (a file, an entry of one)
 
     def __post_init__(self) -> None:
         if self.repair_rounds < 0:
@@ -77,6 +79,7 @@ class TrialRecord:
     repairs: int = 0  # repair rounds used
     llm_exchanges: list[dict] = field(default_factory=list)  # every prompt and raw response behind it
     attempts: list[dict] = field(default_factory=list)  # with repair: every run, first (unrepaired) to last
+    program_source: str | None = None  # which stored program ran (a file, or an entry of a generated-code file)
 
     def first_attempt(self) -> TrialRecord:
         """The trial as it would have ended without repair: its first attempt (itself when there was one)."""
@@ -107,13 +110,13 @@ def run_trial(spec: TrialSpec) -> TrialRecord:
     (each attempt records into a file of its own, which replaces the video when the attempt is over).
     """
     started = time.perf_counter()
-    task = free_task(spec.world, spec.instruction) if spec.world else get_task(spec.task)
+    task = free_task(spec.world, spec.instruction) if spec.world else get_task(spec.task, spec.suite)
     attempts: list[dict] = []
     author: _Author | None = None
     while True:
         with _TrialWorld(spec, task) as world:
             if spec.llm is not None and author is None:
-                author = _Author(spec.llm, task.query(world.ground_truth, spec.instruction))
+                author = _Author(spec.llm, task.query_for(spec.instruction))
             program = spec.program if author is None else author.program
             if program is None:  # the LLM could not be asked
                 result = author.failure
@@ -148,6 +151,7 @@ def run_trial(spec: TrialSpec) -> TrialRecord:
         attempts=[{k: v for k, v in a.items() if k != "output"} for a in attempts]
         if len(attempts) > 1 or "repair_error" in last
         else [],
+        program_source=spec.program_source,
     )
 
 

@@ -17,7 +17,9 @@ Rules:
 - Start with comments: the task, then a numbered plan, step by step. Then the code.
 - Use only the tools below, `np` (numpy) and `Pose`. Do not import anything; there is no file or network access.
 - Refer to objects by the names in the query; parts of furniture are named like `cabinet.drawer_1` and
-  `cabinet.handle_1` (the handle of drawer 1).
+  `cabinet.handle_1` (the handle of drawer 1). The table and the furniture are objects too (`get_3d_bbox('table')`,
+  `parse_place_pose(name, 'table')`), and `get_object_name_list()` lists them: leave out `table`, `cabinet` and
+  its parts when you mean the things on the table.
 - Positions are in metres in the robot's frame: x forward, y left, z up.
 - To pick something: open_gripper(), grasp(a grasp pose), close_gripper(), attach_object(name), then lift it.
 - To put something down: move_to_pose(a place pose), open_gripper(), detach_object(name), then move up.
@@ -67,8 +69,9 @@ def load_examples() -> list[Example]:
 
 
 def task_query(objects: list[str], instruction: str) -> str:
-    """``objects = [...] ; # instruction``, the form the examples use."""
-    return f"objects = {objects!r} ; # {instruction.strip()}"
+    """``objects = [table, cabinet, apple] ; # instruction``: the original benchmark's query form, which the
+    examples use too."""
+    return f"objects = [{', '.join(objects)}] ; # {instruction.strip()}"
 
 
 def fenced(program: str) -> str:

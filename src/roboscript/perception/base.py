@@ -15,6 +15,7 @@ import numpy as np
 
 from roboscript.geometry import Box3D, Transform
 
+TABLE = "table"  # the table is an object to every tool, as the original benchmark's queries list it
 OCCUPANCY_MARGIN = 0.02  # metres around an ignored object's box whose points are taken to be its own
 # Room kept between the carcass front and where things are put into an open drawer: the panel above the drawer
 # overhangs that line and fingers need space.
@@ -82,7 +83,7 @@ class Perception(ABC):
 
     @abstractmethod
     def names(self) -> list[str]:
-        """Objects and parts that tools may name."""
+        """Every name a tool may take: the table, furniture, objects and furniture parts."""
 
     def require(self, name: object) -> str:
         """``name`` if it is known, else :class:`UnknownObjectError` with the closest names."""
@@ -132,7 +133,12 @@ class Perception(ABC):
 
     @abstractmethod
     def objects(self) -> list[str]:
-        """Movable objects (not furniture or its parts)."""
+        """Movable objects (not the table, furniture or its parts)."""
+
+    def furniture(self) -> list[str]:
+        """Furniture and its parts: what is neither a movable object nor the table."""
+        movable = set(self.objects())
+        return [n for n in self.names() if n not in movable and n != TABLE]
 
     def occupied(self, ignore: list[str]) -> np.ndarray:
         """Observed surface points, (N, 3), without those of the objects in ``ignore`` (what the robot holds):

@@ -155,8 +155,11 @@ def detect_grasps(
     pairs = antipodal_pairs(cloud, gripper, rng)
     if not pairs:
         return []
-    centre_of_object = (cloud.points.min(axis=0) + cloud.points.max(axis=0)) / 2
-    radius = max(float(np.linalg.norm(cloud.points.max(axis=0)[:2] - centre_of_object[:2])), 0.03)
+    # The object's middle is where most of it is (the median of its points), not the middle of its box: a mug's
+    # handle shifts its box's middle towards the handle, and grasps there would be preferred.
+    box_centre = (cloud.points.min(axis=0) + cloud.points.max(axis=0)) / 2
+    centre_of_object = np.array([*np.median(cloud.points[:, :2], axis=0), box_centre[2]])
+    radius = max(float(np.max(np.linalg.norm(cloud.points[:, :2] - centre_of_object[:2], axis=1))), 0.03)
     near = scene_points[np.linalg.norm(scene_points - centre_of_object, axis=1) < 0.3]
     if len(near) > 6000:
         near = near[rng.choice(len(near), size=6000, replace=False)]

@@ -2,7 +2,10 @@
 
 Boxes, poses, joints and receptacles come from the simulated world's state. Object points, which the adaptive
 grasp detector works on, are taken the way a real rig would see them: from the cameras' depth images, selected by
-the simulator's segmentation, so the detector meets the same partial, noisy views it will meet on a robot.
+the simulator's segmentation, so the detector meets the same partial, noisy views it will meet on a robot. Each
+object's fullest view so far is kept in the object's own frame and follows its pose, as an object tracker's would:
+an arm that has just pulled a drawer hides half a mug from one camera, and a grasp detector shown only the other
+half finds no pair of walls to close on.
 """
 
 from __future__ import annotations
@@ -22,7 +25,8 @@ from roboscript.perception.base import (
     Receptacle,
     UnknownObjectError,
 )
-from roboscript.perception.points import entity_points, robot_masks, surface_points
+from roboscript.perception.footprints import footprint_of
+from roboscript.perception.points import entities_points, entity_points, robot_masks, surface_points
 from roboscript.sim.cameras import CameraFrame
 from roboscript.sim.furniture import drawer_interior
 
@@ -39,9 +43,15 @@ class GroundTruthPerception(Perception):
         self.point_stride = point_stride
         self._frames: list[CameraFrame] | None = None
         self._frames_time = -1.0
+        self._views: dict[str, tuple[np.ndarray, np.ndarray]] = {}  # each object's fullest view, in its own frame
 
     def detect(self, categories: list[str] | None = None) -> None:
-        self._frames = None  # the next point query looks again
+        """Looks with the cameras and keeps each object's view (the rest is read from the simulator's state)."""
+        self._frames = None
+        objects = [self.world.entity(n) for n in self.objects()]
+        seen = entities_points(self._camera_frames(), [e.index for e in objects], self.point_stride)
+        for entity in objects:
+            self._keep_view(entity.name, *seen[entity.index])
 
     def names(self) -> list[str]:
         return self.gt.names()
@@ -68,8 +78,10 @@ class GroundTruthPerception(Perception):
         pose = self.gt.pose(name)
         rotation = pose.rotation
         upright = rotation[2, 2] > math.cos(math.radians(35))
-        if entity.object_type is None or not upright:
+        if entity.object_type is None:
             return box.center[:2], 0.0, box.size[:2] / 2
+        if not upright:  # lying on its side (a banana rolled over): the least rectangle round its parts
+            return footprint_of(self.gt.outline(name), trim=0.0)
         yaw = math.atan2(rotation[1, 0], rotation[0, 0])
         frame = Transform(pose.position, quat_from_yaw(yaw))
         local = self.gt.local_box(name, frame)
@@ -133,9 +145,22 @@ class GroundTruthPerception(Perception):
         return self._frames
 
     def points(self, name: str) -> ObjectPoints:
+        """What the cameras see of ``name`` now; of an object, its fullest view so far where now shows less."""
         entity = self._entity(name)
         points, normals = entity_points(self._camera_frames(), entity.index, self.point_stride)
-        return ObjectPoints(points, normals)
+        if entity.kind != "object":
+            return ObjectPoints(points, normals)
+        return self._keep_view(name, points, normals)
+
+    def _keep_view(self, name: str, points: np.ndarray, normals: np.ndarray) -> ObjectPoints:
+        """Keeps this view of object ``name`` if it shows more than the one kept; returns the fuller of the two."""
+        pose = self.gt.pose(name)
+        kept = self._views.get(name)
+        if kept is None or len(points) >= len(kept[0]):
+            self._views[name] = (pose.inverse().apply(points), normals @ pose.rotation)
+            return ObjectPoints(points, normals)
+        local_points, local_normals = kept
+        return ObjectPoints(pose.apply(local_points), local_normals @ pose.rotation.T)
 
     def scene_points(self) -> np.ndarray:
         frames = self._camera_frames()

@@ -58,6 +58,20 @@ def support_height(points: np.ndarray, bin_size: float = 0.002) -> float:
     return densest_layer(points[:, 2], bin_size)[1]
 
 
+TABLE_BAND = 0.006  # metres below the support's height within which points belong to its top
+TABLE_MIN_POINTS = 50
+
+
+def table_surface(points: np.ndarray, normals: np.ndarray, support: float) -> tuple[np.ndarray, np.ndarray] | None:
+    """The points (and normals) of the table's top: those of the support's layer whose normals stand upright.
+    ``None`` when too few were seen to call it a table."""
+    level = (points[:, 2] > support - TABLE_BAND) & (points[:, 2] < support + 0.002)
+    top = level & (np.abs(normals[:, 2]) > 0.8)
+    if top.sum() < TABLE_MIN_POINTS:
+        return None
+    return points[top], normals[top]
+
+
 FOOTPRINT_HEIGHT = 0.015  # metres above the support below which the fused surface blurs into it
 CLUSTER_GAP = 0.0125  # metres between points of one object (2.5 voxels of 5 mm)
 PIECE_SHARE = 0.2  # a furniture part keeps every piece at least this share of its largest

@@ -64,28 +64,44 @@ def entity_points(frames: list[CameraFrame], entity: int, stride: int = 1) -> tu
     Pixels on the segment's outline are dropped: their neighbours lie on the background, so their normals are
     meaningless.
     """
-    points, normals = [], []
+    return entities_points(frames, [entity], stride)[entity]
+
+
+def entities_points(
+    frames: list[CameraFrame], entities: Sequence[int], stride: int = 1
+) -> dict[int, tuple[np.ndarray, np.ndarray]]:
+    """:func:`entity_points` of several entities, each frame's points and normals computed once."""
+    found: dict[int, tuple[list[np.ndarray], list[np.ndarray]]] = {e: ([], []) for e in entities}
     for frame in frames:
         if frame.segmentation is None:
             raise ValueError(f"frame {frame.name!r} has no segmentation; ground-truth points need it")
-        mask = frame.segmentation == entity
-        inner = mask.copy()
-        inner[1:] &= mask[:-1]
-        inner[:-1] &= mask[1:]
-        inner[:, 1:] &= mask[:, :-1]
-        inner[:, :-1] &= mask[:, 1:]
-        if stride > 1:
-            keep = np.zeros_like(inner)
-            keep[::stride, ::stride] = True
-            inner &= keep
-        if not inner.any():
-            continue
-        world = point_map(frame)
-        n = normal_map(world, frame.extrinsics.position)
-        p, nn = world[inner], n[inner]
-        ok = np.isfinite(p).all(axis=1) & np.isfinite(nn).all(axis=1)
-        points.append(p[ok])
-        normals.append(nn[ok])
-    if not points:
-        return np.zeros((0, 3)), np.zeros((0, 3))
-    return np.concatenate(points), np.concatenate(normals)
+        world = normals = None
+        for entity in entities:
+            inner = _inner_pixels(frame.segmentation == entity, stride)
+            if not inner.any():
+                continue
+            if world is None:
+                world = point_map(frame)
+                normals = normal_map(world, frame.extrinsics.position)
+            p, nn = world[inner], normals[inner]
+            ok = np.isfinite(p).all(axis=1) & np.isfinite(nn).all(axis=1)
+            found[entity][0].append(p[ok])
+            found[entity][1].append(nn[ok])
+    return {
+        e: (np.concatenate(ps), np.concatenate(ns)) if ps else (np.zeros((0, 3)), np.zeros((0, 3)))
+        for e, (ps, ns) in found.items()
+    }
+
+
+def _inner_pixels(mask: np.ndarray, stride: int) -> np.ndarray:
+    """The pixels of ``mask`` whose four neighbours are in it too, every ``stride``-th."""
+    inner = mask.copy()
+    inner[1:] &= mask[:-1]
+    inner[:-1] &= mask[1:]
+    inner[:, 1:] &= mask[:, :-1]
+    inner[:, :-1] &= mask[:, 1:]
+    if stride > 1:
+        keep = np.zeros_like(inner)
+        keep[::stride, ::stride] = True
+        inner &= keep
+    return inner

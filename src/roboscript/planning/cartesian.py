@@ -13,7 +13,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from roboscript.geometry import Transform, quat_from_axis_angle, rotation_angle_between
-from roboscript.planning.kinematics import ArmKinematics
+from roboscript.planning.kinematics import ArmKinematics, IKResult
 from roboscript.planning.planner import densify, first_collision
 from roboscript.planning.scene import PlanningScene
 
@@ -27,11 +27,14 @@ class CartesianResult:
     reason: str = ""  # empty when the whole path was achieved
 
 
-def interpolate_poses(start: Transform, goal: Transform, max_step: float, max_angle: float) -> list[Transform]:
-    """Poses from ``start`` (excluded) to ``goal`` (included): position linear, orientation by slerp."""
+def interpolate_poses(
+    start: Transform, goal: Transform, max_step: float, max_angle: float, min_steps: int = 1
+) -> list[Transform]:
+    """Poses from ``start`` (excluded) to ``goal`` (included), at least ``min_steps``: position linear,
+    orientation by slerp."""
     distance = float(np.linalg.norm(goal.position - start.position))
     angle = rotation_angle_between(start.quaternion, goal.quaternion)
-    n = max(1, int(np.ceil(max(distance / max_step, angle / max_angle))))
+    n = max(min_steps, int(np.ceil(max(distance / max_step, angle / max_angle))))
     return [
         Transform(
             start.position + (goal.position - start.position) * (k / n),
@@ -106,6 +109,10 @@ def cartesian_path(
     for target in targets:
         result = kinematics.solve(target, q, max_iterations=30)
         reason = ""
+        if result.converged and float(np.max(np.abs(result.q - q))) > jump_threshold:
+            # A fast but continuous turn (a wrist near a singularity) passes in smaller steps; a flip to another
+            # branch jumps however small the step.
+            result = _in_smaller_steps(kinematics, previous, target, q, jump_threshold) or result
         if not result.converged:
             reason = f"no IK solution at [{', '.join(f'{v:.3f}' for v in target.position)}]"
         elif float(np.max(np.abs(result.q - q))) > jump_threshold:
@@ -127,6 +134,23 @@ def cartesian_path(
         q = result.q
         waypoints.append(q)
     return CartesianResult(np.array(waypoints), 1.0)
+
+
+SUBSTEPS = 5
+
+
+def _in_smaller_steps(
+    kinematics: ArmKinematics, start: Transform, target: Transform, q: np.ndarray, jump_threshold: float
+) -> IKResult | None:
+    """IK at ``target`` reached from ``q`` through :data:`SUBSTEPS` smaller steps, each moving no joint more
+    than half ``jump_threshold``; None if a step jumps (a branch flip, not a fast turn)."""
+    result = None
+    for pose in interpolate_poses(start, target, np.inf, np.inf, SUBSTEPS):
+        result = kinematics.solve(pose, q, max_iterations=30)
+        if not result.converged or float(np.max(np.abs(result.q - q))) > jump_threshold / 2:
+            return None
+        q = result.q
+    return result
 
 
 def _step_measure(a: Transform, b: Transform) -> float:

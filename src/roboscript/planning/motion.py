@@ -13,13 +13,21 @@ import numpy as np
 from roboscript.backends.base import Backend
 from roboscript.geometry import Transform
 from roboscript.planning.cartesian import CartesianResult, arc_poses, cartesian_path
-from roboscript.planning.errors import CartesianPathIncompleteError, TrackingError
+from roboscript.planning.errors import (
+    CartesianPathIncompleteError,
+    PlannerTimeoutError,
+    PlanningError,
+    TrackingError,
+)
 from roboscript.planning.ik import ik_solutions, solve_ik
 from roboscript.planning.kinematics import ArmKinematics
 from roboscript.planning.planner import JointPath, JointPlanner, seed_sampling
 from roboscript.planning.scene import PlanningScene
 from roboscript.planning.timing import time_parameterize
+from roboscript.planning.transfer import plan_transfer
 from roboscript.sim.simulator import ExecutionReport
+
+PLANNING_ATTEMPTS = 3  # tries of a planner that runs out of time, each with twice the time of the one before
 
 
 class SceneSource(Protocol):
@@ -66,6 +74,7 @@ class MotionPlanner:
         self.tracking_tolerance = tracking_tolerance
         self.default_planner = "RRTConnect"
         self.planning_timeout = 2.0
+        self._preferred: list[tuple[Transform, np.ndarray]] = []  # configurations chosen for poses ahead of time
 
     @classmethod
     def for_mujoco(cls, backend, padding: float = 0.005, **kwargs) -> MotionPlanner:
@@ -140,17 +149,38 @@ class MotionPlanner:
     # --- planning ------------------------------------------------------------------------------------------
 
     def sync(self) -> np.ndarray:
-        """Takes the world's present state into the scene; returns the arm's configuration.
+        """Takes the world's present state into the scene; returns the arm's configuration. Where the scene is the
+        simulator's own, so is where each held object sits in the hand.
 
         A servoed joint resting at a limit can read a hair beyond it; such readings are taken as at the limit.
         """
-        self.scene.update(self._world_state())
+        self.scene.update(self._world_state(), held_from_state=self.scene_source is None)
         q = self.backend.joint_positions()
         return np.clip(q, self.scene.joint_lower, self.scene.joint_upper)
 
     def plan_to_joints(self, goal: np.ndarray, planner: str | None = None, timeout: float | None = None) -> JointPath:
-        start = self.sync()
-        return self.planner.plan(start, goal, planner or self.default_planner, timeout or self.planning_timeout)
+        return self._plan(self.sync(), [goal], planner, timeout)
+
+    def _plan(
+        self, start: np.ndarray, goals: list[np.ndarray], planner: str | None, timeout: float | None
+    ) -> JointPath:
+        """Plans to the first goal; a planner that runs out of time tries again with twice the time, taking the
+        next goal where there are several (another IK branch of the same pose), as MoveIt's planning attempts do:
+        a path that exists is then found on a busy machine too. While the gripper holds something, the path is a
+        transfer (:mod:`roboscript.planning.transfer`) where one can be found."""
+        name, budget = planner or self.default_planner, timeout or self.planning_timeout
+        for attempt in range(PLANNING_ATTEMPTS):
+            goal, limit = goals[attempt % len(goals)], budget * 2**attempt
+            if self.scene.attached:  # carried clear of everything where that can be done
+                try:
+                    return plan_transfer(self.planner, self.kinematics, start, goal, name, limit)
+                except PlanningError:
+                    pass
+            try:
+                return self.planner.plan(start, goal, name, limit)
+            except PlannerTimeoutError as exc:
+                last = exc
+        raise last
 
     def ik(
         self, pose: Transform, reference: np.ndarray | None = None, attempts: int = 16, max_attempts: int = 150
@@ -161,6 +191,13 @@ class MotionPlanner:
         reference = self.backend.joint_positions() if reference is None else reference
         return solve_ik(self.kinematics, pose, reference, self.scene, attempts, max_attempts)
 
+    def ik_choices(
+        self, pose: Transform, reference: np.ndarray, attempts: int = 16, max_attempts: int = 150
+    ) -> list[np.ndarray]:
+        """Several collision-free configurations for the TCP at ``pose`` (IK branches), nearest ``reference``
+        first; see :func:`ik_solutions`."""
+        return ik_solutions(self.kinematics, pose, reference, self.scene, attempts, max_attempts)
+
     def straight_approach(
         self,
         target: Transform,
@@ -170,28 +207,66 @@ class MotionPlanner:
         max_attempts: int = 150,
         branches: int = 4,
     ) -> tuple[np.ndarray, np.ndarray | None]:
-        """A configuration at ``target`` and a straight approach to it from ``distance`` back along the TCP's z.
+        """A configuration at ``target`` and a straight approach to it from ``distance`` back along the TCP's z:
+        the first of :meth:`straight_approaches`."""
+        return self.straight_approaches(target, distance, reference, attempts, max_attempts, branches)[0]
 
-        The approach is found backwards, by backing out of the target along the line, so that it ends on the
+    def straight_approaches(
+        self,
+        target: Transform,
+        distance: float,
+        reference: np.ndarray | None = None,
+        attempts: int = 16,
+        max_attempts: int = 150,
+        branches: int = 4,
+    ) -> list[tuple[np.ndarray, np.ndarray | None]]:
+        """Configurations at ``target``, each with a straight approach to it from ``distance`` back along the
+        TCP's z, nearest ``reference`` first.
+
+        An approach is found backwards, by backing out of the target along the line, so that it ends on the
         target's own IK branch: a configuration solved for the start of the line on its own may sit on another
         branch, from which no straight line leads to the target. Near a singularity (the hand above the base)
-        some branches cannot follow the line at all, so up to ``branches`` IK solutions are tried, nearest
-        ``reference`` first. Returns the configuration and the approach's joint waypoints, or the nearest
-        solution and None when every line is blocked; raises :class:`IKError` if ``target`` has no solution.
+        some branches cannot follow the line at all, so up to ``branches`` IK solutions are tried. Returns those
+        whose line is clear, with its joint waypoints; or, when every line is blocked, the nearest solution with
+        None. Raises :class:`IKError` if ``target`` has no solution.
         """
         reference = self.backend.joint_positions() if reference is None else reference
         solutions = ik_solutions(self.kinematics, target, reference, self.scene, attempts, max_attempts, branches)
         start = Transform(target.position - distance * target.rotation[:, 2], target.quaternion)
+        found = []
         for q in solutions:
             line = cartesian_path(self.kinematics, self.scene, q, [start])
             if line.fraction >= 1.0:
-                return q, line.waypoints[::-1].copy()
-        return solutions[0], None
+                found.append((q, line.waypoints[::-1].copy()))
+        return found or [(solutions[0], None)]
+
+    def move_to_any(self, goals: Sequence[np.ndarray], planner: str | None = None) -> int:
+        """Plans to the first of ``goals`` (other IK branches of one pose) that a path reaches, trying the next
+        where the planner runs out of time, executes it, and returns the index of the goal reached."""
+        path = self._plan(self.sync(), list(goals), planner, None)
+        self.execute(path)
+        return int(np.argmin([float(np.max(np.abs(path.goal - g))) for g in goals]))
+
+    def prefer_goal(self, pose: Transform, q: np.ndarray) -> None:
+        """Makes ``q`` the goal of a planned motion to ``pose`` (a place pose chosen because the hand can leave it
+        from ``q``), where the IK nearest the start would otherwise decide."""
+        self._preferred = [*self._preferred[-7:], (pose, np.asarray(q, dtype=float).copy())]
+
+    def _preferred_for(self, pose: Transform) -> np.ndarray | None:
+        """The configuration preferred for ``pose``, if one was chosen and is still free of collisions."""
+        for known, q in reversed(self._preferred):
+            same_place = np.linalg.norm(known.position - pose.position) < 1e-4
+            if same_place and np.allclose(known.quaternion, pose.quaternion, atol=1e-4):
+                return q if self.scene.is_valid(q) else None
+        return None
 
     def plan_to_pose(self, pose: Transform, planner: str | None = None, timeout: float | None = None) -> JointPath:
         start = self.sync()
-        goal = self.ik(pose, start)
-        return self.planner.plan(start, goal, planner or self.default_planner, timeout or self.planning_timeout)
+        preferred = self._preferred_for(pose)
+        goals = ik_solutions(self.kinematics, pose, start, self.scene, wanted_solutions=PLANNING_ATTEMPTS)
+        if preferred is not None:
+            goals = [preferred, *goals]
+        return self._plan(start, goals, planner, timeout)
 
     def cartesian(self, poses: Sequence[Transform], eef_step: float = 0.005) -> CartesianResult:
         """Straight TCP lines through ``poses`` from the present pose; see :func:`cartesian_path`."""
@@ -214,11 +289,16 @@ class MotionPlanner:
         return self.execute(self.plan_to_joints(goal, planner))
 
     def move_to_pose(self, pose: Transform, planner: str | None = None) -> ExecutionReport:
-        """A straight line when it is feasible in full, else a planned collision-free motion."""
+        """A straight line when it is feasible in full and ends in the configuration preferred for ``pose`` (if
+        one is), else a planned collision-free motion."""
         line = self.cartesian([pose])
-        if line.fraction >= 1.0:
+        if line.fraction >= 1.0 and self._ends_as_preferred(pose, line.waypoints[-1]):
             return self.execute(line.waypoints)
         return self.execute(self.plan_to_pose(pose, planner))
+
+    def _ends_as_preferred(self, pose: Transform, q: np.ndarray) -> bool:
+        preferred = self._preferred_for(pose)
+        return preferred is None or bool(np.max(np.abs(q - preferred)) < 0.2)
 
     def follow(self, poses: Sequence[Transform], min_fraction: float = 1.0) -> ExecutionReport:
         """Executes a Cartesian path through ``poses``; raises if less than ``min_fraction`` is achievable."""

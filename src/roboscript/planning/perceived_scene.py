@@ -193,7 +193,7 @@ class PerceivedSceneSource:
         object_points = {
             name: filled_below(perception.points(name).points, float(object_boxes[name].lower[2])) for name in objects
         }
-        parts = {name: perception.box(name) for name in perception.names() if name not in objects}
+        parts = {name: perception.box(name) for name in perception.furniture()}
         contents = sort_points(scene_points, object_points, object_boxes, parts)
         # Only fixed surfaces are remembered: an object's are where it was, and it may be carried off.
         self._memory = np.vstack([np.zeros((0, 3)), *contents.fixed.values()])

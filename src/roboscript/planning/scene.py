@@ -11,10 +11,11 @@ state; :mod:`roboscript.planning.perceived_scene` builds a model of the same for
 
 from __future__ import annotations
 
+import contextlib
 import copy
 import functools
 import itertools
-from collections.abc import Iterable
+from collections.abc import Iterable, Iterator
 from dataclasses import dataclass
 
 import mujoco
@@ -22,6 +23,8 @@ import numpy as np
 
 from roboscript.geometry import Transform
 from roboscript.sim.world import RobotBinding, SimWorld, is_descendant
+
+LEAVING_TOLERANCE = 0.002  # metres a contact being left may go deeper than it started (or than touching)
 
 # contype/conaffinity bits. Two geoms collide if the type of either shares a bit with the affinity of the other.
 # Moving arm links collide with everything; the environment only with the robot and held objects (objects resting on
@@ -92,6 +95,8 @@ class PlanningScene:
         self._set_bits(gripper, "gripper", padding)
 
         self._allowed = np.zeros((nbody, nbody), dtype=bool)
+        # Contacts that may be left but not deepened: body pair -> the least distance allowed (the start's).
+        self._leaving: dict[tuple[int, int], float] = {}
         self._attached: dict[str, Attachment] = {}
         self._attached_allowed: dict[str, set[int]] = {}
         self._lower, self._upper = robot.joint_lower - 1e-9, robot.joint_upper + 1e-9
@@ -125,16 +130,20 @@ class PlanningScene:
     def joint_upper(self) -> np.ndarray:
         return self.robot.joint_upper
 
-    def update(self, qpos: np.ndarray) -> None:
+    def update(self, qpos: np.ndarray, held_from_state: bool = False) -> None:
         """Takes the world's state (every joint: objects, drawers, doors, the arm) from a full ``qpos`` vector.
 
-        Held objects follow the gripper, not ``qpos``; a contact allowed at attachment is withdrawn once the held
-        object has left it.
+        Held objects follow the gripper, not ``qpos``; with ``held_from_state`` (a state read off the world itself,
+        as in simulation), where each sits in the hand is taken from ``qpos`` first: a held object that turned a
+        little between the fingers is planned with as it is. A contact allowed at attachment is withdrawn once the
+        held object has left it.
         """
         qpos = np.asarray(qpos, dtype=float)
         if qpos.shape != (self.model.nq,):
             raise ValueError(f"qpos must have {self.model.nq} entries (the world's), got shape {qpos.shape}")
         self.data.qpos[:] = qpos
+        if self._attached and held_from_state:
+            self._regrasp(qpos)
         if self._attached:
             self._place(qpos[self._qpos])
             mujoco.mj_collision(self.model, self.data)
@@ -145,6 +154,16 @@ class PlanningScene:
                     if other not in touching:
                         allowed.discard(other)
                         self._allowed[body, other] = self._allowed[other, body] = False
+
+    def _regrasp(self, qpos: np.ndarray) -> None:
+        """Each attachment's pose relative to the TCP as ``qpos`` has the object and the arm."""
+        mujoco.mj_kinematics(self.model, self.data)
+        site = self.robot.tcp_site
+        tcp = Transform.from_rotation(self.data.site_xpos[site], self.data.site_xmat[site].reshape(3, 3))
+        for name, attachment in self._attached.items():
+            body = attachment.body
+            pose = Transform.from_rotation(self.data.xpos[body], self.data.xmat[body].reshape(3, 3))
+            self._attached[name] = Attachment(name, body, tcp.inverse().compose(pose).matrix())
 
     def arm_positions(self) -> np.ndarray:
         return self.data.qpos[self._qpos].copy()
@@ -167,7 +186,21 @@ class PlanningScene:
             return True
         geoms = self.data.contact.geom[:ncon]
         bodies = self.model.geom_bodyid[geoms]
-        return bool(np.all(self._allowed[bodies[:, 0], bodies[:, 1]]))
+        refused = ~self._allowed[bodies[:, 0], bodies[:, 1]]
+        if not refused.any():
+            return True
+        return self._only_leaving(bodies, refused)
+
+    def _only_leaving(self, bodies: np.ndarray, refused: np.ndarray) -> bool:
+        """Whether every refused contact is one being left: no deeper than where the motion started."""
+        if not self._leaving:
+            return False
+        distances = self.data.contact.dist
+        for k in np.flatnonzero(refused):
+            floor = self._leaving.get((int(bodies[k, 0]), int(bodies[k, 1])))
+            if floor is None or distances[k] < floor - LEAVING_TOLERANCE:
+                return False
+        return True
 
     def collisions(self, q: np.ndarray) -> list[tuple[str, str]]:
         """The pairs of named things in collision (closer than the padding) with the arm at ``q``."""
@@ -176,7 +209,11 @@ class PlanningScene:
         pairs = []
         moving = self._is_robot.copy()  # the robot and what it holds come first in each pair
         moving[[attachment.body for attachment in self._attached.values()]] = True
-        for a, b in self._contact_bodies():
+        distances = self.data.contact.dist
+        for k, (a, b) in enumerate(self._contact_bodies()):
+            floor = self._leaving.get((a, b))
+            if floor is not None and distances[k] >= floor - LEAVING_TOLERANCE:
+                continue
             if not self._allowed[a, b]:
                 pair = (self.body_labels[a], self.body_labels[b])
                 if moving[b] and not moving[a]:
@@ -247,14 +284,53 @@ class PlanningScene:
         body = attachment.body
         self._set_bits(self._body_mask(body), "env", 0.0)
         self._allowed[body, :] = self._allowed[:, body] = False
+        self._leaving = {pair: floor for pair, floor in self._leaving.items() if body not in pair}
 
     @property
     def attached(self) -> list[str]:
         return list(self._attached)
 
+    @contextlib.contextmanager
+    def held_clearance(self, clearance: float) -> Iterator[None]:
+        """Within this block, what the gripper holds counts as colliding closer than ``clearance`` to anything
+        (rather than the padding): for transfers, where a held object swinging a little must not graze what it
+        passes."""
+        geoms = np.isin(self.model.geom_bodyid, [a.body for a in self._attached.values()]) & self._collides
+        saved = self.model.geom_margin[geoms].copy()
+        self.model.geom_margin[geoms] = np.maximum(saved, clearance)
+        try:
+            yield
+        finally:
+            self.model.geom_margin[geoms] = saved
+
     def allow(self, a: str, b: str, allowed: bool = True) -> None:
-        """Allows (or forbids again) contact between two named things, e.g. the fingers and an object to grasp."""
-        self._allow_bodies(self._bodies_named(a), self._bodies_named(b), allowed)
+        """Allows (or forbids again) contact between two named things, e.g. the fingers and an object to grasp.
+        Forbidding also ends an allowance to leave (:meth:`allow_leaving`)."""
+        first, second = self._bodies_named(a), self._bodies_named(b)
+        self._allow_bodies(first, second, allowed)
+        if not allowed:
+            for i in first:
+                for j in second:
+                    self._leaving.pop((i, j), None)
+                    self._leaving.pop((j, i), None)
+
+    def allow_leaving(self, a: str, b: str, q: np.ndarray) -> None:
+        """Lets two named things come closer than the padding, even touch, but never go deeper into each other
+        than they are with the arm at ``q``: a motion may start in a contact (fingers round what they just let
+        go, a link that ended a motion inside the padding) and leave it, or brush past, but not sweep through the
+        thing. :meth:`allow` with False ends it."""
+        first, second = self._bodies_named(a), self._bodies_named(b)
+        floors = {(i, j): 0.0 for i in first for j in second}
+        self._place(np.asarray(q, dtype=float))
+        mujoco.mj_collision(self.model, self.data)
+        distances = self.data.contact.dist
+        for k, (x, y) in enumerate(self._contact_bodies()):
+            pair = (x, y) if (x, y) in floors else (y, x)
+            if pair in floors:
+                floors[pair] = min(floors[pair], float(distances[k]))
+        for (i, j), floor in floors.items():
+            floor = min(floor, self._leaving.get((i, j), np.inf))
+            self._leaving[(i, j)] = self._leaving[(j, i)] = floor
 
     def has(self, name: str) -> bool:
         """Whether ``name`` (or "gripper") names something in the scene."""

@@ -80,6 +80,37 @@ def geoms_box(model: mujoco.MjModel, data: mujoco.MjData, geoms: np.ndarray, fra
     return Box3D((center - half).min(axis=0), (center + half).max(axis=0))
 
 
+_CIRCLE = np.array([[np.cos(a), np.sin(a)] for a in np.linspace(0, 2 * np.pi, 16, endpoint=False)])
+_SPHERE = np.array([[x, y, z] for x in (-1, 0, 1) for y in (-1, 0, 1) for z in (-1, 0, 1) if (x, y, z) != (0, 0, 0)])
+_SPHERE = _SPHERE / np.linalg.norm(_SPHERE, axis=1, keepdims=True)
+
+
+def geoms_outline(model: mujoco.MjModel, data: mujoco.MjData, geoms: np.ndarray) -> np.ndarray:
+    """World points, (N, 3), on the geoms' surfaces whose outline seen from above is the geoms' own, however they
+    are turned: a ball's is a circle round its centre (the corners of its box would stick out once it rolls), a
+    capsule's the circles round its two ends, a cylinder's the rims of its two faces, a box's its corners."""
+    out = []
+    G = mujoco.mjtGeom
+    for g in geoms:
+        kind, size = int(model.geom_type[g]), model.geom_size[g]
+        center, rotation = data.geom_xpos[g], data.geom_xmat[g].reshape(3, 3)
+        if kind in (int(G.mjGEOM_SPHERE), int(G.mjGEOM_CAPSULE)):
+            reach = 0.0 if kind == int(G.mjGEOM_SPHERE) else size[1]
+            for end in (center - reach * rotation[:, 2], center + reach * rotation[:, 2]):
+                out.append(np.column_stack([end[:2] + size[0] * _CIRCLE, np.full(len(_CIRCLE), end[2])]))
+        elif kind == int(G.mjGEOM_CYLINDER):
+            rim = np.column_stack([size[0] * _CIRCLE, np.zeros(len(_CIRCLE))])
+            for face in (-size[1], size[1]):
+                out.append(center + (rim + np.array([0.0, 0.0, face])) @ rotation.T)
+        elif kind == int(G.mjGEOM_ELLIPSOID):
+            out.append(center + (_SPHERE * size[:3]) @ rotation.T)
+        else:
+            box = kind == int(G.mjGEOM_BOX)
+            half, offset = (size[:3], np.zeros(3)) if box else (model.geom_aabb[g, 3:], model.geom_aabb[g, :3])
+            out.append(center + (offset + _CORNER_SIGNS * half) @ rotation.T)
+    return np.vstack(out) if out else np.zeros((0, 3))
+
+
 class GroundTruth:
     """Reads the true state of a :class:`SimWorld`."""
 
@@ -92,8 +123,8 @@ class GroundTruth:
         }
 
     def names(self) -> list[str]:
-        """Objects and furniture parts, as the tool API lists them."""
-        return self.world.entity_names(("object", "furniture", "part"))
+        """The table, furniture, objects and furniture parts, as the tool API lists them."""
+        return self.world.spec.query_names()
 
     def entity(self, name: str) -> Entity:
         return self.world.entity(name)
@@ -116,6 +147,10 @@ class GroundTruth:
         if len(geoms) == 0:
             raise ValueError(f"{name!r} has no geometry")
         return geoms_box(self.model, self.data, geoms, frame)
+
+    def outline(self, name: str) -> np.ndarray:
+        """Points whose outline from above is that of ``name``'s geoms (see :func:`geoms_outline`)."""
+        return geoms_outline(self.model, self.data, self._entity_geoms[self.entity(name).name])
 
     def geoms(self, name: str) -> np.ndarray:
         """Ids of the geoms that make up ``name``'s shape."""

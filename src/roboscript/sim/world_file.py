@@ -34,6 +34,7 @@ from roboscript.sim.cameras import CameraSpec, default_camera_rig
 from roboscript.sim.furniture import CabinetRow, CabinetSpec, TableSpec
 from roboscript.sim.objects import ObjectType, object_types
 
+TABLE_NAME = "table"
 ROBOT_BASE_XY = (-0.45, 0.0)
 ROBOT_BASE_RADIUS = 0.12
 OVERLAP_MARGIN = 0.004
@@ -85,6 +86,12 @@ class WorldSpec:
 
     def part_names(self) -> list[str]:
         return [p for c in self.cabinets for p in c.part_names()]
+
+    def query_names(self) -> list[str]:
+        """Every name a program may use here, in the order of the original benchmark's queries: the table, the
+        furniture, the objects, then each piece of furniture's drawers and doors before its handles."""
+        parts = sorted(self.part_names(), key=lambda p: (p.split(".")[0], ".handle_" in p))
+        return [TABLE_NAME, *(c.name for c in self.cabinets), *self.object_names(), *parts]
 
     def randomized(self, seed: int) -> WorldSpec:
         """A copy with table objects' poses jittered by :attr:`randomization`, deterministic for ``seed``.
@@ -231,7 +238,7 @@ def _parse_objects(source: str, items: Any, part_names: set[str]) -> tuple[Objec
             entry += f" {item['name']!r}"
         r = _Reader(source, entry, item, _OBJECT_FIELDS)
         name = r.string("name")
-        if name in seen or name in part_names or name == "table":
+        if name in seen or name in part_names or name == TABLE_NAME:
             r.fail(f"name {name!r} is already used; object names must be unique")
         if "." in name or "/" in name:
             r.fail(f"name {name!r} must not contain '.' or '/'")

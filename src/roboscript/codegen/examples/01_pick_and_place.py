@@ -1,4 +1,4 @@
-# query: objects = ['table', 'orange', 'red_bowl', 'sponge'] ; # put the orange into the red bowl
+# query: objects = [table, orange, red_bowl, sponge] ; # put the orange into the red bowl
 # Plan:
 # 1. Detect the orange and the red bowl.
 # 2. Grasp the orange from above at its middle, lift it.

@@ -1,4 +1,4 @@
-# query: objects = ['table', 'cabinet', 'cabinet.drawer_0', 'cabinet.handle_0', 'cabinet.drawer_1', 'cabinet.handle_1'] ; # open the top drawer
+# query: objects = [table, cabinet, cabinet.drawer_0, cabinet.drawer_1, cabinet.handle_0, cabinet.handle_1] ; # open the top drawer
 # Plan:
 # 1. The top drawer is cabinet.drawer_0, its handle cabinet.handle_0.
 # 2. Grasp the handle horizontally, close the gripper, attach the drawer.

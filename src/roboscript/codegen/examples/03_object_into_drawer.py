@@ -1,4 +1,4 @@
-# query: objects = ['table', 'cabinet', 'cabinet.drawer_0', 'cabinet.handle_0', 'cabinet.drawer_1', 'cabinet.handle_1', 'tuna_can'] ; # put the can into the bottom drawer
+# query: objects = [table, cabinet, tuna_can, cabinet.drawer_0, cabinet.drawer_1, cabinet.handle_0, cabinet.handle_1] ; # put the can into the bottom drawer
 # Plan:
 # 1. The bottom drawer here is cabinet.drawer_1: open it by its handle first.
 # 2. Pick the can from above.

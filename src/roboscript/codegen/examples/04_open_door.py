@@ -1,4 +1,4 @@
-# query: objects = ['table', 'cabinet', 'cabinet.door_0', 'cabinet.handle_0'] ; # open the cabinet door
+# query: objects = [table, cabinet, cabinet.door_0, cabinet.handle_0] ; # open the cabinet door
 # Plan:
 # 1. Grasp the door's handle horizontally and attach the door.
 # 2. The door turns about a revolute joint: get its axis and position near the handle.

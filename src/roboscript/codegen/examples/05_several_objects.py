@@ -1,4 +1,4 @@
-# query: objects = ['table', 'basket', 'red_block', 'green_block', 'blue_block', 'banana'] ; # put all the blocks into the basket
+# query: objects = [table, basket, red_block, green_block, blue_block, banana] ; # put all the blocks into the basket
 # Plan:
 # 1. The blocks are the objects whose names end in '_block'.
 # 2. For each block: grasp it from above, lift it, place it into the basket, release it.

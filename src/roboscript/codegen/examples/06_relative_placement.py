@@ -1,4 +1,4 @@
-# query: objects = ['table', 'white_mug', 'cracker_box'] ; # put the mug 15 cm to the left of the cracker box
+# query: objects = [table, white_mug, cracker_box] ; # put the mug 15 cm to the left of the cracker box
 # Plan:
 # 1. Left is +y in the robot's frame: the target is the box centre moved 0.15 m along +y, on the table.
 # 2. Grasp the mug with the adaptive grasp from above (its rim), lift it.

@@ -1,4 +1,4 @@
-# query: objects = ['table', 'pear', 'peach'] ; # swap the pear and the peach
+# query: objects = [table, pear, peach] ; # swap the pear and the peach
 # Plan:
 # 1. Remember both positions before anything moves.
 # 2. Move the pear to a free spot 20 cm towards the robot, so that its place is free.

@@ -1,4 +1,4 @@
-# query: objects = ['table', 'red_box', 'yellow_box'] ; # put the red box on top of the yellow box
+# query: objects = [table, red_box, yellow_box] ; # put the red box on top of the yellow box
 # Plan:
 # 1. Grasp the red box from above, lift it higher than the yellow box.
 # 2. Place it onto the yellow box ('on' placement uses the receptacle's top) and release it.

@@ -1,4 +1,4 @@
-# query: objects = ['table', 'white_plate', 'blue_bowl', 'apple', 'lemon', 'tennis_ball', 'toy_car'] ; # fruits onto the plate, toys into the bowl
+# query: objects = [table, white_plate, blue_bowl, apple, lemon, tennis_ball, toy_car] ; # fruits onto the plate, toys into the bowl
 # Plan:
 # 1. Decide for each object where it goes: fruits (apple, lemon) to the plate, toys (tennis ball, toy car) to the bowl.
 # 2. Move them one at a time with a helper.

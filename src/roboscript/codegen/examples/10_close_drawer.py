@@ -1,4 +1,4 @@
-# query: objects = ['table', 'cabinet', 'cabinet.drawer_0', 'cabinet.handle_0'] ; # close the open drawer
+# query: objects = [table, cabinet, cabinet.drawer_0, cabinet.handle_0] ; # close the open drawer
 # Plan:
 # 1. Grasp the handle of the open drawer horizontally and attach the drawer.
 # 2. Push along the joint axis, the opposite way from opening, by about as far as it is open.

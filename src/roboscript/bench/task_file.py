@@ -1,0 +1,332 @@
+"""Task files: a suite of benchmark tasks as data (YAML or JSON), parsed and validated into :class:`Task` objects.
+
+A suite file names the suite and lists its tasks; each task names its world, gives the query an LLM is asked
+(``objects = [...] ; # instruction``, character for character) and the checks that decide whether it was done::
+
+    suite: paper
+    description: The eight tasks of the RoboScript paper.
+    tasks:
+      - id: simple_0
+        label: simple_0                        # the task's label in the original repository (optional)
+        world: world_2_pick_and_place          # a packaged world, or a world file relative to this file
+        query: "objects = [table, cabinet, apple, footed_bowl] ; # place the apple into the footed bowl"
+        checks:
+          - in: [apple, footed_bowl]           # 80% of the apple's box inside the bowl's
+          - on: [apple, table]                 # over it, resting no lower than its bottom
+          - {at: apple, start_of: banana}      # within 10 cm of where the banana was at the start
+          - {at: apple, position: [0.1, 0.2, 0.86]}
+          - {joint: cabinet.drawer_1, above: 0.15}   # opened beyond 15 cm (radians for doors)
+          - {on: [apple, white_ceramic_plate], not: true}   # the check must fail
+
+Every problem is a :class:`TaskFileError` naming the file, the entry (``tasks[2] 'moderate_0'.checks[1]``) and what
+is wrong, with the valid choices: unknown fields, a query that is not in the query form or lists a name its world
+lacks, a check on an object that is not there or in something that holds nothing.
+"""
+
+from __future__ import annotations
+
+import difflib
+import json
+import math
+import re
+from dataclasses import dataclass
+from pathlib import Path
+from typing import Any
+
+import yaml
+
+from roboscript.bench.checks import Check
+from roboscript.codegen.prompt import task_query
+from roboscript.sim.ground_truth import GroundTruth
+from roboscript.sim.world_catalog import load_world
+from roboscript.sim.world_file import TABLE_NAME, WorldFileError, WorldSpec, load_yaml
+
+CHECK_KINDS = ("in", "on", "at", "joint")
+_QUERY = re.compile(r"^\s*#?\s*objects\s*=\s*\[(?P<names>[^\]]*)\]\s*;\s*#\s?(?P<instruction>.*)$", re.DOTALL)
+_ID = re.compile(r"^[A-Za-z0-9_.-]+$")
+_SUITE_FIELDS = {"suite", "description", "source", "tasks"}
+_TASK_FIELDS = {"id", "label", "world", "query", "checks"}
+
+
+class TaskFileError(ValueError):
+    """A task file that cannot be loaded; the message names the file, the entry and the problem."""
+
+    def __init__(self, source: str, entry: str, problem: str):
+        self.source, self.entry, self.problem = source, entry, problem
+        super().__init__(f"task file {source}: {entry}: {problem}")
+
+
+@dataclass(frozen=True)
+class CheckSpec:
+    """One check as the task file states it; :meth:`resolve` makes it concrete for a trial (``start_of`` is read
+    from the world as it starts)."""
+
+    kind: str  # in, on, at, joint
+    subject: str
+    target: str = ""  # the receptacle of in/on
+    start_of: str = ""  # at: where this object was at the start
+    position: tuple[float, float, float] | None = None  # at: a fixed point
+    above: float = 0.0  # joint: opened beyond this (metres or radians)
+    negate: bool = False
+
+    def resolve(self, gt: GroundTruth) -> Check:
+        point = self.position
+        if self.kind == "at" and self.start_of:
+            point = tuple(float(v) for v in gt.box(self.start_of).center)
+        return Check(self.kind, self.subject, self.target, point, self.above, self.negate)
+
+    def describe(self) -> str:
+        """The check in words of the file's form, e.g. ``in(apple, footed_bowl)``, ``at(apple, start of banana)``."""
+        if self.kind in ("in", "on"):
+            text = f"{self.kind}({self.subject}, {self.target})"
+        elif self.kind == "at":
+            where = f"start of {self.start_of}" if self.start_of else str(list(self.position or ()))
+            text = f"at({self.subject}, {where})"
+        else:
+            text = f"joint({self.subject}) > {self.above:g}"
+        return f"not {text}" if self.negate else text
+
+
+@dataclass(frozen=True)
+class Task:
+    """A benchmark task: its world, the query an LLM is given, and the checks of its result.
+
+    ``reference``: the file of its verified program (``<suite>/<id>.py`` beside the suite file), if there is one.
+    """
+
+    id: str
+    suite: str
+    world: str
+    query: str
+    checks: tuple[CheckSpec, ...]
+    label: str = ""
+    reference: Path | None = None
+
+    @property
+    def instruction(self) -> str:
+        """What the query asks, without its object list."""
+        return parse_query(self.query)[1]
+
+    @property
+    def object_names(self) -> list[str]:
+        """The names the query lists."""
+        return parse_query(self.query)[0]
+
+    def query_for(self, instruction: str | None = None) -> str:
+        """The query given to an LLM: the task's own, or its object list with another ``instruction``."""
+        if not instruction:
+            return self.query
+        return task_query(self.object_names, instruction)
+
+    def build_checks(self, gt: GroundTruth) -> list[Check]:
+        """The checks of one trial, with positions from the world as it starts."""
+        return [c.resolve(gt) for c in self.checks]
+
+    def reference_program(self) -> str:
+        """The task's verified program, written against the tool API only."""
+        if self.reference is None or not self.reference.is_file():
+            where = f" (looked for {self.reference})" if self.reference else ""
+            raise KeyError(f"task {self.id!r} of suite {self.suite!r} has no reference program{where}")
+        return self.reference.read_text()
+
+
+def parse_query(query: str) -> tuple[list[str], str]:
+    """``(names, instruction)`` of a query ``objects = [a, b, ...] ; # instruction`` (names quoted or not; the
+    eval-items form with a leading ``# `` too). Raises ``ValueError`` naming the expected form."""
+    match = _QUERY.match(query) if isinstance(query, str) else None
+    if match is None:
+        raise ValueError(f"a query reads 'objects = [table, apple, ...] ; # instruction', got {query!r}")
+    names = [n.strip().strip("'\"") for n in match["names"].split(",")]
+    return [n for n in names if n], match["instruction"]
+
+
+def normalize_query(query: str) -> str:
+    """A query as stored programs are matched to tasks by: without a leading ``#``, trailing periods and spaces,
+    in lower case with single spaces (the original's eval items end its queries with ``.``, its programs ``..``)."""
+    text = " ".join(query.strip().lstrip("#").split()).lower()
+    return text.rstrip(". ")
+
+
+# ---------------------------------------------------------------------------------------------------------------
+# Parsing
+
+
+class _Entry:
+    """Typed access to one mapping of a task file, with errors that say where."""
+
+    def __init__(self, source: str, entry: str, data: Any, allowed: set[str]):
+        self.source, self.entry = source, entry
+        if not isinstance(data, dict):
+            self.fail(f"expected a mapping, got {type(data).__name__} {data!r}")
+        unknown = sorted(str(k) for k in set(data) - allowed)
+        if unknown:
+            close = difflib.get_close_matches(unknown[0], allowed, n=1)
+            hint = f" (did you mean {close[0]!r}?)" if close else ""
+            self.fail(f"unknown field {unknown[0]!r}{hint}; valid fields: {', '.join(sorted(allowed))}")
+        self.data = data
+
+    def fail(self, problem: str):
+        raise TaskFileError(self.source, self.entry, problem)
+
+    def string(self, key: str, required: bool = True) -> str:
+        if key not in self.data:
+            if required:
+                self.fail(f"missing required field {key!r}")
+            return ""
+        value = self.data[key]
+        if not isinstance(value, str) or not value.strip():
+            self.fail(f"field {key!r} must be a non-empty string, got {value!r}")
+        return value
+
+
+def _name_check(entry: _Entry, name: object, valid: list[str], kinds: str) -> str:
+    """``name`` if it is one of ``valid`` (the world's ``kinds``), else the entry fails naming the valid ones."""
+    if not isinstance(name, str) or name not in valid:
+        close = difflib.get_close_matches(str(name), valid, n=3, cutoff=0.5)
+        hint = f"did you mean {', '.join(close)}? " if close else ""
+        entry.fail(f"{name!r} is not one of the world's {kinds}; {hint}valid: {', '.join(valid) or 'none'}")
+    return name
+
+
+def _pair(entry: _Entry, kind: str) -> tuple[str, str]:
+    value = entry.data[kind]
+    if not (isinstance(value, list) and len(value) == 2):
+        entry.fail(f"'{kind}' takes [object, receptacle], e.g. {kind}: [apple, footed_bowl]; got {value!r}")
+    return value[0], value[1]
+
+
+def _receptacles(world: WorldSpec, kind: str) -> list[str]:
+    """What ``in`` may name (containers and drawers) and ``on`` (any object, and the table)."""
+    if kind == "in":
+        containers = [o.name for o in world.objects if o.type.container]
+        return containers + [p for p in world.part_names() if ".drawer_" in p]
+    return [TABLE_NAME, *world.object_names()]
+
+
+def _parse_check(source: str, entry_name: str, data: Any, world: WorldSpec) -> CheckSpec:
+    if not isinstance(data, dict):
+        raise TaskFileError(source, entry_name, f"a check is a mapping such as {{in: [apple, bowl]}}, got {data!r}")
+    kinds = [k for k in CHECK_KINDS if k in data]
+    if len(kinds) != 1:
+        raise TaskFileError(
+            source, entry_name, f"a check names exactly one of {', '.join(CHECK_KINDS)}; got {sorted(map(str, data))}"
+        )
+    kind = kinds[0]
+    extra = {"in": set(), "on": set(), "at": {"start_of", "position"}, "joint": {"above"}}[kind]
+    entry = _Entry(source, entry_name, data, {kind, "not", *extra})
+    negate = data.get("not", False)
+    if not isinstance(negate, bool):
+        entry.fail(f"field 'not' must be true or false, got {negate!r}")
+    objects = world.object_names()
+    if kind in ("in", "on"):
+        subject, target = _pair(entry, kind)
+        _name_check(entry, subject, objects, "objects")
+        kinds = "containers and drawers" if kind == "in" else "objects and the table"
+        _name_check(entry, target, _receptacles(world, kind), kinds)
+        if subject == target:
+            entry.fail(f"an object cannot be {kind} itself: {subject!r}")
+        return CheckSpec(kind, subject, target, negate=negate)
+    if kind == "at":
+        subject = _name_check(entry, data["at"], objects, "objects")
+        if ("start_of" in data) == ("position" in data):
+            entry.fail("'at' takes either start_of: OBJECT (where it was at the start) or position: [x, y, z]")
+        if "start_of" in data:
+            start = _name_check(entry, data["start_of"], objects, "objects")
+            return CheckSpec(kind, subject, start_of=start, negate=negate)
+        position = data["position"]
+        ok = isinstance(position, list) and len(position) == 3
+        ok = ok and all(isinstance(v, int | float) and not isinstance(v, bool) and math.isfinite(v) for v in position)
+        if not ok:
+            entry.fail(f"'position' must be 3 numbers [x, y, z] in metres, got {position!r}")
+        return CheckSpec(kind, subject, position=tuple(float(v) for v in position), negate=negate)
+    articulated = [p for p in world.part_names() if ".drawer_" in p or ".door_" in p]
+    subject = _name_check(entry, data["joint"], articulated, "drawers and doors")
+    above = data.get("above", 0.0)
+    if isinstance(above, bool) or not isinstance(above, int | float) or not math.isfinite(above):
+        entry.fail(f"'above' must be a number (metres for drawers, radians for doors), got {above!r}")
+    return CheckSpec(kind, subject, above=float(above), negate=negate)
+
+
+def _load_task_world(entry: _Entry, world: str, base: Path) -> tuple[str, WorldSpec]:
+    """The world a task names: a packaged world, or a world file relative to the task file."""
+    candidate = base / world
+    reference = str(candidate.resolve()) if world.endswith((".yaml", ".yml", ".json")) else world
+    try:
+        return reference, load_world(reference)
+    except (WorldFileError, KeyError) as exc:
+        message = exc.args[0] if isinstance(exc, KeyError) and exc.args else str(exc)
+        entry.fail(f"world {world!r}: {message}")
+        raise  # unreachable: fail raises
+
+
+def _parse_task(source: str, index: int, data: Any, suite: str, base: Path, programs: Path) -> Task:
+    label = f"tasks[{index}]"
+    if isinstance(data, dict) and isinstance(data.get("id"), str):
+        label += f" {data['id']!r}"
+    entry = _Entry(source, label, data, _TASK_FIELDS)
+    task_id = entry.string("id")
+    if not _ID.match(task_id):
+        entry.fail(f"id {task_id!r} may hold letters, digits, '_', '.' and '-' only")
+    world_ref, world = _load_task_world(entry, entry.string("world"), base)
+    query = entry.string("query")
+    try:
+        names, instruction = parse_query(query)
+    except ValueError as exc:
+        entry.fail(f"query: {exc}")
+    if not instruction.strip():
+        entry.fail("query: the instruction after '; #' is empty")
+    valid = world.query_names()
+    missing = [n for n in names if n not in valid]
+    if missing:
+        listed = ", ".join(map(repr, missing))
+        entry.fail(f"query lists {listed}, not in world {world.name!r}; its names: {', '.join(valid)}")
+    checks = data.get("checks")
+    if not isinstance(checks, list) or not checks:
+        entry.fail("field 'checks' must be a non-empty list, e.g. [{in: [apple, footed_bowl]}]")
+    specs = tuple(_parse_check(source, f"{label}.checks[{k}]", c, world) for k, c in enumerate(checks))
+    label_in_source = entry.string("label", required=False)
+    return Task(task_id, suite, world_ref, query, specs, label_in_source, programs / f"{task_id}.py")
+
+
+def parse_suite(data: Any, source: str = "<memory>", base: Path | None = None) -> list[Task]:
+    """Validates a suite given as parsed YAML/JSON data; ``base`` is where relative world files and the reference
+    programs' folder are found (the file's own folder). Raises :class:`TaskFileError`."""
+    base = base or Path.cwd()
+    entry = _Entry(source, "suite", data, _SUITE_FIELDS)
+    suite = entry.string("suite")
+    if not _ID.match(suite):
+        entry.fail(f"suite {suite!r} may hold letters, digits, '_', '.' and '-' only")
+    items = data.get("tasks")
+    if not isinstance(items, list) or not items:
+        entry.fail("field 'tasks' must be a non-empty list of tasks")
+    tasks = [_parse_task(source, i, item, suite, base, base / suite) for i, item in enumerate(items)]
+    ids = [t.id for t in tasks]
+    repeated = sorted({i for i in ids if ids.count(i) > 1})
+    if repeated:
+        entry.fail(f"task ids must be unique; repeated: {', '.join(repeated)}")
+    return tasks
+
+
+def load_suite_file(path: str | Path) -> list[Task]:
+    """Reads and validates a ``.yaml``/``.yml``/``.json`` suite file."""
+    path = Path(path)
+    if not path.is_file():
+        raise TaskFileError(str(path), "file", "does not exist")
+    text = path.read_text()
+    try:
+        data = json.loads(text) if path.suffix == ".json" else load_yaml(text)
+    except (yaml.YAMLError, json.JSONDecodeError) as exc:
+        raise TaskFileError(str(path), "file", f"is not valid {path.suffix.lstrip('.').upper()}: {exc}") from exc
+    return parse_suite(data, str(path), path.parent.resolve())
+
+
+__all__ = [
+    "CHECK_KINDS",
+    "CheckSpec",
+    "Task",
+    "TaskFileError",
+    "load_suite_file",
+    "normalize_query",
+    "parse_query",
+    "parse_suite",
+]

@@ -1,0 +1,94 @@
+"""The table and the furniture are objects to every perception tool, in ground truth and from the cameras (as the
+original benchmark's queries list ``table`` and ``cabinet`` among the objects)."""
+
+import numpy as np
+import pytest
+
+from roboscript.api import Pose, ToolAPI
+from roboscript.backends.mujoco_backend import MujocoBackend
+
+MODES = ["gt", "gt-2d"]
+TABLE_TOP = 0.82
+
+
+@pytest.fixture(scope="module", params=MODES)
+def tools(request):
+    """world_5: a white and yellow mug beside a cabinet of three drawers above a door."""
+    backend = MujocoBackend("world_5_mug_to_cabinet", robot="panda", settle=0.5)
+    yield ToolAPI.for_simulation(backend, perception=request.param)
+    backend.close()
+
+
+def _cabinet_truth(tools) -> np.ndarray:
+    truth = tools.backend.ground_truth
+    return truth.box("cabinet").as_array()
+
+
+def test_the_name_list_begins_with_the_table_and_the_cabinet(tools):
+    tools.detect_objects()
+    names = tools.get_object_name_list()
+    assert names[:2] == ["table", "cabinet"]
+    assert "white_and_yellow_mug" in names and "cabinet.drawer_1" in names and "cabinet.handle_1" in names
+
+
+def test_bbox_and_centre_of_the_table_and_the_cabinet(tools):
+    table = tools.get_3d_bbox("table")
+    assert table[5] == pytest.approx(TABLE_TOP, abs=0.005)  # its top, where things stand
+    mug = tools.get_object_center_position("white_and_yellow_mug")
+    assert np.all(table[:2] < mug[:2]) and np.all(mug[:2] < table[3:5])  # the mug stands on it
+    cabinet = tools.get_object_center_position("cabinet")
+    truth = _cabinet_truth(tools)
+    assert np.all(cabinet > truth[:3]) and np.all(cabinet < truth[3:])
+    box = tools.get_3d_bbox("cabinet")
+    assert box[5] == pytest.approx(truth[5], abs=0.02) and box[2] > TABLE_TOP - 0.01
+
+
+def test_pose_of_the_table_and_the_cabinet(tools):
+    for name in ("table", "cabinet"):
+        pose = tools.get_object_pose(name)
+        assert isinstance(pose, Pose)
+        box = tools.get_3d_bbox(name)
+        assert box[0] - 0.01 <= pose.position.x <= box[3] + 0.01 and box[1] - 0.01 <= pose.position.y <= box[4] + 0.01
+
+
+def test_plane_normals_of_the_table_top_and_the_cabinet_front(tools):
+    mug = tools.get_object_center_position("white_and_yellow_mug")
+    up = tools.get_plane_normal("table", [mug[0] + 0.15, mug[1], TABLE_TOP])
+    np.testing.assert_allclose(up, [0.0, 0.0, 1.0], atol=0.05)
+    front = tools.get_3d_bbox("cabinet.drawer_1")
+    middle = [front[3], (front[1] + front[4]) / 2, (front[2] + front[5]) / 2]
+    normal = tools.get_plane_normal("cabinet.drawer_1", middle)
+    np.testing.assert_allclose(normal, [1.0, 0.0, 0.0], atol=0.05)
+
+
+def test_joint_info_of_the_cabinet_and_none_for_the_table(tools):
+    handle = tools.get_object_center_position("cabinet.handle_1")
+    joint = tools.get_object_joint_info("cabinet", handle, type="prismatic")
+    np.testing.assert_allclose(joint["joint_axis"], [1.0, 0.0, 0.0], atol=0.02)
+    with pytest.raises(ValueError, match="'table' has no joint"):
+        tools.get_object_joint_info("table", handle)
+
+
+def test_detecting_the_table_by_name_does_not_make_it_an_object(tools):
+    tools.detect_objects(category_list=["table", "cabinet", "white_and_yellow_mug"])
+    names = tools.get_object_name_list()
+    assert names.count("table") == 1 and "table" not in tools.perception.objects()
+
+
+def test_placing_on_the_table_puts_the_object_aside_on_its_top(tools):
+    """The mug, grasped and lifted, gets a place pose on the table: clear of where it was, at the table's height."""
+    tools.open_gripper()
+    start = tools.get_object_center_position("white_and_yellow_mug")
+    tools.grasp(tools.parse_adaptive_shape_grasp_pose("white_and_yellow_mug", preferred_approach_direction=[0, 0, -1]))
+    tools.close_gripper()
+    tools.attach_object("white_and_yellow_mug")
+    tools.move_in_direction([0, 0, 1], 0.1)
+    place = tools.parse_place_pose("white_and_yellow_mug", "table")
+    tools.move_to_pose(place)
+    tools.open_gripper()
+    tools.detach_object("white_and_yellow_mug")
+    tools.move_in_direction([0, 0, 1], 0.1)
+    tools.backend.wait(0.5)
+    truth = tools.backend.ground_truth.box("white_and_yellow_mug")
+    assert truth.lower[2] == pytest.approx(TABLE_TOP, abs=0.01)  # standing on the table
+    assert np.linalg.norm(truth.center[:2] - start[:2]) > 0.1  # somewhere else
