@@ -320,6 +320,7 @@ def _add_suite_option(parser: argparse.ArgumentParser) -> None:
 def _suite(text: str) -> str:
     """``--suite``: a packaged suite's name, or a suite file's path (made absolute for the trial processes)."""
     from roboscript.bench.tasks import load_suite, suite_path
+    from roboscript.datafile import names_a_file
 
     try:
         path = suite_path(text)
@@ -327,7 +328,7 @@ def _suite(text: str) -> str:
     except (KeyError, ValueError) as exc:
         message = exc.args[0] if isinstance(exc, KeyError) and exc.args else str(exc)
         raise argparse.ArgumentTypeError(message) from None
-    return str(path) if text.endswith((".yaml", ".yml", ".json")) or Path(text).is_file() else text
+    return str(path) if names_a_file(text) else text
 
 
 def _add_perception_option(parser: argparse.ArgumentParser) -> None:

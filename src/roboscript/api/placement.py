@@ -1,10 +1,10 @@
 """Where a held object can go: free spots inside a receptacle, on the table, or at a given position.
 
-Candidates are object positions (the centre of the object's box) with a yaw turn; the tool layer turns them into
-gripper poses and keeps the first one the arm can reach. A spot is free when the object's footprint, with a margin,
-stays inside the receptacle's interior and clear of every other object's footprint. Footprints are turned
-rectangles: a banana lying at 30 degrees covers a strip of a plate, while its world-aligned box would cover most
-of it.
+Candidates are object positions (the middle of the object's footprint, at its box's height) with a yaw turn; the
+tool layer turns them into gripper poses and keeps the first one the arm can reach. A spot is free when the
+object's footprint, with a margin, stays inside the receptacle's interior and clear of every other object's
+footprint. Footprints are turned rectangles: a banana lying at 30 degrees covers a strip of a plate, while its
+world-aligned box would cover most of it.
 """
 
 from __future__ import annotations
@@ -62,9 +62,10 @@ def gap(a: Footprint, b: Footprint) -> float:
 
 @dataclass(frozen=True)
 class PlacementSpot:
-    """The object's box centre after placement, and the yaw turn (radians) about world z from its present pose;
-    ``score`` orders spots (higher first). ``turns``: further turns about z the object may be given there (a spot
-    at a position does not care how the object faces; one squared to a receptacle may only be turned round)."""
+    """Where the middle of the object's footprint goes (its box's middle in height), and the yaw turn (radians)
+    about world z from its present pose; ``score`` orders spots (higher first). ``turns``: further turns about z
+    the object may be given there (a spot at a position does not care how the object faces; one squared to a
+    receptacle may only be turned round)."""
 
     center: np.ndarray
     yaw: float

@@ -310,45 +310,19 @@ class ToolAPI:
                 f"parse_place_pose needs {name!r} in the gripper (it holds {held}): grasp it, close_gripper() and "
                 f"attach_object({name!r}) first"
             )
-        tcp = self.backend.tcp_pose()
-        box = self.perception.box(name)
-        size = box.size
         others = [o for o in self.perception.objects() if o not in (name, receptacle_name)]
         if position is not None:
             target = _vector(position, "position")
-            table_top = float(self.perception.box(TABLE).upper[2])
-            below = [self.perception.box(o) for o in others]
-            support = max([table_top] + [b.upper[2] for b in below if _overlaps_xy(b, target[:2], size[:2] / 2)])
-            spots = [spot_at(target, size, support)]
-            where = f"at {np.round(target, 3).tolist()}"
+            spots, where = [self._spot_at(name, target, others)], f"at {np.round(target, 3).tolist()}"
         else:
             receptacle = self._receptacle(receptacle_name, name)
-            _, yaw, half = self.perception.footprint(name)
-            if receptacle_name == TABLE:  # aside: clear of objects and furniture, near but not where it was
-                obstacles = [self._footprint(o) for o in others]
-                obstacles += [Footprint.of_box(self.perception.box(n)) for n in self.perception.furniture()]
-                spots = spots_in_receptacle(
-                    receptacle, half, yaw, size[2], obstacles, self.base_xy, near_xy=box.center[:2]
-                )
-                # Also clear of whatever the cameras see there, known to perception or not.
-                radius = float(np.linalg.norm(half)) + MARGIN
-                spots = _clear_of(spots, self.perception.occupied([name]), radius, receptacle.lower[2])
-                spots = [s for s in spots if np.linalg.norm(s.center[:2] - box.center[:2]) > 0.15]
+            if receptacle_name == TABLE:
+                spots = self._spots_aside(name, receptacle, others)
             else:
-                held = [o for o in others if _within(self.perception.box(o), receptacle)]
-                # A drawer's front and walls stand high around a held object that may swing a little.
-                wall_margin = DRAWER_WALL_MARGIN if ".drawer_" in receptacle.name else MARGIN
-                spots = spots_in_receptacle(
-                    receptacle,
-                    half,
-                    yaw,
-                    size[2],
-                    [self._footprint(o) for o in held],
-                    self._fill_corner(receptacle),
-                    wall_margin=wall_margin,
-                )
+                spots = self._spots_in(name, receptacle, others)
             if not spots:
                 inside = [o for o in others if _within(self.perception.box(o), receptacle)]
+                size = self.perception.box(name).size
                 raise ReceptacleFullError(
                     f"{receptacle_name!r} has no free spot for {name!r} "
                     f"({size[0] * 100:.0f} x {size[1] * 100:.0f} cm); "
@@ -358,8 +332,38 @@ class ToolAPI:
         # Spots are where the middle of the object's footprint goes (for a curved banana lying turned, not the
         # middle of its world-aligned box): the hand turns about that.
         footprint_center = self.perception.footprint(name)[0]
-        pivot = np.array([footprint_center[0], footprint_center[1], box.center[2]])
-        return Pose.from_transform(self._reachable_place(name, tcp, pivot, spots, where))
+        pivot = np.array([footprint_center[0], footprint_center[1], self.perception.box(name).center[2]])
+        return Pose.from_transform(self._reachable_place(name, self.backend.tcp_pose(), pivot, spots, where))
+
+    def _spot_at(self, name: str, target: np.ndarray, others: list[str]) -> PlacementSpot:
+        """The held object at ``target``, resting on whatever is under it there (the table at least)."""
+        size = self.perception.box(name).size
+        below = [self.perception.box(o) for o in others]
+        table_top = float(self.perception.box(TABLE).upper[2])
+        support = max([table_top] + [b.upper[2] for b in below if _overlaps_xy(b, target[:2], size[:2] / 2)])
+        return spot_at(target, size, support)
+
+    def _spots_aside(self, name: str, table: Receptacle, others: list[str]) -> list[PlacementSpot]:
+        """Spots on the table for putting the held object aside: clear of objects, furniture and whatever the
+        cameras see there, near where it was but not on it."""
+        box = self.perception.box(name)
+        _, yaw, half = self.perception.footprint(name)
+        obstacles = [self._footprint(o) for o in others]
+        obstacles += [Footprint.of_box(self.perception.box(n)) for n in self.perception.furniture()]
+        spots = spots_in_receptacle(table, half, yaw, box.size[2], obstacles, self.base_xy, near_xy=box.center[:2])
+        radius = float(np.linalg.norm(half)) + MARGIN
+        spots = _clear_of(spots, self.perception.occupied([name]), radius, table.lower[2])
+        return [s for s in spots if np.linalg.norm(s.center[:2] - box.center[:2]) > 0.15]
+
+    def _spots_in(self, name: str, receptacle: Receptacle, others: list[str]) -> list[PlacementSpot]:
+        """Free spots for the held object in a container or a drawer, clear of what is already in it."""
+        _, yaw, half = self.perception.footprint(name)
+        inside = [self._footprint(o) for o in others if _within(self.perception.box(o), receptacle)]
+        # A drawer's front and walls stand high around a held object that may swing a little.
+        wall_margin = DRAWER_WALL_MARGIN if ".drawer_" in receptacle.name else MARGIN
+        height = self.perception.box(name).size[2]
+        corner = self._fill_corner(receptacle)
+        return spots_in_receptacle(receptacle, half, yaw, height, inside, corner, wall_margin=wall_margin)
 
     @tool
     def attach_object(self, object_name: str) -> None:
@@ -370,9 +374,16 @@ class ToolAPI:
         if name in self.perception.objects():
             self.motion.attach(name)
             self.perception.carried(name, self.backend.tcp_pose())
-        else:  # a drawer or door: it moves on its joint; the gripper may touch it and its handle
-            for part in self._part_family(name):
+        elif "." in name:  # a part of furniture (cabinet.drawer_1): it moves on its joint, or with its drawer
+            for part in self._part_family(name):  # the gripper may touch it and its handle
                 self.motion.scene.allow("gripper", part)
+        else:
+            movable = [n for n in self.perception.furniture() if "." in n]
+            raise ValueError(
+                f"{name!r} cannot be held: it does not move. Attach what the gripper holds: an object "
+                f"({', '.join(self.perception.objects()) or 'none'}) or a drawer or door, or its handle "
+                f"({', '.join(movable) or 'none'})"
+            )
         self._held.append(name)
         self._touch_allowed.add(name)
 
@@ -538,47 +549,58 @@ class ToolAPI:
         configuration chosen becomes the motion's goal for that pose (:meth:`MotionPlanner.prefer_goal`)."""
         q = self.motion.sync()
         tried: list[PlacementSpot] = []
-        first_error = ""
+        errors: list[str] = []
         fallback: tuple[Transform, np.ndarray] | None = None
         budget = PLACE_IK_BUDGET
         for spot in spots:
-            if any(np.linalg.norm(spot.center - t.center) < 0.05 and abs(spot.yaw - t.yaw) < 0.1 for t in tried):
+            if budget <= 0:
+                break
+            if any(np.linalg.norm(spot.center - t.center) < 0.05 and _same_turn(spot.yaw, t.yaw) for t in tried):
                 continue
             tried.append(spot)
             for lift in (0.0, 0.02, 0.05, 0.1):
-                leaving: list[tuple[Transform, np.ndarray]] = []
-                for turn in spot.turns:
-                    rotation = quat_to_matrix(quat_from_yaw(spot.yaw + turn))
-                    # Turning the held object about world z around its centre turns the gripper with it.
-                    position = spot.center + [0.0, 0.0, lift] + rotation @ (tcp.position - pivot)
-                    pose = Transform.from_rotation(position, rotation @ tcp.rotation)
-                    budget -= 1
-                    try:
-                        goals = self.motion.ik_choices(pose, q, attempts=8, max_attempts=24)
-                    except IKError as exc:
-                        first_error = first_error or str(exc)
-                        continue
-                    leaving += [(pose, g) for g in goals if self._can_retreat(pose, g)]
-                    fallback = fallback or (pose, goals[0])
+                reached = self._place_options(spot, lift, tcp, pivot, q, errors)
+                budget -= len(spot.turns)
+                fallback = fallback or next(((pose, goals[0]) for pose, goals in reached), None)
+                leaving = [(pose, g) for pose, goals in reached for g in goals if self._can_retreat(pose, g)]
                 if leaving:
                     pose, goal = min(leaving, key=lambda c: float(np.sum((c[1] - q) ** 2)))
                     self.motion.prefer_goal(pose, goal)
                     return pose
                 if budget <= 0:
                     break
-            if budget <= 0:
-                break
         if fallback is not None:
             self.motion.prefer_goal(*fallback)
             return fallback[0]
         raise PlacementError(
-            f"no reachable, collision-free pose puts {name!r} {where} ({len(tried)} spots tried): {first_error}"
+            f"no reachable, collision-free pose puts {name!r} {where} ({len(tried)} spots tried): "
+            f"{errors[0] if errors else 'no spot'}"
         )
 
+    def _place_options(
+        self, spot: PlacementSpot, lift: float, tcp: Transform, pivot: np.ndarray, q: np.ndarray, errors: list[str]
+    ) -> list[tuple[Transform, list[np.ndarray]]]:
+        """The gripper poses that put the held object at ``spot`` (``lift`` higher), one per turn it allows, with
+        their collision-free IK branches; the poses without any add their reason to ``errors``."""
+        out = []
+        for turn in spot.turns:
+            rotation = quat_to_matrix(quat_from_yaw(spot.yaw + turn))
+            # Turning the held object about world z around its middle turns the gripper with it.
+            position = spot.center + [0.0, 0.0, lift] + rotation @ (tcp.position - pivot)
+            pose = Transform.from_rotation(position, rotation @ tcp.rotation)
+            try:
+                out.append((pose, self.motion.ik_choices(pose, q, attempts=8, max_attempts=24)))
+            except IKError as exc:
+                errors.append(str(exc))
+        return out
+
     def _can_retreat(self, pose: Transform, q: np.ndarray) -> bool:
-        """Whether the arm at ``q`` (the TCP at ``pose``) can move straight up by :data:`PLACE_RETREAT`."""
+        """Whether the arm at ``q`` (the TCP at ``pose``) can move straight up by :data:`PLACE_RETREAT` once it has
+        let go (what it holds stays behind)."""
         up = Transform(pose.position + np.array([0.0, 0.0, PLACE_RETREAT]), pose.quaternion)
-        return cartesian_path(self.motion.kinematics, self.motion.scene, q, [up]).fraction >= 1.0
+        scene = self.motion.scene
+        with scene.ignoring_held():
+            return cartesian_path(self.motion.kinematics, scene, q, [up]).fraction >= 1.0
 
     def _allow_touch_near(self, point: np.ndarray) -> None:
         """Lets the fingers touch what lies at the goal (the object to be grasped); withdrawn once clear of it.
@@ -674,6 +696,11 @@ def _clear_of(spots: list, points: np.ndarray, radius: float, table_top: float) 
     if len(band) == 0:
         return spots
     return [s for s in spots if float(np.min(np.linalg.norm(band - s.center[:2], axis=1))) > radius]
+
+
+def _same_turn(a: float, b: float) -> bool:
+    """Whether two yaw turns face the same way, or opposite ways (a spot tried both ways round already)."""
+    return abs(math.remainder(a - b, math.pi)) < 0.1
 
 
 def _overlaps_xy(box: Box3D, center: np.ndarray, half: np.ndarray) -> bool:

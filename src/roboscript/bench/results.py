@@ -83,9 +83,10 @@ class RunDirectory:
     """The files of one benchmark run; reopening it resumes the run."""
 
     # Settings that must match for a run to be resumed (a missing one counts as its default: runs from before it).
+    # A run from before there were suites ran what is now the cluttered suite.
     FIXED: ClassVar[dict[str, object]] = {
         "policy": None,
-        "suite": "paper",
+        "suite": "cluttered",
         "robot": None,
         "seed": None,
         "perception": None,
@@ -181,7 +182,7 @@ def markdown_table(summary: dict) -> str:
     tasks = list(summary["tasks"])
     run = summary["provenance"]
     header = (
-        f"Suite `{run.get('suite', 'paper')}`, policy `{run['policy']}`, robot `{run['robot']}`, "
+        f"Suite `{run.get('suite', 'cluttered')}`, policy `{run['policy']}`, robot `{run['robot']}`, "
         f"perception `{run['perception']}`\n\n"
     )
     lines = ["| Metric | " + " | ".join(tasks) + " |", "|---|" + "---|" * len(tasks)]

@@ -7,9 +7,10 @@ generated-code format; a ``.json`` file is in that format: a list of entries wit
 - ``code_str``: the program,
 - ``src_fs``: a mapping from a function's name to the source generated for it (optional).
 
-The program is the functions of ``src_fs`` followed by ``code_str``. An entry is matched to its task by its query,
-compared without a leading ``#``, trailing periods and spaces, and case (the original's stored queries end with
-``.`` or ``..``). Entries and files that match no task are reported, not run.
+The program is the functions of ``src_fs`` followed by ``code_str``. An entry is matched to its task by its query:
+the same names, quoted or not, and the same instruction, compared without trailing periods and spaces and without
+case (the original's stored queries begin with ``# `` and end with ``.`` or ``..``). Entries and files that match
+no task are reported, not run.
 """
 
 from __future__ import annotations
@@ -18,7 +19,7 @@ import json
 from dataclasses import dataclass
 from pathlib import Path
 
-from roboscript.bench.task_file import Task, normalize_query
+from roboscript.bench.task_file import Task, query_key
 
 PREFIX = "programs:"
 
@@ -80,19 +81,23 @@ def _entries(path: Path) -> list[tuple[str, str, str]]:
         query, code = entry.get("query"), entry.get("code_str")
         functions = entry.get("src_fs") or {}
         if not isinstance(query, str) or not query.strip():
-            raise StoredProgramsError(f"{where}: 'query' must be the task query the program was written for")
+            raise StoredProgramsError(
+                f"{where}: 'query' must be the task query the program was written for, got {query!r}"
+            )
         if not isinstance(code, str):
             raise StoredProgramsError(f"{where}: 'code_str' must be the program's source, got {code!r}")
         if not isinstance(functions, dict) or not all(
             isinstance(k, str) and isinstance(v, str) for k, v in functions.items()
         ):
-            raise StoredProgramsError(f"{where}: 'src_fs' must map function names to their source code")
+            shown = repr(functions)[:120]
+            raise StoredProgramsError(f"{where}: 'src_fs' must map function names to their source code, got {shown}")
         out.append((f"{path}[{i}]", query, compose(code, functions)))
     return out
 
 
 def load_program_store(path: str | Path, tasks: dict[str, Task]) -> ProgramStore:
-    """The programs that ``path`` (a folder, or a generated-code ``.json`` file) holds for ``tasks``."""
+    """The programs that ``path`` (a folder, or a generated-code ``.json`` file) holds for ``tasks``. In a
+    folder, a ``.json`` file that is not in the generated-code format is reported and passed over."""
     path = Path(path)
     if path.is_dir():
         files = sorted(p for p in path.iterdir() if p.suffix in (".py", ".json"))
@@ -102,7 +107,14 @@ def load_program_store(path: str | Path, tasks: dict[str, Task]) -> ProgramStore
         raise StoredProgramsError(
             f"{path} is neither a folder of <task_id>.py or .json files nor a .json file of generated code"
         )
-    by_query = {normalize_query(t.query): t.id for t in tasks.values()}
+    by_query: dict[tuple[tuple[str, ...], str], str] = {}
+    for task in tasks.values():
+        key = query_key(task.query)
+        if key in by_query:
+            raise StoredProgramsError(
+                f"tasks {by_query[key]} and {task.id} ask the same query, so a stored program cannot tell them apart"
+            )
+        by_query[key] = task.id
     found: dict[str, StoredProgram] = {}
     unmatched: list[str] = []
 
@@ -118,8 +130,15 @@ def load_program_store(path: str | Path, tasks: dict[str, Task]) -> ProgramStore
             else:
                 unmatched.append(f"{file} (no task {file.stem!r})")
             continue
-        for source, query, program in _entries(file):
-            task = by_query.get(normalize_query(query))
+        try:
+            entries = _entries(file)
+        except StoredProgramsError as exc:
+            if len(files) == 1 and file == path:
+                raise
+            unmatched.append(f"{file} (not in the generated-code format: {exc})")
+            continue
+        for source, query, program in entries:
+            task = by_query.get(query_key(query))
             if task is None:
                 unmatched.append(f"{source} (its query matches no task: {query.strip()[:80]!r})")
             else:

@@ -26,20 +26,17 @@ lacks, a check on an object that is not there or in something that holds nothing
 from __future__ import annotations
 
 import difflib
-import json
-import math
 import re
 from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
 
-import yaml
-
 from roboscript.bench.checks import Check
 from roboscript.codegen.prompt import task_query
+from roboscript.datafile import DataFileError, Reader, names_a_file, read_data_file
 from roboscript.sim.ground_truth import GroundTruth
 from roboscript.sim.world_catalog import load_world
-from roboscript.sim.world_file import TABLE_NAME, WorldFileError, WorldSpec, load_yaml
+from roboscript.sim.world_file import TABLE_NAME, WorldFileError, WorldSpec
 
 CHECK_KINDS = ("in", "on", "at", "joint")
 _QUERY = re.compile(r"^\s*#?\s*objects\s*=\s*\[(?P<names>[^\]]*)\]\s*;\s*#\s?(?P<instruction>.*)$", re.DOTALL)
@@ -48,12 +45,10 @@ _SUITE_FIELDS = {"suite", "description", "source", "tasks"}
 _TASK_FIELDS = {"id", "label", "world", "query", "checks"}
 
 
-class TaskFileError(ValueError):
+class TaskFileError(DataFileError):
     """A task file that cannot be loaded; the message names the file, the entry and the problem."""
 
-    def __init__(self, source: str, entry: str, problem: str):
-        self.source, self.entry, self.problem = source, entry, problem
-        super().__init__(f"task file {source}: {entry}: {problem}")
+    kind = "task"
 
 
 @dataclass(frozen=True)
@@ -140,46 +135,26 @@ def parse_query(query: str) -> tuple[list[str], str]:
     return [n for n in names if n], match["instruction"]
 
 
-def normalize_query(query: str) -> str:
-    """A query as stored programs are matched to tasks by: without a leading ``#``, trailing periods and spaces,
-    in lower case with single spaces (the original's eval items end its queries with ``.``, its programs ``..``)."""
-    text = " ".join(query.strip().lstrip("#").split()).lower()
-    return text.rstrip(". ")
+def query_key(query: str) -> tuple[tuple[str, ...], str] | None:
+    """What two queries are compared by (a stored program's and a task's): the names, quoted or not, and the
+    instruction without trailing periods and spaces, in lower case with single spaces (the original's eval items
+    end its queries with ``.``, its stored programs with ``..``); None for text that is no query."""
+    try:
+        names, instruction = parse_query(query)
+    except ValueError:
+        return None
+    return tuple(names), " ".join(instruction.split()).lower().rstrip(". ")
 
 
 # ---------------------------------------------------------------------------------------------------------------
 # Parsing
 
 
-class _Entry:
-    """Typed access to one mapping of a task file, with errors that say where."""
-
-    def __init__(self, source: str, entry: str, data: Any, allowed: set[str]):
-        self.source, self.entry = source, entry
-        if not isinstance(data, dict):
-            self.fail(f"expected a mapping, got {type(data).__name__} {data!r}")
-        unknown = sorted(str(k) for k in set(data) - allowed)
-        if unknown:
-            close = difflib.get_close_matches(unknown[0], allowed, n=1)
-            hint = f" (did you mean {close[0]!r}?)" if close else ""
-            self.fail(f"unknown field {unknown[0]!r}{hint}; valid fields: {', '.join(sorted(allowed))}")
-        self.data = data
-
-    def fail(self, problem: str):
-        raise TaskFileError(self.source, self.entry, problem)
-
-    def string(self, key: str, required: bool = True) -> str:
-        if key not in self.data:
-            if required:
-                self.fail(f"missing required field {key!r}")
-            return ""
-        value = self.data[key]
-        if not isinstance(value, str) or not value.strip():
-            self.fail(f"field {key!r} must be a non-empty string, got {value!r}")
-        return value
+def _entry(source: str, entry: str, data: Any, allowed: set[str]) -> Reader:
+    return Reader(source, entry, data, allowed, TaskFileError)
 
 
-def _name_check(entry: _Entry, name: object, valid: list[str], kinds: str) -> str:
+def _name_check(entry: Reader, name: object, valid: list[str], kinds: str) -> str:
     """``name`` if it is one of ``valid`` (the world's ``kinds``), else the entry fails naming the valid ones."""
     if not isinstance(name, str) or name not in valid:
         close = difflib.get_close_matches(str(name), valid, n=3, cutoff=0.5)
@@ -188,7 +163,7 @@ def _name_check(entry: _Entry, name: object, valid: list[str], kinds: str) -> st
     return name
 
 
-def _pair(entry: _Entry, kind: str) -> tuple[str, str]:
+def _pair(entry: Reader, kind: str) -> tuple[str, str]:
     value = entry.data[kind]
     if not (isinstance(value, list) and len(value) == 2):
         entry.fail(f"'{kind}' takes [object, receptacle], e.g. {kind}: [apple, footed_bowl]; got {value!r}")
@@ -213,57 +188,61 @@ def _parse_check(source: str, entry_name: str, data: Any, world: WorldSpec) -> C
         )
     kind = kinds[0]
     extra = {"in": set(), "on": set(), "at": {"start_of", "position"}, "joint": {"above"}}[kind]
-    entry = _Entry(source, entry_name, data, {kind, "not", *extra})
+    entry = _entry(source, entry_name, data, {kind, "not", *extra})
     negate = data.get("not", False)
     if not isinstance(negate, bool):
         entry.fail(f"field 'not' must be true or false, got {negate!r}")
+    parse = {"in": _relation_check, "on": _relation_check, "at": _at_check, "joint": _joint_check}[kind]
+    return parse(entry, kind, world, negate)
+
+
+def _relation_check(entry: Reader, kind: str, world: WorldSpec, negate: bool) -> CheckSpec:
+    """``in: [object, container or drawer]`` or ``on: [object, object or the table]``."""
+    subject, target = _pair(entry, kind)
+    _name_check(entry, subject, world.object_names(), "objects")
+    kinds = "containers and drawers" if kind == "in" else "objects and the table"
+    _name_check(entry, target, _receptacles(world, kind), kinds)
+    if subject == target:
+        entry.fail(f"an object cannot be {kind} itself: {subject!r}")
+    return CheckSpec(kind, subject, target, negate=negate)
+
+
+def _at_check(entry: Reader, kind: str, world: WorldSpec, negate: bool) -> CheckSpec:
+    """``{at: object, start_of: other}`` or ``{at: object, position: [x, y, z]}``."""
     objects = world.object_names()
-    if kind in ("in", "on"):
-        subject, target = _pair(entry, kind)
-        _name_check(entry, subject, objects, "objects")
-        kinds = "containers and drawers" if kind == "in" else "objects and the table"
-        _name_check(entry, target, _receptacles(world, kind), kinds)
-        if subject == target:
-            entry.fail(f"an object cannot be {kind} itself: {subject!r}")
-        return CheckSpec(kind, subject, target, negate=negate)
-    if kind == "at":
-        subject = _name_check(entry, data["at"], objects, "objects")
-        if ("start_of" in data) == ("position" in data):
-            entry.fail("'at' takes either start_of: OBJECT (where it was at the start) or position: [x, y, z]")
-        if "start_of" in data:
-            start = _name_check(entry, data["start_of"], objects, "objects")
-            return CheckSpec(kind, subject, start_of=start, negate=negate)
-        position = data["position"]
-        ok = isinstance(position, list) and len(position) == 3
-        ok = ok and all(isinstance(v, int | float) and not isinstance(v, bool) and math.isfinite(v) for v in position)
-        if not ok:
-            entry.fail(f"'position' must be 3 numbers [x, y, z] in metres, got {position!r}")
-        return CheckSpec(kind, subject, position=tuple(float(v) for v in position), negate=negate)
+    subject = _name_check(entry, entry.data["at"], objects, "objects")
+    if ("start_of" in entry.data) == ("position" in entry.data):
+        entry.fail("'at' takes either start_of: OBJECT (where it was at the start) or position: [x, y, z]")
+    if "start_of" in entry.data:
+        start = _name_check(entry, entry.data["start_of"], objects, "objects")
+        return CheckSpec(kind, subject, start_of=start, negate=negate)
+    return CheckSpec(kind, subject, position=entry.vector("position", (3,)), negate=negate)
+
+
+def _joint_check(entry: Reader, kind: str, world: WorldSpec, negate: bool) -> CheckSpec:
+    """``{joint: drawer or door, above: value}``: opened beyond ``value`` metres (radians for a door)."""
     articulated = [p for p in world.part_names() if ".drawer_" in p or ".door_" in p]
-    subject = _name_check(entry, data["joint"], articulated, "drawers and doors")
-    above = data.get("above", 0.0)
-    if isinstance(above, bool) or not isinstance(above, int | float) or not math.isfinite(above):
-        entry.fail(f"'above' must be a number (metres for drawers, radians for doors), got {above!r}")
-    return CheckSpec(kind, subject, above=float(above), negate=negate)
+    subject = _name_check(entry, entry.data["joint"], articulated, "drawers and doors")
+    if "above" not in entry.data:
+        entry.fail("'joint' takes above: VALUE, how far it must be open (metres for a drawer, radians for a door)")
+    return CheckSpec(kind, subject, above=entry.number("above"), negate=negate)
 
 
-def _load_task_world(entry: _Entry, world: str, base: Path) -> tuple[str, WorldSpec]:
+def _load_task_world(entry: Reader, world: str, base: Path) -> tuple[str, WorldSpec]:
     """The world a task names: a packaged world, or a world file relative to the task file."""
-    candidate = base / world
-    reference = str(candidate.resolve()) if world.endswith((".yaml", ".yml", ".json")) else world
+    reference = str((base / world).resolve()) if names_a_file(world) else world
     try:
         return reference, load_world(reference)
     except (WorldFileError, KeyError) as exc:
         message = exc.args[0] if isinstance(exc, KeyError) and exc.args else str(exc)
         entry.fail(f"world {world!r}: {message}")
-        raise  # unreachable: fail raises
 
 
-def _parse_task(source: str, index: int, data: Any, suite: str, base: Path, programs: Path) -> Task:
+def _parse_task(source: str, index: int, data: Any, suite: str, base: Path, programs: Path | None) -> Task:
     label = f"tasks[{index}]"
     if isinstance(data, dict) and isinstance(data.get("id"), str):
         label += f" {data['id']!r}"
-    entry = _Entry(source, label, data, _TASK_FIELDS)
+    entry = _entry(source, label, data, _TASK_FIELDS)
     task_id = entry.string("id")
     if not _ID.match(task_id):
         entry.fail(f"id {task_id!r} may hold letters, digits, '_', '.' and '-' only")
@@ -284,22 +263,26 @@ def _parse_task(source: str, index: int, data: Any, suite: str, base: Path, prog
     if not isinstance(checks, list) or not checks:
         entry.fail("field 'checks' must be a non-empty list, e.g. [{in: [apple, footed_bowl]}]")
     specs = tuple(_parse_check(source, f"{label}.checks[{k}]", c, world) for k, c in enumerate(checks))
-    label_in_source = entry.string("label", required=False)
-    return Task(task_id, suite, world_ref, query, specs, label_in_source, programs / f"{task_id}.py")
+    label_in_source = entry.text("label")
+    reference = programs / f"{task_id}.py" if programs is not None else None
+    return Task(task_id, suite, world_ref, query, specs, label_in_source, reference)
 
 
 def parse_suite(data: Any, source: str = "<memory>", base: Path | None = None) -> list[Task]:
     """Validates a suite given as parsed YAML/JSON data; ``base`` is where relative world files and the reference
-    programs' folder are found (the file's own folder). Raises :class:`TaskFileError`."""
-    base = base or Path.cwd()
-    entry = _Entry(source, "suite", data, _SUITE_FIELDS)
+    programs' folder are found (the file's own folder; without one, the tasks have no reference programs).
+    Raises :class:`TaskFileError`."""
+    entry = _entry(source, "suite", data, _SUITE_FIELDS)
     suite = entry.string("suite")
+    for optional in ("description", "source"):
+        entry.text(optional)  # optional, but text where it is given
     if not _ID.match(suite):
         entry.fail(f"suite {suite!r} may hold letters, digits, '_', '.' and '-' only")
     items = data.get("tasks")
     if not isinstance(items, list) or not items:
         entry.fail("field 'tasks' must be a non-empty list of tasks")
-    tasks = [_parse_task(source, i, item, suite, base, base / suite) for i, item in enumerate(items)]
+    programs = base / suite if base is not None else None
+    tasks = [_parse_task(source, i, item, suite, base or Path.cwd(), programs) for i, item in enumerate(items)]
     ids = [t.id for t in tasks]
     repeated = sorted({i for i in ids if ids.count(i) > 1})
     if repeated:
@@ -310,14 +293,7 @@ def parse_suite(data: Any, source: str = "<memory>", base: Path | None = None) -
 def load_suite_file(path: str | Path) -> list[Task]:
     """Reads and validates a ``.yaml``/``.yml``/``.json`` suite file."""
     path = Path(path)
-    if not path.is_file():
-        raise TaskFileError(str(path), "file", "does not exist")
-    text = path.read_text()
-    try:
-        data = json.loads(text) if path.suffix == ".json" else load_yaml(text)
-    except (yaml.YAMLError, json.JSONDecodeError) as exc:
-        raise TaskFileError(str(path), "file", f"is not valid {path.suffix.lstrip('.').upper()}: {exc}") from exc
-    return parse_suite(data, str(path), path.parent.resolve())
+    return parse_suite(read_data_file(path, TaskFileError), str(path), path.parent.resolve())
 
 
 __all__ = [
@@ -326,7 +302,7 @@ __all__ = [
     "Task",
     "TaskFileError",
     "load_suite_file",
-    "normalize_query",
     "parse_query",
     "parse_suite",
+    "query_key",
 ]

@@ -14,6 +14,7 @@ from pathlib import Path
 
 from roboscript.bench.task_file import Task, TaskFileError, load_suite_file
 from roboscript.codegen.prompt import task_query
+from roboscript.datafile import names_a_file
 from roboscript.sim.world_catalog import load_world
 
 DEFAULT_SUITE = "paper"
@@ -32,7 +33,7 @@ def suite_names() -> list[str]:
 
 def suite_path(suite: str) -> Path:
     """The file of a packaged suite, or ``suite`` itself when it is a suite file's path."""
-    if suite.endswith((".yaml", ".yml", ".json")) or Path(suite).is_file():
+    if names_a_file(suite):
         return Path(suite).resolve()
     path = _suite_dir() / f"{suite}.yaml"
     if not path.is_file():

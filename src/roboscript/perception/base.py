@@ -79,7 +79,8 @@ class Perception(ABC):
 
     @abstractmethod
     def detect(self, categories: list[str] | None = None) -> None:
-        """Looks at the scene and updates what is known (a no-op in ground-truth mode)."""
+        """Looks at the scene and updates what is known (in ground truth, only what the cameras show of each
+        object, for grasp detection: the rest is read from the simulator's state when asked)."""
 
     @abstractmethod
     def names(self) -> list[str]:

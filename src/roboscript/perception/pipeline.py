@@ -157,7 +157,9 @@ class PipelinePerception(Perception):
         self._asked += [p for p in phrases if p not in self._asked]
         self._joints.clear()
         table = table_surface(seen.scene.points, seen.scene.normals, seen.support)
-        if table is not None:  # the table is no phrase a detector is asked for: it is the plane things stand on
+        # The table is no phrase a detector is asked for: it is the plane things stand on. It does not move, so
+        # the look that saw most of it (the least hidden by the arm and by objects) stands for it.
+        if table is not None and (TABLE not in self.parts_seen or len(table[0]) > len(self.parts_seen[TABLE].points)):
             self.parts_seen[TABLE] = ObjectPoints(*table)
             self._part_look[TABLE] = self.looks
             self._table_height = seen.support

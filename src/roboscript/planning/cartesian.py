@@ -13,7 +13,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from roboscript.geometry import Transform, quat_from_axis_angle, rotation_angle_between
-from roboscript.planning.kinematics import ArmKinematics, IKResult
+from roboscript.planning.kinematics import ArmKinematics
 from roboscript.planning.planner import densify, first_collision
 from roboscript.planning.scene import PlanningScene
 
@@ -109,17 +109,18 @@ def cartesian_path(
     for target in targets:
         result = kinematics.solve(target, q, max_iterations=30)
         reason = ""
+        steps = [result.q]
         if result.converged and float(np.max(np.abs(result.q - q))) > jump_threshold:
             # A fast but continuous turn (a wrist near a singularity) passes in smaller steps; a flip to another
             # branch jumps however small the step.
-            result = _in_smaller_steps(kinematics, previous, target, q, jump_threshold) or result
+            steps = _in_smaller_steps(kinematics, previous, target, q, jump_threshold) or steps
         if not result.converged:
             reason = f"no IK solution at [{', '.join(f'{v:.3f}' for v in target.position)}]"
-        elif float(np.max(np.abs(result.q - q))) > jump_threshold:
+        elif len(steps) == 1 and float(np.max(np.abs(result.q - q))) > jump_threshold:
             j = int(np.argmax(np.abs(result.q - q)))
             reason = f"joint {j + 1} would jump {abs(result.q[j] - q[j]):.2f} rad (near a singularity or a joint limit)"
         elif scene is not None:
-            points = densify(np.array([q, result.q]), scene.lever_arms, scene.padding)
+            points = densify(np.array([q, *steps]), scene.lever_arms, scene.padding)
             index = first_collision(scene, points)
             if index >= 0:
                 pairs = scene.collisions(points[index])
@@ -131,8 +132,8 @@ def cartesian_path(
             return CartesianResult(np.array(waypoints), achieved / total if total > 0 else 0.0, reason)
         achieved += _step_measure(previous, target)
         previous = target
-        q = result.q
-        waypoints.append(q)
+        waypoints.extend(steps)
+        q = steps[-1]
     return CartesianResult(np.array(waypoints), 1.0)
 
 
@@ -141,16 +142,17 @@ SUBSTEPS = 5
 
 def _in_smaller_steps(
     kinematics: ArmKinematics, start: Transform, target: Transform, q: np.ndarray, jump_threshold: float
-) -> IKResult | None:
-    """IK at ``target`` reached from ``q`` through :data:`SUBSTEPS` smaller steps, each moving no joint more
-    than half ``jump_threshold``; None if a step jumps (a branch flip, not a fast turn)."""
-    result = None
+) -> list[np.ndarray] | None:
+    """Configurations from ``q`` to ``target`` through :data:`SUBSTEPS` smaller steps, none moving a joint more
+    than half ``jump_threshold``; None if a step jumps (a branch flip, not a fast turn) or IK fails."""
+    steps = []
     for pose in interpolate_poses(start, target, np.inf, np.inf, SUBSTEPS):
         result = kinematics.solve(pose, q, max_iterations=30)
         if not result.converged or float(np.max(np.abs(result.q - q))) > jump_threshold / 2:
             return None
         q = result.q
-    return result
+        steps.append(q)
+    return steps
 
 
 def _step_measure(a: Transform, b: Transform) -> float:

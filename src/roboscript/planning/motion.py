@@ -15,6 +15,7 @@ from roboscript.geometry import Transform
 from roboscript.planning.cartesian import CartesianResult, arc_poses, cartesian_path
 from roboscript.planning.errors import (
     CartesianPathIncompleteError,
+    IKError,
     PlannerTimeoutError,
     PlanningError,
     TrackingError,
@@ -138,6 +139,9 @@ class MotionPlanner:
         q = self.backend.joint_positions()
         for name in old.attached:
             fresh.attach(name, q)
+        for a, b in old.leaving_names():  # measured anew in the new scene, where the surfaces may differ a little
+            if fresh.has(a) and fresh.has(b):
+                fresh.allow_leaving(a, b, q)
         self._scene = fresh
         self._planner = JointPlanner(fresh)
 
@@ -169,13 +173,16 @@ class MotionPlanner:
         a path that exists is then found on a busy machine too. While the gripper holds something, the path is a
         transfer (:mod:`roboscript.planning.transfer`) where one can be found."""
         name, budget = planner or self.default_planner, timeout or self.planning_timeout
+        transfer = bool(self.scene.attached)  # carried clear of everything where that can be done
         for attempt in range(PLANNING_ATTEMPTS):
             goal, limit = goals[attempt % len(goals)], budget * 2**attempt
-            if self.scene.attached:  # carried clear of everything where that can be done
+            if transfer:
                 try:
                     return plan_transfer(self.planner, self.kinematics, start, goal, name, limit)
-                except PlanningError:
+                except PlannerTimeoutError:
                     pass
+                except PlanningError:  # no room to come clear at one end: an ordinary path, from now on
+                    transfer = False
             try:
                 return self.planner.plan(start, goal, name, limit)
             except PlannerTimeoutError as exc:
@@ -209,7 +216,7 @@ class MotionPlanner:
     ) -> tuple[np.ndarray, np.ndarray | None]:
         """A configuration at ``target`` and a straight approach to it from ``distance`` back along the TCP's z:
         the first of :meth:`straight_approaches`."""
-        return self.straight_approaches(target, distance, reference, attempts, max_attempts, branches)[0]
+        return self.straight_approaches(target, distance, reference, attempts, max_attempts, branches, first=True)[0]
 
     def straight_approaches(
         self,
@@ -219,6 +226,7 @@ class MotionPlanner:
         attempts: int = 16,
         max_attempts: int = 150,
         branches: int = 4,
+        first: bool = False,
     ) -> list[tuple[np.ndarray, np.ndarray | None]]:
         """Configurations at ``target``, each with a straight approach to it from ``distance`` back along the
         TCP's z, nearest ``reference`` first.
@@ -227,8 +235,8 @@ class MotionPlanner:
         target's own IK branch: a configuration solved for the start of the line on its own may sit on another
         branch, from which no straight line leads to the target. Near a singularity (the hand above the base)
         some branches cannot follow the line at all, so up to ``branches`` IK solutions are tried. Returns those
-        whose line is clear, with its joint waypoints; or, when every line is blocked, the nearest solution with
-        None. Raises :class:`IKError` if ``target`` has no solution.
+        whose line is clear (with ``first``, the first such), with its joint waypoints; or, when every line is
+        blocked, the nearest solution with None. Raises :class:`IKError` if ``target`` has no solution.
         """
         reference = self.backend.joint_positions() if reference is None else reference
         solutions = ik_solutions(self.kinematics, target, reference, self.scene, attempts, max_attempts, branches)
@@ -238,6 +246,8 @@ class MotionPlanner:
             line = cartesian_path(self.kinematics, self.scene, q, [start])
             if line.fraction >= 1.0:
                 found.append((q, line.waypoints[::-1].copy()))
+                if first:
+                    break
         return found or [(solutions[0], None)]
 
     def move_to_any(self, goals: Sequence[np.ndarray], planner: str | None = None) -> int:
@@ -248,24 +258,35 @@ class MotionPlanner:
         return int(np.argmin([float(np.max(np.abs(path.goal - g))) for g in goals]))
 
     def prefer_goal(self, pose: Transform, q: np.ndarray) -> None:
-        """Makes ``q`` the goal of a planned motion to ``pose`` (a place pose chosen because the hand can leave it
-        from ``q``), where the IK nearest the start would otherwise decide."""
+        """Makes ``q`` the goal of the next motion to ``pose`` (a place pose chosen because the hand can leave it
+        from ``q``), where the IK nearest the start would otherwise decide. It holds for one motion, and until the
+        gripper lets go of what it holds."""
         self._preferred = [*self._preferred[-7:], (pose, np.asarray(q, dtype=float).copy())]
 
-    def _preferred_for(self, pose: Transform) -> np.ndarray | None:
+    def _preferred_for(self, pose: Transform, consume: bool = False) -> np.ndarray | None:
         """The configuration preferred for ``pose``, if one was chosen and is still free of collisions."""
-        for known, q in reversed(self._preferred):
+        for k in range(len(self._preferred) - 1, -1, -1):
+            known, q = self._preferred[k]
             same_place = np.linalg.norm(known.position - pose.position) < 1e-4
-            if same_place and np.allclose(known.quaternion, pose.quaternion, atol=1e-4):
+            if same_place and abs(float(np.dot(known.quaternion, pose.quaternion))) > 1 - 1e-8:
+                if consume:
+                    del self._preferred[k]
                 return q if self.scene.is_valid(q) else None
         return None
 
     def plan_to_pose(self, pose: Transform, planner: str | None = None, timeout: float | None = None) -> JointPath:
+        """A planned path to ``pose``: to the configuration preferred for it, if one is (tried twice), then to
+        other IK branches."""
         start = self.sync()
         preferred = self._preferred_for(pose)
-        goals = ik_solutions(self.kinematics, pose, start, self.scene, wanted_solutions=PLANNING_ATTEMPTS)
+        try:
+            goals = ik_solutions(self.kinematics, pose, start, self.scene, wanted_solutions=PLANNING_ATTEMPTS)
+        except IKError:
+            if preferred is None:
+                raise
+            goals = []
         if preferred is not None:
-            goals = [preferred, *goals]
+            goals = [preferred, preferred, *goals]
         return self._plan(start, goals, planner, timeout)
 
     def cartesian(self, poses: Sequence[Transform], eef_step: float = 0.005) -> CartesianResult:
@@ -292,13 +313,13 @@ class MotionPlanner:
         """A straight line when it is feasible in full and ends in the configuration preferred for ``pose`` (if
         one is), else a planned collision-free motion."""
         line = self.cartesian([pose])
-        if line.fraction >= 1.0 and self._ends_as_preferred(pose, line.waypoints[-1]):
-            return self.execute(line.waypoints)
-        return self.execute(self.plan_to_pose(pose, planner))
-
-    def _ends_as_preferred(self, pose: Transform, q: np.ndarray) -> bool:
         preferred = self._preferred_for(pose)
-        return preferred is None or bool(np.max(np.abs(q - preferred)) < 0.2)
+        if line.fraction >= 1.0 and (preferred is None or np.max(np.abs(line.waypoints[-1] - preferred)) < 0.2):
+            path = line.waypoints
+        else:
+            path = self.plan_to_pose(pose, planner)
+        self._preferred_for(pose, consume=True)
+        return self.execute(path)
 
     def follow(self, poses: Sequence[Transform], min_fraction: float = 1.0) -> ExecutionReport:
         """Executes a Cartesian path through ``poses``; raises if less than ``min_fraction`` is achievable."""
@@ -340,4 +361,5 @@ class MotionPlanner:
 
     def detach(self, name: str) -> None:
         self.scene.detach(name)
+        self._preferred.clear()  # chosen for placing what was held
         self.sync()

@@ -24,6 +24,7 @@ import numpy as np
 from roboscript.geometry import Transform
 from roboscript.sim.world import RobotBinding, SimWorld, is_descendant
 
+REGRASP_LIMIT = 0.05  # metres a held object may have shifted in the hand and still be where the scene holds it
 LEAVING_TOLERANCE = 0.002  # metres a contact being left may go deeper than it started (or than touching)
 
 # contype/conaffinity bits. Two geoms collide if the type of either shares a bit with the affinity of the other.
@@ -156,14 +157,17 @@ class PlanningScene:
                         self._allowed[body, other] = self._allowed[other, body] = False
 
     def _regrasp(self, qpos: np.ndarray) -> None:
-        """Each attachment's pose relative to the TCP as ``qpos`` has the object and the arm."""
+        """Each attachment's pose relative to the TCP as ``qpos`` has the object and the arm, where the object has
+        only shifted in the hand (less than :data:`REGRASP_LIMIT`): one that fell out is not carried along."""
         mujoco.mj_kinematics(self.model, self.data)
         site = self.robot.tcp_site
         tcp = Transform.from_rotation(self.data.site_xpos[site], self.data.site_xmat[site].reshape(3, 3))
         for name, attachment in self._attached.items():
             body = attachment.body
             pose = Transform.from_rotation(self.data.xpos[body], self.data.xmat[body].reshape(3, 3))
-            self._attached[name] = Attachment(name, body, tcp.inverse().compose(pose).matrix())
+            in_hand = tcp.inverse().compose(pose).matrix()
+            if np.linalg.norm(in_hand[:3, 3] - attachment.tcp_to_object[:3, 3]) < REGRASP_LIMIT:
+                self._attached[name] = Attachment(name, body, in_hand)
 
     def arm_positions(self) -> np.ndarray:
         return self.data.qpos[self._qpos].copy()
@@ -291,6 +295,18 @@ class PlanningScene:
         return list(self._attached)
 
     @contextlib.contextmanager
+    def ignoring_held(self) -> Iterator[None]:
+        """Within this block, what the gripper holds collides with nothing: for questions about the hand once it
+        has let go (can it leave the place where it puts something down?)."""
+        geoms = np.isin(self.model.geom_bodyid, [a.body for a in self._attached.values()]) & self._collides
+        saved = self.model.geom_contype[geoms].copy(), self.model.geom_conaffinity[geoms].copy()
+        self.model.geom_contype[geoms], self.model.geom_conaffinity[geoms] = 0, 0
+        try:
+            yield
+        finally:
+            self.model.geom_contype[geoms], self.model.geom_conaffinity[geoms] = saved
+
+    @contextlib.contextmanager
     def held_clearance(self, clearance: float) -> Iterator[None]:
         """Within this block, what the gripper holds counts as colliding closer than ``clearance`` to anything
         (rather than the padding): for transfers, where a held object swinging a little must not graze what it
@@ -328,9 +344,13 @@ class PlanningScene:
             pair = (x, y) if (x, y) in floors else (y, x)
             if pair in floors:
                 floors[pair] = min(floors[pair], float(distances[k]))
+        # Measured anew each time: a contact left shallower than it was may not be pushed back in.
         for (i, j), floor in floors.items():
-            floor = min(floor, self._leaving.get((i, j), np.inf))
             self._leaving[(i, j)] = self._leaving[(j, i)] = floor
+
+    def leaving_names(self) -> set[tuple[str, str]]:
+        """The pairs allowed to be left (:meth:`allow_leaving`) as names, to carry them into a rebuilt scene."""
+        return {(self.body_labels[a], self.body_labels[b]) for a, b in self._leaving if a < b}
 
     def has(self, name: str) -> bool:
         """Whether ``name`` (or "gripper") names something in the scene."""

@@ -121,6 +121,10 @@ class GroundTruth:
             e.name: np.array([g for g in range(self.model.ngeom) if self.model.geom_bodyid[g] in e.bodies], dtype=int)
             for e in world.entities
         }
+        # The table is its top, where things stand: its legs are under it, and a box down to the floor would put
+        # its middle and its bottom where nothing can be done with them.
+        top = [g for g in self._entity_geoms["table"] if self.model.geom(g).name == "table/top"]
+        self._entity_geoms["table"] = np.array(top, dtype=int)
 
     def names(self) -> list[str]:
         """The table, furniture, objects and furniture parts, as the tool API lists them."""

@@ -79,13 +79,14 @@ def pear() -> tuple[Part, ...]:
     )
 
 
-def mug(radius: float, height: float, wall: float = 0.006) -> tuple[Part, ...]:
-    parts = [disk(radius, 0.008)]
+def mug(radius: float, height: float, wall: float = 0.006, accent: RGBA | None = None) -> tuple[Part, ...]:
+    """A mug with a handle; ``accent``: the colour of its floor and handle where they differ from its walls."""
+    parts = [disk(radius, 0.008, rgba=accent)]
     parts += ring_wall(radius - wall / 2, radius - wall / 2, height - WALL_LIFT, wall, 16, z0=WALL_LIFT)
     # The handle: a C of capsules on the +x side, in the x-z plane.
     handle_r = height * 0.3
     parts += arc_of_capsules(
-        handle_r, 0.006, math.radians(-80), math.radians(80), 5, (radius - 0.004, 0.0, height * 0.52), "xz"
+        handle_r, 0.006, math.radians(-80), math.radians(80), 5, (radius - 0.004, 0.0, height * 0.52), "xz", accent
     )
     return tuple(parts)
 
@@ -167,12 +168,9 @@ def two_tone_box(lx: float, ly: float, lz: float, band: float, band_rgba: RGBA) 
     )
 
 
-def two_tone_mug(radius: float, height: float, accent: RGBA) -> tuple[Part, ...]:
-    """A mug whose floor and handle are in an accent colour (white outside, yellow inside)."""
-    floor, *rest = mug(radius, height)
-    handle_from = len(rest) - 5  # the handle's five capsules come last
-    accented = [Part(p.kind, p.size, p.pos, p.quat, accent) if k >= handle_from else p for k, p in enumerate(rest)]
-    return (Part(floor.kind, floor.size, floor.pos, floor.quat, accent), *accented)
+def square_saucer(side: float, depth: float, wall: float) -> tuple[Part, ...]:
+    """A square plant saucer: a tray with low walls."""
+    return tuple(open_box(side, side, depth, wall))
 
 
 def bottle(radius: float, height: float, cap_rgba: RGBA) -> tuple[Part, ...]:

@@ -13,7 +13,7 @@ import numpy as np
 
 from roboscript.sim import object_shapes as shapes
 from roboscript.sim.object_shapes import COLORS
-from roboscript.sim.shapes import RGBA, Part, open_box, parts_bounds
+from roboscript.sim.shapes import RGBA, Part, parts_bounds
 
 
 @dataclass(frozen=True)
@@ -191,7 +191,7 @@ _register(
         "white_and_yellow_mug",
         "mug",
         "white",
-        shapes.two_tone_mug(0.04, 0.095, COLORS["yellow"]),
+        shapes.mug(0.04, 0.095, accent=COLORS["yellow"]),
         1800,
         "a white ceramic mug, yellow inside and on its handle, 8 cm wide, 9.5 cm tall",
         container=True,
@@ -290,7 +290,7 @@ _register(
         "red_plant_saucer",
         "saucer",
         "red",
-        tuple(open_box(0.19, 0.19, 0.025, 0.006)),
+        shapes.square_saucer(0.19, 0.025, 0.006),
         1200,
         "a coral-red square plant saucer, 19 cm square, 2.5 cm deep",
         container=True,

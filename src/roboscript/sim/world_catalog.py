@@ -6,6 +6,7 @@ import difflib
 from importlib import resources
 from pathlib import Path
 
+from roboscript.datafile import names_a_file
 from roboscript.sim.world_file import WorldSpec, load_world_file
 
 
@@ -30,7 +31,6 @@ def world_path(name: str) -> Path:
 
 def load_world(name_or_path: str | Path) -> WorldSpec:
     """A packaged world by name, or any world file by path (anything ending in .yaml/.yml/.json)."""
-    text = str(name_or_path)
-    if text.endswith((".yaml", ".yml", ".json")) or Path(text).is_file():
-        return load_world_file(text)
-    return load_world_file(world_path(text))
+    if names_a_file(name_or_path):
+        return load_world_file(name_or_path)
+    return load_world_file(world_path(str(name_or_path)))

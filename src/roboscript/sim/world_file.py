@@ -20,16 +20,14 @@ Example::
 from __future__ import annotations
 
 import difflib
-import json
 import math
-import re
 from dataclasses import dataclass, field, replace
 from pathlib import Path
 from typing import Any
 
 import numpy as np
-import yaml
 
+from roboscript.datafile import DataFileError, Reader, read_data_file
 from roboscript.sim.cameras import CameraSpec, default_camera_rig
 from roboscript.sim.furniture import CabinetRow, CabinetSpec, TableSpec
 from roboscript.sim.objects import ObjectType, object_types
@@ -41,12 +39,10 @@ OVERLAP_MARGIN = 0.004
 VALID_ROBOTS = ("panda", "ur5e")
 
 
-class WorldFileError(ValueError):
+class WorldFileError(DataFileError):
     """A world file that cannot be loaded; the message names the file, the entry and the problem."""
 
-    def __init__(self, source: str, entry: str, problem: str):
-        self.source, self.entry, self.problem = source, entry, problem
-        super().__init__(f"world file {source}: {entry}: {problem}")
+    kind = "world"
 
 
 @dataclass(frozen=True)
@@ -128,48 +124,8 @@ class WorldSpec:
 # Parsing
 
 
-class _Reader:
-    """Typed access to one mapping of the file, with errors that say where."""
-
-    def __init__(self, source: str, entry: str, data: Any, allowed: set[str]):
-        self.source, self.entry = source, entry
-        if not isinstance(data, dict):
-            self.fail(f"expected a mapping, got {type(data).__name__}")
-        unknown = sorted(set(data) - allowed)
-        if unknown:
-            close = difflib.get_close_matches(str(unknown[0]), allowed, n=1)
-            hint = f" (did you mean {close[0]!r}?)" if close else ""
-            self.fail(f"unknown field {unknown[0]!r}{hint}; valid fields: {', '.join(sorted(allowed))}")
-        self.data = data
-
-    def fail(self, problem: str):
-        raise WorldFileError(self.source, self.entry, problem)
-
-    def required(self, key: str) -> Any:
-        if key not in self.data:
-            self.fail(f"missing required field {key!r}")
-        return self.data[key]
-
-    def string(self, key: str, default: str | None = None) -> str:
-        value = self.data.get(key, default) if default is not None else self.required(key)
-        if not isinstance(value, str) or not value:
-            self.fail(f"field {key!r} must be a non-empty string, got {value!r}")
-        return value
-
-    def number(self, key: str, default: float) -> float:
-        value = self.data.get(key, default)
-        if isinstance(value, bool) or not isinstance(value, int | float) or not math.isfinite(value):
-            self.fail(f"field {key!r} must be a finite number, got {value!r}")
-        return float(value)
-
-    def vector(self, key: str, lengths: tuple[int, ...], default: tuple[float, ...] | None = None) -> tuple:
-        value = self.data.get(key, default) if default is not None else self.required(key)
-        ok = isinstance(value, list | tuple) and len(value) in lengths
-        ok = ok and all(isinstance(v, int | float) and not isinstance(v, bool) and math.isfinite(v) for v in value)
-        if not ok:
-            shapes = " or ".join(f"a list of {n} numbers" for n in lengths)
-            self.fail(f"field {key!r} must be {shapes}, got {value!r}")
-        return tuple(float(v) for v in value)
+def _reader(source: str, entry: str, data: Any, allowed: set[str]) -> Reader:
+    return Reader(source, entry, data, allowed, WorldFileError)
 
 
 _WORLD_FIELDS = {"name", "description", "robot", "table", "furniture", "objects", "cameras", "randomize"}
@@ -178,14 +134,14 @@ _CABINET_FIELDS = {"name", "type", "position", "yaw", "rows", "width", "depth"}
 _CAMERA_FIELDS = {"name", "position", "look_at", "fovy", "width", "height"}
 
 
-def _parse_rows(reader: _Reader, rows: Any) -> tuple[CabinetRow, ...]:
+def _parse_rows(reader: Reader, rows: Any) -> tuple[CabinetRow, ...]:
     if not isinstance(rows, list) or not rows:
         reader.fail(f"field 'rows' must be a non-empty list of 'drawer' or 'door' entries, got {rows!r}")
     out = []
     for i, row in enumerate(rows):
         if isinstance(row, str):
             row = {"kind": row}
-        r = _Reader(reader.source, f"{reader.entry}.rows[{i}]", row, {"kind", "height"})
+        r = _reader(reader.source, f"{reader.entry}.rows[{i}]", row, {"kind", "height"})
         kind = r.string("kind")
         if kind not in ("drawer", "door"):
             r.fail(f"row kind must be 'drawer' or 'door', got {kind!r}")
@@ -206,7 +162,7 @@ def _parse_furniture(source: str, items: Any) -> tuple[CabinetSpec, ...]:
         entry = f"furniture[{i}]"
         if isinstance(item, dict) and isinstance(item.get("name"), str):
             entry += f" {item['name']!r}"
-        r = _Reader(source, entry, item, _CABINET_FIELDS)
+        r = _reader(source, entry, item, _CABINET_FIELDS)
         kind = r.string("type")
         if kind != "cabinet":
             r.fail(f"unknown furniture type {kind!r}; valid types: cabinet")
@@ -236,7 +192,7 @@ def _parse_objects(source: str, items: Any, part_names: set[str]) -> tuple[Objec
         entry = f"objects[{i}]"
         if isinstance(item, dict) and isinstance(item.get("name"), str):
             entry += f" {item['name']!r}"
-        r = _Reader(source, entry, item, _OBJECT_FIELDS)
+        r = _reader(source, entry, item, _OBJECT_FIELDS)
         name = r.string("name")
         if name in seen or name in part_names or name == TABLE_NAME:
             r.fail(f"name {name!r} is already used; object names must be unique")
@@ -278,7 +234,7 @@ def _parse_cameras(source: str, items: Any) -> tuple[CameraSpec, ...]:
         raise WorldFileError(source, "cameras", "must be 'default' or a non-empty list of cameras")
     cameras = []
     for i, item in enumerate(items):
-        r = _Reader(source, f"cameras[{i}]", item, _CAMERA_FIELDS)
+        r = _reader(source, f"cameras[{i}]", item, _CAMERA_FIELDS)
         cam = CameraSpec(
             name=r.string("name"),
             position=r.vector("position", (3,)),
@@ -302,13 +258,13 @@ def _parse_cameras(source: str, items: Any) -> tuple[CameraSpec, ...]:
 
 def parse_world(data: Any, source: str = "<memory>") -> WorldSpec:
     """Validates a world given as parsed YAML/JSON data; raises :class:`WorldFileError`."""
-    r = _Reader(source, "world", data, _WORLD_FIELDS)
+    r = _reader(source, "world", data, _WORLD_FIELDS)
     robot = r.string("robot", "panda")
     if robot not in VALID_ROBOTS:
         r.fail(f"unknown robot {robot!r}; valid robots: {', '.join(VALID_ROBOTS)}")
     table = TableSpec()
     if "table" in r.data:
-        t = _Reader(source, "table", r.data["table"], {"size", "height"})
+        t = _reader(source, "table", r.data["table"], {"size", "height"})
         size = t.vector("size", (2,), (table.length, table.width))
         table = TableSpec(length=size[0], width=size[1], height=t.number("height", table.height))
         if min(size) < 0.5 or not 0.4 <= table.height <= 1.2:
@@ -319,7 +275,7 @@ def parse_world(data: Any, source: str = "<memory>") -> WorldSpec:
         raise WorldFileError(source, "furniture", "furniture names must be unique")
     randomization = Randomization()
     if "randomize" in r.data:
-        rr = _Reader(source, "randomize", r.data["randomize"], {"position", "yaw"})
+        rr = _reader(source, "randomize", r.data["randomize"], {"position", "yaw"})
         randomization = Randomization(rr.number("position", 0.0), math.radians(rr.number("yaw", 0.0)))
         if not 0 <= randomization.position <= 0.2:
             rr.fail(f"position must be within 0..0.2 m, got {randomization.position}")
@@ -338,37 +294,9 @@ def parse_world(data: Any, source: str = "<memory>") -> WorldSpec:
     return world
 
 
-class _Yaml12Loader(yaml.SafeLoader):
-    """YAML with YAML 1.2 booleans: only true/false. YAML 1.1 would read the key ``on:`` as ``True``."""
-
-
-_Yaml12Loader.yaml_implicit_resolvers = {
-    first: [(tag, regexp) for tag, regexp in resolvers if tag != "tag:yaml.org,2002:bool"]
-    for first, resolvers in yaml.SafeLoader.yaml_implicit_resolvers.items()
-}
-_Yaml12Loader.add_implicit_resolver(
-    "tag:yaml.org,2002:bool",
-    re.compile(r"^(?:true|True|TRUE|false|False|FALSE)$"),
-    list("tTfF"),
-)
-
-
-def load_yaml(text: str):
-    """Parses YAML text with YAML 1.2 booleans (see :class:`_Yaml12Loader`)."""
-    return yaml.load(text, Loader=_Yaml12Loader)
-
-
 def load_world_file(path: str | Path) -> WorldSpec:
     """Reads and validates a ``.yaml``/``.yml``/``.json`` world file."""
-    path = Path(path)
-    if not path.is_file():
-        raise WorldFileError(str(path), "file", "does not exist")
-    text = path.read_text()
-    try:
-        data = json.loads(text) if path.suffix == ".json" else load_yaml(text)
-    except (yaml.YAMLError, json.JSONDecodeError) as exc:
-        raise WorldFileError(str(path), "file", f"is not valid {path.suffix.lstrip('.').upper()}: {exc}") from exc
-    return parse_world(data, str(path))
+    return parse_world(read_data_file(path, WorldFileError), str(path))
 
 
 # ---------------------------------------------------------------------------------------------------------------

@@ -1,9 +1,9 @@
 # Task: clear the table by moving all table objects into the basket.
 # Plan:
-# 1. Detect the objects; everything on the table except the basket has to go.
+# 1. Detect the objects; everything on the table except the basket has to go (the table itself is listed too).
 # 2. For each object: grasp it from above, lift it, place it into the basket, release it and move up.
 detect_objects()
-objects = [name for name in get_object_name_list() if name != 'basket']
+objects = [name for name in get_object_name_list() if name not in ('table', 'basket')]
 for name in objects:
     open_gripper()
     grasp_pose = parse_central_lift_grasp_pose(object_name=name, description='top')

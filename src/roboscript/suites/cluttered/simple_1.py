@@ -12,7 +12,7 @@ for plate in plates:
     bbox = get_3d_bbox(plate)
     occupied = False
     for other in names:
-        if other == plate or other == 'brown_cup' or '.' in other or other == 'cabinet':
+        if other in (plate, 'brown_cup', 'table', 'cabinet') or '.' in other:
             continue
         center = get_object_center_position(other)
         if bbox[0] < center[0] < bbox[3] and bbox[1] < center[1] < bbox[4]:

@@ -1,0 +1,116 @@
+"""Data files (worlds, task suites): reading YAML or JSON, and typed access to their entries with errors that name
+the file, the entry and the problem."""
+
+from __future__ import annotations
+
+import difflib
+import json
+import math
+import re
+from pathlib import Path
+from typing import Any, ClassVar, NoReturn
+
+import yaml
+
+DATA_SUFFIXES = (".yaml", ".yml", ".json")
+
+
+class DataFileError(ValueError):
+    """A data file that cannot be loaded: ``<kind> file <source>: <entry>: <problem>``."""
+
+    kind: ClassVar[str] = "data"
+
+    def __init__(self, source: str, entry: str, problem: str):
+        self.source, self.entry, self.problem = source, entry, problem
+        super().__init__(f"{self.kind} file {source}: {entry}: {problem}")
+
+
+class Reader:
+    """Typed access to one mapping of a data file; every problem raises ``error`` saying where."""
+
+    def __init__(self, source: str, entry: str, data: Any, allowed: set[str], error: type[DataFileError]):
+        self.source, self.entry, self.error = source, entry, error
+        if not isinstance(data, dict):
+            self.fail(f"expected a mapping, got {type(data).__name__} {data!r}")
+        unknown = sorted(str(k) for k in set(data) - allowed)
+        if unknown:
+            close = difflib.get_close_matches(unknown[0], allowed, n=1)
+            hint = f" (did you mean {close[0]!r}?)" if close else ""
+            self.fail(f"unknown field {unknown[0]!r}{hint}; valid fields: {', '.join(sorted(allowed))}")
+        self.data = data
+
+    def fail(self, problem: str) -> NoReturn:
+        raise self.error(self.source, self.entry, problem)
+
+    def required(self, key: str) -> Any:
+        if key not in self.data:
+            self.fail(f"missing required field {key!r}")
+        return self.data[key]
+
+    def string(self, key: str, default: str | None = None) -> str:
+        """A non-empty string; ``default`` where the field is absent (required when there is none)."""
+        value = self.data.get(key, default) if default is not None else self.required(key)
+        if not isinstance(value, str) or not value.strip():
+            self.fail(f"field {key!r} must be a non-empty string, got {value!r}")
+        return value
+
+    def text(self, key: str) -> str:
+        """An optional string field (a description): empty where absent."""
+        value = self.data.get(key, "")
+        if not isinstance(value, str):
+            self.fail(f"field {key!r} must be text, got {type(value).__name__} {value!r}")
+        return value
+
+    def number(self, key: str, default: float | None = None) -> float:
+        """A finite number; ``default`` where the field is absent (required when there is none)."""
+        value = self.data.get(key, default) if default is not None else self.required(key)
+        if isinstance(value, bool) or not isinstance(value, int | float) or not math.isfinite(value):
+            self.fail(f"field {key!r} must be a finite number, got {value!r}")
+        return float(value)
+
+    def vector(self, key: str, lengths: tuple[int, ...], default: tuple[float, ...] | None = None) -> tuple:
+        value = self.data.get(key, default) if default is not None else self.required(key)
+        ok = isinstance(value, list | tuple) and len(value) in lengths
+        ok = ok and all(isinstance(v, int | float) and not isinstance(v, bool) and math.isfinite(v) for v in value)
+        if not ok:
+            shapes = " or ".join(f"a list of {n} numbers" for n in lengths)
+            self.fail(f"field {key!r} must be {shapes}, got {value!r}")
+        return tuple(float(v) for v in value)
+
+
+class _Yaml12Loader(yaml.SafeLoader):
+    """YAML with YAML 1.2 booleans: only true/false. YAML 1.1 would read the key ``on:`` as ``True``."""
+
+
+_Yaml12Loader.yaml_implicit_resolvers = {
+    first: [(tag, regexp) for tag, regexp in resolvers if tag != "tag:yaml.org,2002:bool"]
+    for first, resolvers in yaml.SafeLoader.yaml_implicit_resolvers.items()
+}
+_Yaml12Loader.add_implicit_resolver(
+    "tag:yaml.org,2002:bool",
+    re.compile(r"^(?:true|True|TRUE|false|False|FALSE)$"),
+    list("tTfF"),
+)
+
+
+def load_yaml(text: str):
+    """Parses YAML text with YAML 1.2 booleans (see :class:`_Yaml12Loader`)."""
+    return yaml.load(text, Loader=_Yaml12Loader)
+
+
+def read_data_file(path: str | Path, error: type[DataFileError]) -> Any:
+    """The parsed contents of a ``.yaml``/``.yml``/``.json`` file; ``error`` if it is missing or does not parse."""
+    path = Path(path)
+    if not path.is_file():
+        raise error(str(path), "file", "does not exist")
+    text = path.read_text()
+    try:
+        return json.loads(text) if path.suffix == ".json" else load_yaml(text)
+    except (yaml.YAMLError, json.JSONDecodeError) as exc:
+        raise error(str(path), "file", f"is not valid {path.suffix.lstrip('.').upper()}: {exc}") from exc
+
+
+def names_a_file(reference: str | Path) -> bool:
+    """Whether a name given for a world or a suite is a file's path rather than a packaged one's name."""
+    text = str(reference)
+    return text.endswith(DATA_SUFFIXES) or Path(text).is_file()
