@@ -12,8 +12,12 @@ demo: setup
 
 # The tests need Open3D (perception), torch and transformers (detectors, tested on tiny models they build), and the
 # slow ones llama.cpp (compiled on first install, about 5 minutes on 2 cores) and a small GGUF model.
+# llama.cpp is built for AVX2, not for the machine it is built on: its AMX kernels crash with a segmentation fault on
+# some Xeons (Sapphire Rapids, seen in a VM here), and a wheel built for one CPU can be reused from pip's cache on another.
+LLAMA_CMAKE_ARGS ?= -DGGML_NATIVE=OFF -DGGML_AVX=ON -DGGML_AVX2=ON -DGGML_FMA=ON -DGGML_F16C=ON
+
 test-deps:
-	$(PY) -m pip install -q -e ".[dev,perception,detectors,slowtests]"
+	CMAKE_ARGS="$(LLAMA_CMAKE_ARGS)" $(PY) -m pip install -q -e ".[dev,perception,detectors,slowtests]"
 
 test: test-deps
 	$(VENV)/bin/ruff check src tests benchmarks
