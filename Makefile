@@ -16,8 +16,13 @@ demo: setup
 # some Xeons (Sapphire Rapids, seen in a VM here), and a wheel built for one CPU can be reused from pip's cache on another.
 LLAMA_CMAKE_ARGS ?= -DGGML_NATIVE=OFF -DGGML_AVX=ON -DGGML_AVX2=ON -DGGML_FMA=ON -DGGML_F16C=ON
 
+# pip's wheel cache is keyed by the source, not by CMAKE_ARGS: a cached native build (seen on fresh CI machines) would
+# be taken over ours, so llama.cpp is built without the cache, at the version the slowtests extra pins.
+LLAMA_PIN = $(shell grep -o 'llama-cpp-python==[0-9.]*' pyproject.toml | head -1)
+
 test-deps:
-	CMAKE_ARGS="$(LLAMA_CMAKE_ARGS)" $(PY) -m pip install -q -e ".[dev,perception,detectors,slowtests]"
+	CMAKE_ARGS="$(LLAMA_CMAKE_ARGS)" $(PY) -m pip install -q --no-cache-dir "$(LLAMA_PIN)"
+	$(PY) -m pip install -q -e ".[dev,perception,detectors,slowtests]"
 
 test: test-deps
 	$(VENV)/bin/ruff check src tests benchmarks

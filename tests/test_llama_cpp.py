@@ -38,7 +38,7 @@ def test_a_local_gguf_model_runs_the_whole_pipeline_and_its_failure_is_reported(
     result = json.loads(run.stdout.strip().splitlines()[-1])
     (trial,) = result["per_trial"]
     (program,) = result["programs"]
-    assert program.strip(), "the model wrote nothing"
+    assert program is not None and program.strip(), f"the model wrote nothing: {trial}"
     assert trial["outcome"] in FAILURES, trial  # a 270M base model does not do the task ...
     assert result["whole_task_success"] == 0.0
     if trial["outcome"] != Outcome.CHECKS_FAILED.value:  # ... and the record says why
