@@ -53,6 +53,16 @@ def test_the_checker_accepts_aliases_defined_functions_and_callable_variables():
     assert check_program(program) == []
 
 
+def test_a_program_s_own_function_binds_before_a_tool_of_the_same_name_and_may_take_keywords():
+    # GPT-4 defined its own move_in_direction(direction, distance=0.25) from get_gripper_pose and move_to_pose.
+    own = "def move_in_direction(direction, distance=0.25, speed=1.0):\n    pass\n"
+    assert check_program(own + "move_in_direction([1, 0, 0], speed=0.5)\n") == []
+    (finding,) = check_program(own + "move_in_direction([1, 0, 0], axis=[0, 0, 1])\n")  # no aliases for its own
+    assert finding.outcome == Outcome.BAD_ARGUMENTS and "(direction, distance, speed)" in finding.message
+    helper = "def carry(name, **where):\n    pass\ncarry('apple', receptacle_name='table')\n"
+    assert check_program(helper) == []
+
+
 def test_the_prompt_is_built_from_the_tool_api_itself():
     prompt = system_prompt()
     for name in ToolAPI.TOOL_NAMES:

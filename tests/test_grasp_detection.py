@@ -158,3 +158,47 @@ def _descends(model, body: int, root: int) -> bool:
             return True
         body = int(model.body_parentid[body])
     return False
+
+
+def sphere_surface(center, radius, n=1500):
+    """Points and outward normals on the upper part of a sphere (what cameras above a table see)."""
+    k = np.arange(n) + 0.5
+    polar, azimuth = np.arccos(1 - 2 * k / n), math.pi * (1 + 5**0.5) * k
+    normals = np.column_stack([np.sin(polar) * np.cos(azimuth), np.sin(polar) * np.sin(azimuth), np.cos(polar)])
+    normals = normals[normals[:, 2] > -0.5]
+    return center + radius * normals, normals
+
+
+def test_objects_nearly_as_wide_as_the_opening_are_graspable_and_wider_ones_are_not():
+    # 2 mm to spare on each side of the Panda's 8 cm is enough for a parallel gripper: a 7.6 cm box (the apple's
+    # width) closes across its narrow side; a 7.9 cm one gets nothing.
+    for across, graspable in ((0.076, True), (0.079, False)):
+        center = np.array([0.0, 0.0, 0.82 + 0.02])
+        points, normals = box_surface(center, np.array([across / 2, 0.05, 0.02]))
+        scene = np.vstack([points, table()])
+        grasps = detect_grasps(ObjectPoints(points, normals), scene, GripperGeometry(0.08), seed=1)
+        assert bool(grasps) is graspable, across
+        if grasps:
+            assert abs(grasps[0].width - across) < 0.004 and abs(grasps[0].pose.rotation[0, 1]) > 0.95
+
+
+def test_a_ball_is_gripped_at_its_equator_where_the_palm_clears_its_top():
+    # The Franka's palm is 3.6 cm behind the fingertips: a 7 cm ball fits under it, a 7.6 cm one (the apple)
+    # does not, and is left to the central lift grasp the adaptive tool falls back on.
+    for diameter, graspable in ((0.070, True), (0.076, False)):
+        center = np.array([0.0, 0.0, 0.82 + diameter / 2])
+        points, normals = sphere_surface(center, diameter / 2)
+        grasps = detect_grasps(ObjectPoints(points, normals), np.vstack([points, table()]), GripperGeometry(0.08))
+        assert bool(grasps) is graspable, diameter
+
+
+def test_the_open_fingers_must_clear_what_stands_just_beyond_a_full_width_grasp():
+    # A 7.4 cm wide box with a post 4 mm off one side (a cup's handle): across the box, the open finger (its inner
+    # face 3 mm outside the box) comes down on the post.
+    center = np.array([0.0, 0.0, 0.82 + 0.03])
+    points, _ = box_surface(center, np.array([0.037, 0.025, 0.03]))
+    post = np.array([[0.041, y, z] for y in np.linspace(-0.008, 0.008, 5) for z in np.linspace(0.83, 0.87, 9)])
+    scene = np.vstack([points, post, table()])
+    rotation = np.column_stack([[0.0, 1.0, 0.0], [1.0, 0.0, 0.0], [0.0, 0.0, -1.0]])  # closing along x
+    assert collides(rotation, center, scene, GripperGeometry(0.08), width=0.074)
+    assert not collides(rotation, center, np.vstack([points, table()]), GripperGeometry(0.08), width=0.074)

@@ -33,6 +33,12 @@ from roboscript.planning.errors import IKError, PlanningError
 from roboscript.planning.motion import MotionPlanner
 
 PRE_GRASP_DISTANCE = 0.1
+# Retreats made on the program's behalf before its next motion, unless that motion is one itself: a held object is
+# lifted off its support (up), a released one left behind (the hand backs off along its approach axis).
+LIFT_AFTER_GRASP = 0.05
+RETREAT_AFTER_RELEASE = 0.05
+RELEASE_RETREAT_LEAST = 0.02  # a program's own retreat after a release may stop short of its distance, not of this
+OWN_RETREAT = 0.7  # cosine between a program's motion and the retreat above which that motion is its own retreat
 PULL_CHECK = 0.25  # metres a drawer handle grasp must be able to pull
 DRAWER_WALL_MARGIN = 0.025
 PLACE_IK_BUDGET = 96  # IK screens per parse_place_pose call (each costs a few milliseconds to ~0.1 s)
@@ -59,6 +65,8 @@ class ToolAPI:
         # Names the gripper may touch until it has moved clear of them (what it grasped or just let go of).
         self._touch_allowed: set[str] = set()
         self._link_contacts: set[tuple[str, str]] = set()  # arm links allowed to leave a contact they start in
+        # Owed before the next motion: (direction, distance, "lift" after a grasp or "release" after letting go).
+        self._pending_retreat: tuple[np.ndarray, float, str] | None = None
 
     @classmethod
     def for_simulation(cls, backend, seed: int = 0, perception: str = "gt") -> ToolAPI:
@@ -197,13 +205,33 @@ class ToolAPI:
             raise GraspError(
                 f"{name!r} is hardly visible to the cameras ({len(cloud.points)} points): no grasp detected"
             )
-        candidates = detect_grasps(cloud, self.perception.scene_points(), self.gripper, preferences, seed=self.seed)
+        detected = detect_grasps(cloud, self.perception.scene_points(), self.gripper, preferences, seed=self.seed)
+        # Where sampling finds no reachable pair (an object nearly as wide as the opening), the box grasps that
+        # fit the object are grasps too: the adaptive grasp is never worse than the central or horizontal one.
+        candidates = [c.pose for c in detected[:12]] + self._box_grasps(name, preferences)
         if not candidates:
             raise GraspError(
-                f"no collision-free antipodal grasp found on {name!r} ({len(cloud.points)} points seen); "
-                "try parse_central_lift_grasp_pose or parse_horizontal_grasp_pose"
+                f"no collision-free antipodal grasp found on {name!r} ({len(cloud.points)} points seen), and it is "
+                f"wider than the gripper's {self.gripper.max_width * 100:.1f} cm opening across every side"
             )
-        return Pose.from_transform(self._first_reachable(name, [c.pose for c in candidates[:12]], "adaptive"))
+        return Pose.from_transform(self._first_reachable(name, candidates, "adaptive"))
+
+    def _box_grasps(self, name: str, preferences: GraspPreferences) -> list[Transform]:
+        """The central lift and horizontal grasps that fit ``name``, in the order the preferred approach suggests
+        (top-down first unless a horizontal approach is preferred)."""
+        kinds = [
+            lambda: central_lift_grasps(self.perception, name, "center", self.gripper.max_width, self.base_xy),
+            lambda: horizontal_grasps(self.perception, name, None, self.gripper.max_width, self.base_xy),
+        ]
+        if preferences.approach is not None and abs(float(preferences.approach[2])) < 0.5:
+            kinds.reverse()
+        out: list[Transform] = []
+        for kind in kinds:
+            try:
+                out += kind()
+            except GraspError:
+                continue
+        return out
 
     # --- motion tools ----------------------------------------------------------------------------------------
 
@@ -211,6 +239,8 @@ class ToolAPI:
     def open_gripper(self) -> None:
         """Opens the gripper fully."""
         self.backend.open_gripper()
+        if self._held:  # what was let go stays behind
+            self._pending_retreat = (-self.backend.tcp_pose().rotation[:, 2], RETREAT_AFTER_RELEASE, "release")
 
     @tool
     def close_gripper(self) -> None:
@@ -226,6 +256,7 @@ class ToolAPI:
     def move_to_pose(self, pose: Pose) -> None:
         """Collision-free motion of the TCP to ``pose``: a straight line when feasible, else a planned path."""
         target = _pose(pose, "pose")
+        self._retreat_first(target.position - self.backend.tcp_pose().position)
         self._allow_start_contacts()
         self._allow_touch_near(target.position)
         self.motion.move_to_pose(target)
@@ -238,7 +269,17 @@ class ToolAPI:
         distance = _real(distance, "distance")
         if abs(distance) > 1.5:
             raise ValueError(f"distance is in metres and must be within [-1.5, 1.5], got {distance}")
+        own = self._retreat_first(direction * distance)
         self._allow_start_contacts()
+        if own == "release":
+            # Backing off from what was just let go goes as far as reach allows: an opened drawer's handle may
+            # stand at the edge of the workspace, and the retreat's purpose (clearing it) is met before its end.
+            moved = self.motion.retreat(direction, distance, least=min(RELEASE_RETREAT_LEAST, distance))
+            if moved > 0.0:
+                if moved < distance - 1e-3:
+                    print(f"[move_in_direction] retreated {moved:.3f} m of {distance:.3f} m: the rest is out of reach")
+                self._after_motion()
+                return
         self.motion.move_in_direction(direction, distance, plan_if_blocked=True)
         self._after_motion()
 
@@ -263,6 +304,7 @@ class ToolAPI:
         if isinstance(path, Pose) or not isinstance(path, (list, tuple)) or not path:
             raise TypeError(f"path must be a non-empty list of Pose, got {type(path).__name__}")
         targets = [_pose(p, f"path[{i}]") for i, p in enumerate(path)]
+        self._retreat_first(targets[0].position - self.backend.tcp_pose().position)
         self._allow_start_contacts()
         self.motion.follow(targets)
         self._after_motion()
@@ -275,6 +317,7 @@ class ToolAPI:
         """
         target = _pose(grasp_pose, "grasp_pose")
         pre = Transform(target.position - PRE_GRASP_DISTANCE * target.rotation[:, 2], target.quaternion)
+        self._retreat_first(pre.position - self.backend.tcp_pose().position)
         self._allow_start_contacts()
         # The fingers may touch the object only on the final straight approach, not on the way to its start.
         q = self.motion.sync()
@@ -371,13 +414,8 @@ class ToolAPI:
         name = self._name(object_name)
         if name in self._held:
             return
-        if name in self.perception.objects():
-            self.motion.attach(name)
-            self.perception.carried(name, self.backend.tcp_pose())
-        elif "." in name:  # a part of furniture (cabinet.drawer_1): it moves on its joint, or with its drawer
-            for part in self._part_family(name):  # the gripper may touch it and its handle
-                self.motion.scene.allow("gripper", part)
-        else:
+        is_object = name in self.perception.objects()
+        if not is_object and "." not in name:
             movable = [n for n in self.perception.furniture() if "." in n]
             raise ValueError(
                 f"{name!r} cannot be held: it does not move. Attach what the gripper holds: an object "
@@ -386,6 +424,17 @@ class ToolAPI:
             )
         self._held.append(name)
         self._touch_allowed.add(name)
+        if not is_object:  # a part of furniture (cabinet.drawer_1): it moves on its joint, or with its drawer
+            for part in self._part_family(name):  # the gripper may touch it and its handle
+                self.motion.scene.allow("gripper", part)
+            return
+        self.motion.attach(name)
+        self.perception.carried(name, self.backend.tcp_pose())
+        # Off whatever it rests on, at once if the fingers hold it: where it settles in the hand, and so what a
+        # place pose asked for next must allow for, shows only once it hangs free.
+        self._pending_retreat = (np.array([0.0, 0.0, 1.0]), LIFT_AFTER_GRASP, "lift")
+        if self.backend.gripper_width() < self.gripper.max_width - 0.005:
+            self._retreat_first(np.zeros(3))
 
     @tool
     def detach_object(self, object_name: str) -> None:
@@ -402,6 +451,22 @@ class ToolAPI:
         self._touch_allowed.add(name)
 
     # --- internals -------------------------------------------------------------------------------------------
+
+    def _retreat_first(self, motion: np.ndarray) -> str | None:
+        """Makes the retreat owed since the last grasp or release, unless ``motion`` (the program's next, as a
+        displacement of the TCP) is already one: mostly along the retreat, and at least as long. Returns the
+        retreat's kind ("lift" or "release") when ``motion`` is the program's own retreat, else None."""
+        pending, self._pending_retreat = self._pending_retreat, None
+        if pending is None:
+            return None
+        direction, distance, kind = pending
+        length = float(np.linalg.norm(motion))
+        if length >= distance and float(direction @ motion) / length > OWN_RETREAT:
+            return kind
+        self._allow_start_contacts()
+        self.motion.retreat(direction, distance)
+        self._after_motion()
+        return None
 
     def _name(self, name: object) -> str:
         return self.perception.require(name)

@@ -68,10 +68,10 @@ def check_program(program: str, tools: Mapping[str, inspect.Signature] | None = 
         func = call.func
         if isinstance(func, ast.Name):
             name = func.id
-            if name in tools:
-                findings += _bind(call, name, tools[name], aliases=True)
-            elif name in defined:
+            if name in defined:  # a program's own function may take a tool's name (its own move_in_direction)
                 findings += _bind(call, name, defined[name], aliases=False)
+            elif name in tools:
+                findings += _bind(call, name, tools[name], aliases=True)
             elif name not in known:
                 suggestions = set(tools) | set(defined) | PROGRAM_BUILTINS
                 findings.append(Finding(call.lineno, Outcome.UNKNOWN_FUNCTION, _unknown(name, suggestions)))
@@ -109,11 +109,12 @@ def _bind(call: ast.Call, name: str, signature: inspect.Signature, aliases: bool
     if any(isinstance(a, ast.Starred) for a in call.args) or any(k.arg is None for k in call.keywords):
         return []  # *args / **kwargs: cannot be bound statically
     keywords = {}
+    takes_any = any(p.kind is inspect.Parameter.VAR_KEYWORD for p in signature.parameters.values())
     for keyword in call.keywords:
         key = keyword.arg
         if aliases and key not in signature.parameters:
             key = ALIASES.get(key, key)
-        if key not in signature.parameters:
+        if key not in signature.parameters and not takes_any:
             valid = ", ".join(signature.parameters)
             message = f"{name}() has no argument {keyword.arg!r}; its arguments are ({valid})"
             return [Finding(call.lineno, Outcome.BAD_ARGUMENTS, message + _closest(keyword.arg, signature.parameters))]

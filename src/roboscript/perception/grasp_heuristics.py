@@ -63,6 +63,38 @@ def central_lift_grasps(
     return candidates
 
 
+# A given approach_direction is a preference: where the arm cannot reach it, approaches turned about the vertical
+# by up to 0.8 rad (46 degrees) are tried, nearest first.
+PREFERENCE_CONE = (0.0, 0.2, -0.2, 0.4, -0.4, 0.6, -0.6, 0.8, -0.8)
+# Objects whose middle is lower than this over their bottom are approached tilted down (radians below level).
+LOW_OBJECT = 0.045
+LOW_TILTS = (0.5, 0.9, 0.0)
+# Turns of the default approach tried, nearest first (radians about world z).
+APPROACH_YAWS = (0.0, 0.35, -0.35, 0.7, -0.7, 1.0, -1.0, 1.3, -1.3)
+
+
+def _finger_band(points: np.ndarray, height: float, half: float = 0.02) -> np.ndarray:
+    """The points at the height the finger pads close over (all of them where that band shows too few)."""
+    band = points[np.abs(points[:, 2] - height) < half]
+    return band if len(band) >= 10 else points
+
+
+def _extent(points: np.ndarray, direction: np.ndarray) -> float:
+    """How wide the points are along ``direction``: what the fingers must open across when closing along it.
+    Measured on what is seen, not on the world-aligned box, which a turned box or a ball overstates."""
+    along = points @ direction
+    return float(along.max() - along.min())
+
+
+def _with_side_on_yaws(yaws: list[float], approach: np.ndarray, footprint_yaw: float) -> list[float]:
+    """The approach turns, with those that come at a turned object square to its sides added (within the range
+    tried): closing across a box's narrow side at an angle would need a wider opening."""
+    heading = math.atan2(approach[1], approach[0])
+    square = [math.remainder(footprint_yaw + k * math.pi / 2 - heading, 2 * math.pi) for k in range(4)]
+    extra = [d for d in square if abs(d) <= max(abs(y) for y in yaws)]
+    return sorted({*yaws, *extra}, key=abs)
+
+
 def _handle_normal(perception: Perception, name: str, box) -> np.ndarray:
     """The horizontal direction a handle faces: its part's opening direction, or its front's normal."""
     joints = perception.joints(name) if ".handle_" in name else []
@@ -84,7 +116,9 @@ def horizontal_grasps(
     """Grasps approaching horizontally; handles are gripped across their bar, other things across their width.
 
     Without ``approach_direction`` a handle is approached against its part's opening direction and an object from
-    the robot's side; several nearby yaws follow, for the tool layer to pick a reachable one.
+    the robot's side; several nearby yaws follow, for the tool layer to pick a reachable one. A given
+    ``approach_direction`` is preferred, not demanded: turns of it within :data:`PREFERENCE_CONE` follow it. An
+    object too low to be gripped level without the hand touching its support is approached tilted downwards.
     """
     box = perception.box(name)
     is_handle = ".handle_" in name
@@ -96,16 +130,24 @@ def horizontal_grasps(
                 "approach_direction must be a 3-vector with a horizontal part, got "
                 f"{np.asarray(approach_direction).tolist()}"
             )
-        yaws = [0.0]
+        yaws = list(PREFERENCE_CONE)
     else:
         # A handle is approached against its part's opening direction, anything else from the robot's side.
         approach = -_handle_normal(perception, name, box) if is_handle else np.append(box.center[:2] - base_xy, 0.0)
-        yaws = [0.0, 0.35, -0.35, 0.7, -0.7, 1.0, -1.0, 1.3, -1.3]
+        yaws = list(APPROACH_YAWS)
     approach = approach / np.linalg.norm(approach)
+    if not is_handle:
+        points = _finger_band(perception.points(name).points, min(box.center[2], box.lower[2] + 0.06))
+        if approach_direction is None:
+            yaws = _with_side_on_yaws(yaws, approach, perception.footprint(name)[1])
     outward_normal = -approach if approach_direction is None else _handle_normal(perception, name, box)
     size = box.size
     candidates = []
-    for dyaw in yaws:
+    target_z = min(box.center[2], box.lower[2] + 0.06)
+    # Level with the middle of a low object, the hand (6.6 cm tall across a horizontal closing) would touch its
+    # support: such an object is approached from the side tilted downwards, the level approach tried last.
+    tilts = LOW_TILTS if not is_handle and target_z - box.lower[2] < LOW_OBJECT else (0.0,)
+    for tilt, dyaw in ((t, y) for t in tilts for y in yaws):
         c, s = math.cos(dyaw), math.sin(dyaw)
         a = np.array([c * approach[0] - s * approach[1], s * approach[0] + c * approach[1], 0.0])
         if is_handle:
@@ -120,12 +162,12 @@ def horizontal_grasps(
             outward = up if abs(closing[2]) < 0.5 else np.cross(up, a)
         else:
             closing = np.cross(np.array([0.0, 0.0, 1.0]), a)
-            across = float(np.abs(closing) @ size)
+            across = _extent(points, closing) if len(points) else float(np.abs(closing) @ size)
             if across > max_width - 0.003:
                 continue
-            target = box.center.copy()
-            target[2] = min(box.center[2], box.lower[2] + 0.06)
+            target = np.array([box.center[0], box.center[1], target_z])
             outward = np.array([0.0, 0.0, -1.0])
+            a = math.cos(tilt) * a + math.sin(tilt) * DOWN
         candidates.append(Transform.from_rotation(target, _frame(closing, a, outward)))
     if not candidates:
         raise GraspError(

@@ -349,6 +349,18 @@ class MotionPlanner:
                 raise
             return self.execute(self.plan_to_pose(target))
 
+    def retreat(self, direction: np.ndarray, distance: float, least: float = 0.01) -> float:
+        """Moves the TCP straight along ``direction`` by up to ``distance`` metres, as far as a straight line goes
+        (a post-grasp or post-place retreat, as MoveIt's pick and place pipelines make); nothing where less than
+        ``least`` is free. Returns the distance moved."""
+        direction = np.asarray(direction, dtype=float) / float(np.linalg.norm(direction))
+        current = self.backend.tcp_pose()
+        line = self.cartesian([Transform(current.position + direction * distance, current.quaternion)])
+        if line.fraction * distance < least or len(line.waypoints) < 2:
+            return 0.0
+        self.execute(line.waypoints)
+        return line.fraction * distance
+
     def arc(self, axis: np.ndarray, pivot: np.ndarray, angle: float, n: int = 20, min_fraction: float = 1.0):
         """Turns the TCP about a revolute joint (a door's hinge) by ``angle`` radians."""
         return self.follow(arc_poses(self.backend.tcp_pose(), axis, pivot, n, angle), min_fraction)

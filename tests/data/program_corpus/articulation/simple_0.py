@@ -1,0 +1,12 @@
+# The apple is round: grasp it from the side, approaching horizontally from the robot's side.
+detect_objects()
+apple = get_object_center_position('apple')
+open_gripper()
+grasp(parse_horizontal_grasp_pose('apple', approach_direction=[1, 0, 0]))
+close_gripper()
+attach_object('apple')
+move_in_direction([0, 0, 1], 0.1)
+move_to_pose(parse_place_pose('apple', 'footed_bowl'))
+open_gripper()
+detach_object('apple')
+move_in_direction([0, 0, 1], 0.1)

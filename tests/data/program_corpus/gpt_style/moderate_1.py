@@ -1,0 +1,11 @@
+# The white mug goes onto the white plate (colors are in the names)
+open_gripper()
+grasp_pose = parse_adaptive_shape_grasp_pose('white_porcelain_mug')
+grasp(grasp_pose)
+close_gripper()
+attach_object('white_porcelain_mug')
+
+place_pose = parse_place_pose('white_porcelain_mug', 'white_ceramic_plate')
+move_to_pose(place_pose)
+open_gripper()
+detach_object('white_porcelain_mug')

@@ -1,0 +1,28 @@
+def raise_gripper(height):
+    pose = get_gripper_pose()
+    pose.position.z += height
+    move_to_pose(pose)
+
+
+def put(name, place_pose):
+    above = Pose()
+    above.position.x = place_pose.position.x
+    above.position.y = place_pose.position.y
+    above.position.z = place_pose.position.z + 0.1
+    above.orientation = place_pose.orientation
+    move_to_pose(above)
+    move_to_pose(place_pose)
+    open_gripper()
+    detach_object(name)
+    raise_gripper(0.1)
+
+
+
+detect_objects()
+center = get_object_center_position('apple')
+open_gripper()
+grasp(parse_adaptive_shape_grasp_pose('apple', preferred_position=center))
+close_gripper()
+attach_object('apple')
+raise_gripper(0.1)
+put('apple', parse_place_pose('apple', 'footed_bowl'))
