@@ -312,3 +312,38 @@ def test_a_transfer_lifts_the_held_object_clear_and_carries_it_clear():
     first, last = clear.index(True), len(clear) - 1 - clear[::-1].index(True)
     assert all(clear[first : last + 1])
     motion.planner.validate(path.waypoints)  # and the whole of it is free with the ordinary padding
+
+
+def test_a_planner_that_runs_out_of_time_retries_with_twice_the_time_and_the_next_goal():
+    """MotionPlanner.plan's retry schedule, with a test double for the OMPL planner that times out twice."""
+    from roboscript.planning.motion import PLANNING_ATTEMPTS
+    from roboscript.planning.planner import JointPath
+
+    backend, motion = planner_for(objects_world(), "panda")
+    start = backend.joint_positions()
+    goals = [start + 0.1, start + 0.2]
+    calls: list[tuple[float, float]] = []
+
+    class TimesOutTwice:
+        def plan(self, start, goal, planner, timeout):
+            calls.append((float(goal[0] - start[0]), timeout))
+            if len(calls) < 3:
+                raise PlannerTimeoutError(planner, timeout)
+            return JointPath(np.array([start, goal]), planner)
+
+    motion._planner = TimesOutTwice()  # the scene is up to date: nothing replaces it
+    path = motion.plan(start, goals, timeout=0.5)
+    assert path.attempts == 3 == PLANNING_ATTEMPTS
+    assert calls == [(pytest.approx(0.1), 0.5), (pytest.approx(0.2), 1.0), (pytest.approx(0.1), 2.0)]
+
+    class AlwaysTimesOut:
+        def plan(self, start, goal, planner, timeout):
+            calls.append((float(goal[0] - start[0]), timeout))
+            raise PlannerTimeoutError(planner, timeout)
+
+    calls.clear()
+    motion._planner = AlwaysTimesOut()
+    with pytest.raises(PlannerTimeoutError, match=r"within 2\.00 s"):
+        motion.plan(start, goals, timeout=0.5)
+    assert [limit for _, limit in calls] == [0.5, 1.0, 2.0]
+    backend.close()

@@ -247,3 +247,37 @@ def test_a_grasped_object_is_lifted_off_its_support_and_a_released_one_left_behi
         np.testing.assert_allclose(gt.box("apple").center, placed, atol=0.005)
         tools.move_in_direction([0.0, 0.0, 1.0], 0.1)  # a program's own retreat is not doubled
         assert abs(backend.tcp_pose().position[2] - moved[2] - 0.1) < 0.005
+
+
+def test_a_released_handle_is_backed_out_of_before_a_planned_motion():
+    """After letting go of a pulled handle, the planned way to the next grasp starts by backing out of the handle
+    along the approach axis, however the grasp's direction lies: a planned path that swept the open fingers
+    sideways out of the handle caught it (paper moderate_0, seed 1, the original's style of program)."""
+    from roboscript.bench.tasks import get_task
+
+    task = get_task("moderate_0", "paper")
+    with MujocoBackend(task.world, robot="panda", seed=1, randomize=True) as backend:
+        tools = ToolAPI.for_simulation(backend, seed=1)
+        tools.open_gripper()
+        tools.grasp(tools.parse_horizontal_grasp_pose("cabinet.handle_1"))
+        tools.close_gripper()
+        tools.attach_object("cabinet.handle_1")
+        tools.move_in_direction([1, 0, 0], 0.25)
+        tools.open_gripper()
+        tools.detach_object("cabinet.handle_1")
+        approach = backend.tcp_pose().rotation[:, 2]
+        released = backend.tcp_pose().position.copy()
+        opened = backend.ground_truth.box("cabinet.drawer_1").center.copy()
+        first_moves: list[np.ndarray] = []
+        execute = tools.motion.execute
+
+        def recording(path):
+            report = execute(path)
+            first_moves.append(backend.tcp_pose().position.copy())
+            return report
+
+        tools.motion.execute = recording
+        tools.grasp(tools.parse_adaptive_shape_grasp_pose("white_and_pink_box"))
+        backed = first_moves[0] - released
+        assert float(backed @ -approach) == pytest.approx(0.05, abs=0.005), backed
+        np.testing.assert_allclose(backend.ground_truth.box("cabinet.drawer_1").center, opened, atol=0.005)

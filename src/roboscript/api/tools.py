@@ -26,22 +26,33 @@ from roboscript.api.signature import tool
 from roboscript.backends.base import Backend
 from roboscript.geometry import Box3D, Transform, quat_from_yaw, quat_to_matrix
 from roboscript.perception.base import TABLE, Perception, Receptacle, UnknownObjectError
-from roboscript.perception.grasp_detection import GraspPreferences, GripperGeometry, detect_grasps
+from roboscript.perception.grasp_detection import (
+    WIDTH_MARGIN,
+    GraspPreferences,
+    GripperGeometry,
+    detect_grasps,
+    score_grasp,
+)
 from roboscript.perception.grasp_heuristics import GraspError, central_lift_grasps, horizontal_grasps
 from roboscript.planning.cartesian import arc_poses, cartesian_path
 from roboscript.planning.errors import IKError, PlanningError
 from roboscript.planning.motion import MotionPlanner
 
 PRE_GRASP_DISTANCE = 0.1
+# A box grasp closes on the faces of the object's footprint, not on a pair of points checked against friction:
+# ranked with the contact quality of a middling antipodal pair.
+BOX_GRASP_QUALITY = 0.5
+WIDE_BRANCH_SEARCH = 4  # the best-ranked grasp candidates whose approach is sought on more IK branches
 # Retreats made on the program's behalf before its next motion, unless that motion is one itself: a held object is
 # lifted off its support (up), a released one left behind (the hand backs off along its approach axis).
 LIFT_AFTER_GRASP = 0.05
 RETREAT_AFTER_RELEASE = 0.05
 RELEASE_RETREAT_LEAST = 0.02  # a program's own retreat after a release may stop short of its distance, not of this
-OWN_RETREAT = 0.7  # cosine between a program's motion and the retreat above which that motion is its own retreat
+OWN_RETREAT = 0.5  # cosine (60 deg) above which a program's motion is its own retreat; wider than PREFERENCE_CONE
 PULL_CHECK = 0.25  # metres a drawer handle grasp must be able to pull
 DRAWER_WALL_MARGIN = 0.025
 PLACE_IK_BUDGET = 96  # IK screens per parse_place_pose call (each costs a few milliseconds to ~0.1 s)
+PLACE_RAISE_LIMIT = 0.04  # metres a place pose is raised at most when the held object has sunk in the hand
 PLACE_RETREAT = 0.08  # metres a place pose should leave the hand room to retreat straight up
 # Where things may be put down on the table, from the robot's base: in front of it, clear of it, within reach.
 TABLE_REACH = (np.array([0.15, -0.45]), np.array([0.73, 0.45]))
@@ -206,9 +217,15 @@ class ToolAPI:
                 f"{name!r} is hardly visible to the cameras ({len(cloud.points)} points): no grasp detected"
             )
         detected = detect_grasps(cloud, self.perception.scene_points(), self.gripper, preferences, seed=self.seed)
-        # Where sampling finds no reachable pair (an object nearly as wide as the opening), the box grasps that
-        # fit the object are grasps too: the adaptive grasp is never worse than the central or horizontal one.
-        candidates = [c.pose for c in detected[:12]] + self._box_grasps(name, preferences)
+        # The box grasps that fit the object compete too, ranked by the same score: where sampling finds pairs
+        # only off the middle (a banana half hidden from the cameras) or none within reach (an object nearly as
+        # wide as the opening), the adaptive grasp is then no worse than the central or horizontal one.
+        width = self.gripper.max_width - WIDTH_MARGIN
+        ranked = [(c.score, c.pose) for c in detected[:12]] + [
+            (score_grasp(pose, width, BOX_GRASP_QUALITY, cloud, preferences), pose)
+            for pose in self._box_grasps(name, preferences)
+        ]
+        candidates = [pose for _, pose in sorted(ranked, key=lambda c: -c[0])]
         if not candidates:
             raise GraspError(
                 f"no collision-free antipodal grasp found on {name!r} ({len(cloud.points)} points seen), and it is "
@@ -259,8 +276,36 @@ class ToolAPI:
         self._retreat_first(target.position - self.backend.tcp_pose().position)
         self._allow_start_contacts()
         self._allow_touch_near(target.position)
-        self.motion.move_to_pose(target)
+        try:
+            self.motion.move_to_pose(target)
+        except IKError as exc:
+            higher = self._release_height(target, exc)
+            if higher is None:
+                raise
+            print(
+                f"[move_to_pose] {', '.join(self._held)} sits lower in the hand than when the pose was made: "
+                f"going {higher.position[2] - target.position[2]:.3f} m higher"
+            )
+            self.motion.move_to_pose(higher)
         self._after_motion()
+
+    def _release_height(self, target: Transform, error: IKError) -> Transform | None:
+        """Where the TCP reaches ``target`` but only what it holds collides (an object that turned or slid down
+        in the fingers since its place pose was made, now pressed into its support), the same pose raised the
+        least that clears it, within :data:`PLACE_RAISE_LIMIT`; else None."""
+        held = set(self._held)
+        if not held or not error.colliding or error.position_error > 1e-3:
+            return None
+        if not all(a in held or b in held for a, b in error.colliding):
+            return None
+        for lift in np.arange(0.01, PLACE_RAISE_LIMIT + 1e-9, 0.01):
+            raised = Transform(target.position + np.array([0.0, 0.0, lift]), target.quaternion)
+            try:
+                self.motion.ik(raised)
+            except IKError:
+                continue
+            return raised
+        return None
 
     @tool
     def move_in_direction(self, axis: Sequence[float], distance: float) -> None:
@@ -317,7 +362,8 @@ class ToolAPI:
         """
         target = _pose(grasp_pose, "grasp_pose")
         pre = Transform(target.position - PRE_GRASP_DISTANCE * target.rotation[:, 2], target.quaternion)
-        self._retreat_first(pre.position - self.backend.tcp_pose().position)
+        # The way to the pre-grasp is planned, not straight: it is never the retreat itself, whatever its direction.
+        self._retreat_first(None)
         self._allow_start_contacts()
         # The fingers may touch the object only on the final straight approach, not on the way to its start.
         q = self.motion.sync()
@@ -434,7 +480,7 @@ class ToolAPI:
         # place pose asked for next must allow for, shows only once it hangs free.
         self._pending_retreat = (np.array([0.0, 0.0, 1.0]), LIFT_AFTER_GRASP, "lift")
         if self.backend.gripper_width() < self.gripper.max_width - 0.005:
-            self._retreat_first(np.zeros(3))
+            self._retreat_first(None)
 
     @tool
     def detach_object(self, object_name: str) -> None:
@@ -447,20 +493,26 @@ class ToolAPI:
         if name in self.perception.objects():
             self.motion.detach(name)
             self.motion.scene.allow_leaving("gripper", name, self.motion.sync())
+        else:  # a handle let go: the open fingers may back out of it, not sweep through it
+            q = self.motion.sync()
+            for part in self._part_family(name):
+                self.motion.scene.allow("gripper", part, False)
+                self.motion.scene.allow_leaving("gripper", part, q)
         self.motion.world_changed()
         self._touch_allowed.add(name)
 
     # --- internals -------------------------------------------------------------------------------------------
 
-    def _retreat_first(self, motion: np.ndarray) -> str | None:
-        """Makes the retreat owed since the last grasp or release, unless ``motion`` (the program's next, as a
-        displacement of the TCP) is already one: mostly along the retreat, and at least as long. Returns the
-        retreat's kind ("lift" or "release") when ``motion`` is the program's own retreat, else None."""
+    def _retreat_first(self, motion: np.ndarray | None) -> str | None:
+        """Makes the retreat owed since the last grasp or release, unless ``motion`` (the program's next straight
+        move, as a displacement of the TCP; None for a planned one) is already one: mostly along the retreat, and
+        at least as long. Returns the retreat's kind ("lift" or "release") when ``motion`` is the program's own
+        retreat, else None."""
         pending, self._pending_retreat = self._pending_retreat, None
         if pending is None:
             return None
         direction, distance, kind = pending
-        length = float(np.linalg.norm(motion))
+        length = 0.0 if motion is None else float(np.linalg.norm(motion))
         if length >= distance and float(direction @ motion) / length > OWN_RETREAT:
             return kind
         self._allow_start_contacts()
@@ -545,12 +597,19 @@ class ToolAPI:
         fallback: Transform | None = None
         new = [n for n in self._grasp_family(name) if n not in self._touch_allowed and n not in self._held]
         with _touch(self.motion, new):
-            for candidate in candidates:
+            for rank, candidate in enumerate(candidates):
                 for pose in (candidate, candidate.compose(flip)):
                     try:
                         goal, approach = self.motion.straight_approach(
                             pose, PRE_GRASP_DISTANCE, q, attempts=8, max_attempts=40, branches=3
                         )
+                        if approach is None and rank < WIDE_BRANCH_SEARCH:
+                            # The IK branches nearest the arm's present configuration may all be walled in
+                            # (an arm that has just put something down beside the cabinet): the best-ranked grasps
+                            # are worth a wider search before a worse grasp is taken.
+                            goal, approach = self.motion.straight_approach(
+                                pose, PRE_GRASP_DISTANCE, q, attempts=8, max_attempts=80, branches=8
+                            )
                     except IKError as exc:
                         errors.append(str(exc))
                         continue
@@ -660,11 +719,12 @@ class ToolAPI:
         return out
 
     def _can_retreat(self, pose: Transform, q: np.ndarray) -> bool:
-        """Whether the arm at ``q`` (the TCP at ``pose``) can move straight up by :data:`PLACE_RETREAT` once it has
-        let go (what it holds stays behind)."""
+        """Whether the arm at ``q`` (the TCP at ``pose``) can let go there, the fingers opening fully without
+        touching anything but what they held, and then move straight up by :data:`PLACE_RETREAT` (what it held
+        stays behind)."""
         up = Transform(pose.position + np.array([0.0, 0.0, PLACE_RETREAT]), pose.quaternion)
         scene = self.motion.scene
-        with scene.ignoring_held():
+        with scene.ignoring_held(), scene.fingers_open():
             return cartesian_path(self.motion.kinematics, scene, q, [up]).fraction >= 1.0
 
     def _allow_touch_near(self, point: np.ndarray) -> None:

@@ -160,11 +160,7 @@ def detect_grasps(
     pairs = antipodal_pairs(cloud, gripper, rng)
     if not pairs:
         return []
-    # The object's middle is where most of it is (the median of its points), not the middle of its box: a mug's
-    # handle shifts its box's middle towards the handle, and grasps there would be preferred.
-    box_centre = (cloud.points.min(axis=0) + cloud.points.max(axis=0)) / 2
-    centre_of_object = np.array([*np.median(cloud.points[:, :2], axis=0), box_centre[2]])
-    radius = max(float(np.max(np.linalg.norm(cloud.points[:, :2] - centre_of_object[:2], axis=1))), 0.03)
+    centre_of_object, radius = _middle(cloud)
     near = scene_points[np.linalg.norm(scene_points - centre_of_object, axis=1) < 0.3]
     if len(near) > 6000:
         near = near[rng.choice(len(near), size=6000, replace=False)]
@@ -181,14 +177,47 @@ def detect_grasps(
                     break
             else:
                 continue
-            # Grasps far from the middle (a mug's handle) let the object swing and slip; grasps with little of the
-            # object between the finger pads (the top millimetres of a rim) slip out.
-            offset = float(np.linalg.norm(tcp[:2] - centre_of_object[:2])) / radius
-            held = pad_contact(rotation, tcp, cloud.points, width)
-            score = quality - offset + 1.5 * min(held / 0.025, 1.0) + _preference_score(tcp, rotation, preferences)
-            out.append(GraspCandidate(Transform.from_rotation(tcp, rotation), width, quality, score))
+            pose = Transform.from_rotation(tcp, rotation)
+            score = _score(pose, width, quality, cloud, preferences, centre_of_object, radius)
+            out.append(GraspCandidate(pose, width, quality, score))
     out.sort(key=lambda c: -c.score)
     return out[:max_candidates]
+
+
+def score_grasp(
+    pose: Transform, width: float, quality: float, cloud: ObjectPoints, preferences: GraspPreferences | None = None
+) -> float:
+    """The ranking score :func:`detect_grasps` gives a grasp, for grasps found otherwise (a box grasp at the
+    middle of an object's footprint), so that all can be ranked together."""
+    centre_of_object, radius = _middle(cloud)
+    return _score(pose, width, quality, cloud, preferences or GraspPreferences(), centre_of_object, radius)
+
+
+def _middle(cloud: ObjectPoints) -> tuple[np.ndarray, float]:
+    """The object's middle and its horizontal radius about it. The middle is where most of it is (the median of
+    its points), not the middle of its box: a mug's handle shifts its box's middle towards the handle, and grasps
+    there would be preferred."""
+    box_centre = (cloud.points.min(axis=0) + cloud.points.max(axis=0)) / 2
+    centre = np.array([*np.median(cloud.points[:, :2], axis=0), box_centre[2]])
+    radius = max(float(np.max(np.linalg.norm(cloud.points[:, :2] - centre[:2], axis=1))), 0.03)
+    return centre, radius
+
+
+def _score(
+    pose: Transform,
+    width: float,
+    quality: float,
+    cloud: ObjectPoints,
+    preferences: GraspPreferences,
+    centre_of_object: np.ndarray,
+    radius: float,
+) -> float:
+    # Grasps far from the middle (a mug's handle, a banana's end) let the object swing and slip; grasps with
+    # little of the object between the finger pads (the top millimetres of a rim) slip out.
+    tcp, rotation = pose.position, pose.rotation
+    offset = float(np.linalg.norm(tcp[:2] - centre_of_object[:2])) / radius
+    held = pad_contact(rotation, tcp, cloud.points, width)
+    return quality - offset + 1.5 * min(held / 0.025, 1.0) + _preference_score(tcp, rotation, preferences)
 
 
 def _preference_score(center: np.ndarray, rotation: np.ndarray, preferences: GraspPreferences) -> float:

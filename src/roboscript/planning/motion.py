@@ -5,6 +5,7 @@ This is what the tool API's motion tools call. Every motion starts from the back
 
 from __future__ import annotations
 
+import dataclasses
 from collections.abc import Callable, Sequence
 from typing import Protocol
 
@@ -163,28 +164,30 @@ class MotionPlanner:
         return np.clip(q, self.scene.joint_lower, self.scene.joint_upper)
 
     def plan_to_joints(self, goal: np.ndarray, planner: str | None = None, timeout: float | None = None) -> JointPath:
-        return self._plan(self.sync(), [goal], planner, timeout)
+        return self.plan(self.sync(), [goal], planner, timeout)
 
-    def _plan(
-        self, start: np.ndarray, goals: list[np.ndarray], planner: str | None, timeout: float | None
+    def plan(
+        self, start: np.ndarray, goals: list[np.ndarray], planner: str | None = None, timeout: float | None = None
     ) -> JointPath:
-        """Plans to the first goal; a planner that runs out of time tries again with twice the time, taking the
-        next goal where there are several (another IK branch of the same pose), as MoveIt's planning attempts do:
-        a path that exists is then found on a busy machine too. While the gripper holds something, the path is a
-        transfer (:mod:`roboscript.planning.transfer`) where one can be found."""
+        """A path from ``start`` to the first of ``goals``. A planner that runs out of time tries again with
+        twice the time, up to :data:`PLANNING_ATTEMPTS` runs, taking the next goal where there are several (another
+        IK branch of the same pose), as MoveIt's planning attempts do: a path that exists is then found on a busy
+        machine too (``JointPath.attempts`` says how many runs it took). While the gripper holds something, the
+        path is a transfer (:mod:`roboscript.planning.transfer`) where one can be found."""
         name, budget = planner or self.default_planner, timeout or self.planning_timeout
         transfer = bool(self.scene.attached)  # carried clear of everything where that can be done
         for attempt in range(PLANNING_ATTEMPTS):
             goal, limit = goals[attempt % len(goals)], budget * 2**attempt
             if transfer:
                 try:
-                    return plan_transfer(self.planner, self.kinematics, start, goal, name, limit)
+                    path = plan_transfer(self.planner, self.kinematics, start, goal, name, limit)
+                    return dataclasses.replace(path, attempts=attempt + 1)
                 except PlannerTimeoutError:
                     pass
                 except PlanningError:  # no room to come clear at one end: an ordinary path, from now on
                     transfer = False
             try:
-                return self.planner.plan(start, goal, name, limit)
+                return dataclasses.replace(self.planner.plan(start, goal, name, limit), attempts=attempt + 1)
             except PlannerTimeoutError as exc:
                 last = exc
         raise last
@@ -253,7 +256,7 @@ class MotionPlanner:
     def move_to_any(self, goals: Sequence[np.ndarray], planner: str | None = None) -> int:
         """Plans to the first of ``goals`` (other IK branches of one pose) that a path reaches, trying the next
         where the planner runs out of time, executes it, and returns the index of the goal reached."""
-        path = self._plan(self.sync(), list(goals), planner, None)
+        path = self.plan(self.sync(), list(goals), planner, None)
         self.execute(path)
         return int(np.argmin([float(np.max(np.abs(path.goal - g))) for g in goals]))
 
@@ -287,7 +290,7 @@ class MotionPlanner:
             goals = []
         if preferred is not None:
             goals = [preferred, preferred, *goals]
-        return self._plan(start, goals, planner, timeout)
+        return self.plan(start, goals, planner, timeout)
 
     def cartesian(self, poses: Sequence[Transform], eef_step: float = 0.005) -> CartesianResult:
         """Straight TCP lines through ``poses`` from the present pose; see :func:`cartesian_path`."""

@@ -99,6 +99,7 @@ class JointPath:
     planning_time: float = 0.0  # seconds in the planner and simplifier
     validation_time: float = 0.0  # seconds of dense validation
     replans: int = 0  # times the path failed dense validation and was planned again with finer checks
+    attempts: int = 1  # planner runs it took, each with twice the time of the one before (MotionPlanner.plan)
 
     @property
     def start(self) -> np.ndarray:

@@ -22,6 +22,7 @@ import mujoco
 import numpy as np
 
 from roboscript.geometry import Transform
+from roboscript.robots.description import RobotDescription
 from roboscript.sim.world import RobotBinding, SimWorld, is_descendant
 
 REGRASP_LIMIT = 0.05  # metres a held object may have shifted in the hand and still be where the scene holds it
@@ -101,6 +102,7 @@ class PlanningScene:
         self._attached: dict[str, Attachment] = {}
         self._attached_allowed: dict[str, set[int]] = {}
         self._lower, self._upper = robot.joint_lower - 1e-9, robot.joint_upper + 1e-9
+        self._finger_qpos, self._finger_open = _open_finger_positions(model, robot, self._gripper_bodies)
 
     @classmethod
     def from_sim_world(cls, world: SimWorld, padding: float = 0.005) -> PlanningScene:
@@ -307,6 +309,18 @@ class PlanningScene:
             self.model.geom_contype[geoms], self.model.geom_conaffinity[geoms] = saved
 
     @contextlib.contextmanager
+    def fingers_open(self) -> Iterator[None]:
+        """Within this block, the gripper is fully open (every joint of its linkage at the open position, the
+        model's reference elsewhere): for questions about the hand once it lets go, when the fingers spread to
+        their full width whatever stands beside them."""
+        saved = self.data.qpos[self._finger_qpos].copy()
+        self.data.qpos[self._finger_qpos] = self._finger_open
+        try:
+            yield
+        finally:
+            self.data.qpos[self._finger_qpos] = saved
+
+    @contextlib.contextmanager
     def held_clearance(self, clearance: float) -> Iterator[None]:
         """Within this block, what the gripper holds counts as colliding closer than ``clearance`` to anything
         (rather than the padding): for transfers, where a held object swinging a little must not graze what it
@@ -427,3 +441,22 @@ def _moved_by_arm(model: mujoco.MjModel, body: int, robot: RobotBinding) -> bool
             return True
         body = model.body_parentid[body]
     return False
+
+
+def _open_finger_positions(
+    model: mujoco.MjModel, robot: RobotBinding, gripper_bodies: np.ndarray
+) -> tuple[np.ndarray, np.ndarray]:
+    """The qpos addresses of the gripper's joints and their values when it is fully open: the description's open
+    positions for its driven joints, the model's reference for the rest of a linkage (open at zero, as the 2F-85's
+    followers are)."""
+    open_by_name = dict(
+        zip(
+            (RobotDescription.qualified(j) for j in robot.description.gripper.joints),
+            robot.description.gripper.open_qpos,
+            strict=True,
+        )
+    )
+    joints = [j for j in range(model.njnt) if model.jnt_bodyid[j] in set(gripper_bodies.tolist())]
+    addresses = np.array([model.jnt_qposadr[j] for j in joints], dtype=int)
+    values = np.array([open_by_name.get(model.joint(j).name, model.qpos0[model.jnt_qposadr[j]]) for j in joints])
+    return addresses, values
