@@ -4,7 +4,7 @@ import math
 
 import numpy as np
 
-from roboscript.api.placement import Footprint, fits, gap, spot_at, spots_in_receptacle
+from roboscript.api.spots import Footprint, fits, gap, spot_at, spots_in_receptacle
 from roboscript.geometry import Box3D, Transform
 from roboscript.perception.base import ObjectPoints, Receptacle
 from roboscript.perception.grasp_detection import GraspPreferences, GripperGeometry, collides, detect_grasps

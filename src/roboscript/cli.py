@@ -439,10 +439,7 @@ def build_parser() -> argparse.ArgumentParser:
 
 def main(argv: list[str] | None = None) -> int:
     args = build_parser().parse_args(argv)
-    from roboscript.llm import LLMError
-    from roboscript.perception.detectors import DetectorError
-    from roboscript.robots.assets import AssetNotFoundError
-    from roboscript.sim.world_file import WorldFileError
+    from roboscript.errors import RoboScriptError, error_message
 
     try:
         if hasattr(args, "perception"):
@@ -450,9 +447,8 @@ def main(argv: list[str] | None = None) -> int:
 
             require_ready(args.perception)  # a missing detector fails here, before any world is built
         return args.func(args)
-    except (WorldFileError, AssetNotFoundError, KeyError, ValueError, LLMError, DetectorError) as exc:
-        message = exc.args[0] if isinstance(exc, KeyError) and exc.args else str(exc)
-        print(f"roboscript: error: {message}", file=sys.stderr)
+    except (RoboScriptError, KeyError, ValueError) as exc:  # the builtins: argument checks in the commands
+        print(f"roboscript: error: {error_message(exc)}", file=sys.stderr)
         return 2
 
 

@@ -12,10 +12,12 @@ from typing import Any, ClassVar, NoReturn
 
 import yaml
 
+from roboscript.errors import UsageError
+
 DATA_SUFFIXES = (".yaml", ".yml", ".json")
 
 
-class DataFileError(ValueError):
+class DataFileError(UsageError, ValueError):
     """A data file that cannot be loaded: ``<kind> file <source>: <entry>: <problem>``."""
 
     kind: ClassVar[str] = "data"

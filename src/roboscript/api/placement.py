@@ -1,27 +1,42 @@
-"""Where a held object can go: free spots inside a receptacle, on the table, or at a given position.
+"""Placement search: the gripper pose that puts a held object into a receptacle, aside on the table, or at a
+position, reachable and with room for the hand to let go and back away.
 
-Candidates are object positions (the middle of the object's footprint, at its box's height) with a yaw turn; the
-tool layer turns them into gripper poses and keeps the first one the arm can reach. A spot is free when the
-object's footprint, with a margin, stays inside the receptacle's interior and clear of every other object's
-footprint. Footprints are turned rectangles: a banana lying at 30 degrees covers a strip of a plate, while its
-world-aligned box would cover most of it.
+Spots come from :mod:`roboscript.api.spots` (geometry); this module asks perception what is where and the motion
+planner what the arm can reach.
 """
 
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
+from collections.abc import Collection
 
 import numpy as np
 
-from roboscript.geometry import Box3D
-from roboscript.perception.base import Receptacle
+from roboscript.api.spots import (
+    MARGIN,
+    Footprint,
+    PlacementSpot,
+    fits,
+    spot_at,
+    spots_in_receptacle,
+)
+from roboscript.errors import FailureError
+from roboscript.geometry import Box3D, Transform, quat_from_yaw, quat_to_matrix
+from roboscript.names import TABLE, kind_of
+from roboscript.perception.base import Perception, Receptacle, UnknownObjectError
+from roboscript.planning.cartesian import cartesian_path
+from roboscript.planning.errors import IKError
+from roboscript.planning.motion import MotionPlanner
 
-MARGIN = 0.007  # clearance kept from walls and from other objects
-DROP = 0.012  # the object is released this far above its support
+DRAWER_WALL_MARGIN = 0.025
+PLACE_IK_BUDGET = 96  # IK screens per parse_place_pose call (each costs a few milliseconds to ~0.1 s)
+PLACE_RAISE_LIMIT = 0.04  # metres a place pose is raised at most when the held object has sunk in the hand
+PLACE_RETREAT = 0.08  # metres a place pose should leave the hand room to retreat straight up
+# Where things may be put down on the table, from the robot's base: in front of it, clear of it, within reach.
+TABLE_REACH = (np.array([0.15, -0.45]), np.array([0.73, 0.45]))
 
 
-class PlacementError(RuntimeError):
+class PlacementError(FailureError, RuntimeError):
     """No free, reachable spot was found; the message says what was in the way."""
 
 
@@ -29,112 +44,241 @@ class ReceptacleFullError(PlacementError):
     """The receptacle has no free spot large enough for the object."""
 
 
-@dataclass(frozen=True)
-class Footprint:
-    """A rectangle on the table: centre (x, y), turned by ``yaw`` radians, with half-extents along its own axes."""
+class Placer:
+    """Placement search for the arm whose base stands at ``base_xy``."""
 
-    center: np.ndarray
-    yaw: float
-    half: np.ndarray
+    def __init__(self, perception: Perception, motion: MotionPlanner, base_xy: np.ndarray):
+        self.perception = perception
+        self.motion = motion
+        self.base_xy = np.asarray(base_xy, dtype=float)
 
-    @staticmethod
-    def of_box(box: Box3D) -> Footprint:
-        return Footprint(box.center[:2], 0.0, box.size[:2] / 2)
+    def spots(
+        self, name: str, receptacle_name: str | None, position: np.ndarray | None
+    ) -> tuple[list[PlacementSpot], str]:
+        """Where the held ``name`` could go: free spots in ``receptacle_name`` (``'table'``: aside on the table),
+        or the one at ``position``; with the words that say where, for errors."""
+        others = [o for o in self.perception.objects() if o not in (name, receptacle_name)]
+        if position is not None:
+            target = np.asarray(position, dtype=float)
+            spots, where = [self._spot_at(name, target, others)], f"at {np.round(target, 3).tolist()}"
+        else:
+            receptacle = self._receptacle(receptacle_name, name)
+            if receptacle_name == TABLE:
+                spots = self._spots_aside(name, receptacle, others)
+            else:
+                spots = self._spots_in(name, receptacle, others)
+            if not spots:
+                inside = [o for o in others if _within(self.perception.box(o), receptacle)]
+                size = self.perception.box(name).size
+                raise ReceptacleFullError(
+                    f"{receptacle_name!r} has no free spot for {name!r} "
+                    f"({size[0] * 100:.0f} x {size[1] * 100:.0f} cm); "
+                    f"it holds {', '.join(inside) or 'nothing'}"
+                )
+            where = f"in {receptacle_name!r}"
+        return spots, where
 
-    def axes(self) -> np.ndarray:
-        c, s = math.cos(self.yaw), math.sin(self.yaw)
-        return np.array([[c, s], [-s, c]])
+    def reachable(self, name: str, tcp: Transform, spots: list[PlacementSpot], where: str) -> Transform:
+        """The gripper pose, from the hand at ``tcp`` holding ``name``, for the first of ``spots`` the arm can
+        reach and leave (see :meth:`_reachable_place`)."""
+        # Spots are where the middle of the object's footprint goes (for a curved banana lying turned, not the
+        # middle of its world-aligned box): the hand turns about that.
+        footprint_center = self.perception.footprint(name)[0]
+        pivot = np.array([footprint_center[0], footprint_center[1], self.perception.box(name).center[2]])
 
-    def corners(self) -> np.ndarray:
-        signs = np.array([[1, 1], [1, -1], [-1, 1], [-1, -1]])
-        return np.asarray(self.center) + (signs * self.half) @ self.axes()
+        return self._reachable_place(name, tcp, pivot, spots, where)
+
+    def raised_for_release(self, target: Transform, error: IKError, held: Collection[str]) -> Transform | None:
+        """Where the TCP reaches ``target`` but only what it holds collides (an object that turned or slid down
+        in the fingers since its place pose was made, now pressed into its support), the same pose raised the
+        least that clears it, within :data:`PLACE_RAISE_LIMIT`; else None."""
+        held = set(held)
+        if not held or not error.colliding or error.position_error > 1e-3:
+            return None
+        if not all(a in held or b in held for a, b in error.colliding):
+            return None
+        for lift in np.arange(0.01, PLACE_RAISE_LIMIT + 1e-9, 0.01):
+            raised = Transform(target.position + np.array([0.0, 0.0, lift]), target.quaternion)
+            try:
+                self.motion.ik(raised)
+            except IKError:
+                continue
+            return raised
+        return None
+
+    def _spot_at(self, name: str, target: np.ndarray, others: list[str]) -> PlacementSpot:
+        """The held object at ``target``, resting on whatever is under it there (the table at least)."""
+        size = self.perception.box(name).size
+        below = [self.perception.box(o) for o in others]
+        table_top = float(self.perception.box(TABLE).upper[2])
+        support = max([table_top] + [b.upper[2] for b in below if _overlaps_xy(b, target[:2], size[:2] / 2)])
+        return spot_at(target, size, support)
+
+    def _spots_aside(self, name: str, table: Receptacle, others: list[str]) -> list[PlacementSpot]:
+        """Spots on the table for putting the held object aside: clear of objects, furniture and whatever the
+        cameras see there, near where it was but not on it."""
+        box = self.perception.box(name)
+        _, yaw, half = self.perception.footprint(name)
+        obstacles = [self._footprint(o) for o in others]
+        obstacles += [Footprint.of_box(self.perception.box(n)) for n in self.perception.furniture()]
+        spots = spots_in_receptacle(table, half, yaw, box.size[2], obstacles, self.base_xy, near_xy=box.center[:2])
+        radius = float(np.linalg.norm(half)) + MARGIN
+        spots = _clear_of(spots, self.perception.occupied([name]), radius, table.lower[2])
+        return [s for s in spots if np.linalg.norm(s.center[:2] - box.center[:2]) > 0.15]
+
+    def _spots_in(self, name: str, receptacle: Receptacle, others: list[str]) -> list[PlacementSpot]:
+        """Free spots for the held object in a container or a drawer, clear of what is already in it."""
+        _, yaw, half = self.perception.footprint(name)
+        inside = [self._footprint(o) for o in others if _within(self.perception.box(o), receptacle)]
+        # A drawer's front and walls stand high around a held object that may swing a little.
+        wall_margin = DRAWER_WALL_MARGIN if kind_of(receptacle.name) == "drawer" else MARGIN
+        height = self.perception.box(name).size[2]
+        corner = self._fill_corner(receptacle)
+        return spots_in_receptacle(receptacle, half, yaw, height, inside, corner, wall_margin=wall_margin)
+
+    def _holds_things(self, name: str) -> bool:
+        """Whether ``name`` is a receptacle, for an error message: False where perception cannot tell."""
+        try:
+            return self.perception.receptacle(name) is not None
+        except (UnknownObjectError, ValueError):
+            return False
+
+    def _receptacle(self, receptacle_name: str, held: str) -> Receptacle:
+        if receptacle_name == TABLE:
+            return self._table_region()
+        name = self.perception.require(receptacle_name)
+        if name == held:
+            raise ValueError(f"cannot place {held!r} into itself")
+        receptacle = self.perception.receptacle(name)
+        if receptacle is None:
+            containers = [n for n in self.perception.names() if self._holds_things(n)]
+            raise ValueError(
+                f"{name!r} cannot hold things; receptacles here: {', '.join([*containers, TABLE])}; or pass position="
+            )
+        if receptacle.upper[0] - receptacle.lower[0] < 0.04 and kind_of(name) == "drawer":
+            raise PlacementError(f"{name!r} is closed: open it before placing anything into it")
+        _, _, half = self.perception.footprint(held)
+        if not fits(receptacle, half):
+            inner = receptacle.upper - receptacle.lower
+            raise PlacementError(
+                f"{held!r} ({half[0] * 200:.0f} x {half[1] * 200:.0f} cm) does not fit into {name!r}, "
+                f"whose free interior is {inner[0] * 100:.0f} x {inner[1] * 100:.0f} cm"
+            )
+        return receptacle
+
+    def _footprint(self, name: str) -> Footprint:
+        center, yaw, half = self.perception.footprint(name)
+        return Footprint(np.asarray(center, dtype=float), float(yaw), np.asarray(half, dtype=float))
+
+    def _table_region(self) -> Receptacle:
+        """Where things may be put aside on the table: its top as perception knows it, within the robot's reach."""
+        table = self.perception.box(TABLE)
+        reach_lower, reach_upper = self.base_xy + TABLE_REACH[0], self.base_xy + TABLE_REACH[1]
+        lower = np.maximum(table.lower[:2], reach_lower)
+        upper = np.minimum(table.upper[:2], reach_upper)
+        top = float(table.upper[2])
+        if np.any(upper <= lower):
+            raise PlacementError(f"no part of the table {np.round(table.as_array(), 3).tolist()} is within reach")
+        return Receptacle(TABLE, Transform.identity(), np.array([*lower, top]), np.array([*upper, top + 0.4]))
+
+    def _fill_corner(self, receptacle: Receptacle) -> np.ndarray:
+        """Where filling starts: the corner nearest the robot; for a drawer, the front corner nearest the robot
+        (the back of an open drawer is under the carcass, where the arm has no room)."""
+        if kind_of(receptacle.name) != "drawer":
+            return self.base_xy
+        lower, upper = receptacle.lower, receptacle.upper
+        fronts = receptacle.frame.apply(np.array([[upper[0], lower[1], 0.0], [upper[0], upper[1], 0.0]]))[:, :2]
+        return fronts[int(np.argmin(np.linalg.norm(fronts - self.base_xy, axis=1)))]
+
+    def _reachable_place(
+        self, name: str, tcp: Transform, pivot: np.ndarray, spots: list[PlacementSpot], where: str
+    ) -> Transform:
+        """The first spot (in order, skipping near-repeats of spots that failed) with a collision-free IK from which
+        the hand can also retreat straight up (:data:`PLACE_RETREAT`), as a place's retreat would: a hand put
+        down with a link against the cabinet has no way out but through what it let go. Each spot is tried with
+        the object turned as the spot allows (round, or any quarter turn at a position), and released higher up
+        so the hand clears a deep container's walls; of the turns and IK branches that work at a height, the one
+        nearest the arm's present configuration is taken (a hand kept facing one way can make the arm swing
+        round behind itself). Where no spot allows the retreat, the first reachable one is taken. The
+        configuration chosen becomes the motion's goal for that pose (:meth:`MotionPlanner.prefer_goal`)."""
+        q = self.motion.sync()
+        tried: list[PlacementSpot] = []
+        errors: list[str] = []
+        fallback: tuple[Transform, np.ndarray] | None = None
+        budget = PLACE_IK_BUDGET
+        for spot in spots:
+            if budget <= 0:
+                break
+            if any(np.linalg.norm(spot.center - t.center) < 0.05 and _same_turn(spot.yaw, t.yaw) for t in tried):
+                continue
+            tried.append(spot)
+            for lift in (0.0, 0.02, 0.05, 0.1):
+                reached = self._place_options(spot, lift, tcp, pivot, q, errors)
+                budget -= len(spot.turns)
+                fallback = fallback or next(((pose, goals[0]) for pose, goals in reached), None)
+                leaving = [(pose, g) for pose, goals in reached for g in goals if self._can_retreat(pose, g)]
+                if leaving:
+                    pose, goal = min(leaving, key=lambda c: float(np.sum((c[1] - q) ** 2)))
+                    self.motion.prefer_goal(pose, goal)
+                    return pose
+                if budget <= 0:
+                    break
+        if fallback is not None:
+            self.motion.prefer_goal(*fallback)
+            return fallback[0]
+        raise PlacementError(
+            f"no reachable, collision-free pose puts {name!r} {where} ({len(tried)} spots tried): "
+            f"{errors[0] if errors else 'no spot'}"
+        )
+
+    def _place_options(
+        self, spot: PlacementSpot, lift: float, tcp: Transform, pivot: np.ndarray, q: np.ndarray, errors: list[str]
+    ) -> list[tuple[Transform, list[np.ndarray]]]:
+        """The gripper poses that put the held object at ``spot`` (``lift`` higher), one per turn it allows, with
+        their collision-free IK branches; the poses without any add their reason to ``errors``."""
+        out = []
+        for turn in spot.turns:
+            rotation = quat_to_matrix(quat_from_yaw(spot.yaw + turn))
+            # Turning the held object about world z around its middle turns the gripper with it.
+            position = spot.center + [0.0, 0.0, lift] + rotation @ (tcp.position - pivot)
+            pose = Transform.from_rotation(position, rotation @ tcp.rotation)
+            try:
+                out.append((pose, self.motion.ik_choices(pose, q, attempts=8, max_attempts=24)))
+            except IKError as exc:
+                errors.append(str(exc))
+        return out
+
+    def _can_retreat(self, pose: Transform, q: np.ndarray) -> bool:
+        """Whether the arm at ``q`` (the TCP at ``pose``) can let go there, the fingers opening fully without
+        touching anything but what they held, and then move straight up by :data:`PLACE_RETREAT` (what it held
+        stays behind)."""
+        up = Transform(pose.position + np.array([0.0, 0.0, PLACE_RETREAT]), pose.quaternion)
+        scene = self.motion.scene
+        with scene.ignoring_held(), scene.fingers_open():
+            return cartesian_path(self.motion.kinematics, scene, q, [up]).fraction >= 1.0
 
 
-def gap(a: Footprint, b: Footprint) -> float:
-    """How far apart two footprints are along the axis that separates them best (negative: they overlap)."""
-    best = -math.inf
-    ca, cb = a.corners(), b.corners()
-    for axis in np.vstack([a.axes(), b.axes()]):
-        pa, pb = ca @ axis, cb @ axis
-        best = max(best, float(pb.min() - pa.max()), float(pa.min() - pb.max()))
-    return best
+def _clear_of(spots: list, points: np.ndarray, radius: float, table_top: float) -> list:
+    """The spots with no observed point above the table within ``radius`` of their centre (on the table's level:
+    the table itself and what hangs high above it do not count)."""
+    band = points[(points[:, 2] > table_top + 0.005) & (points[:, 2] < table_top + 0.5)][:, :2]
+    if len(band) == 0:
+        return spots
+    return [s for s in spots if float(np.min(np.linalg.norm(band - s.center[:2], axis=1))) > radius]
 
 
-@dataclass(frozen=True)
-class PlacementSpot:
-    """Where the middle of the object's footprint goes (its box's middle in height), and the yaw turn (radians)
-    about world z from its present pose; ``score`` orders spots (higher first). ``turns``: further turns about z
-    the object may be given there (a spot at a position does not care how the object faces; one squared to a
-    receptacle may only be turned round)."""
-
-    center: np.ndarray
-    yaw: float
-    score: float
-    turns: tuple[float, ...] = (0.0, math.pi)
+def _same_turn(a: float, b: float) -> bool:
+    """Whether two yaw turns face the same way, or opposite ways (a spot tried both ways round already)."""
+    return abs(math.remainder(a - b, math.pi)) < 0.1
 
 
-def spots_in_receptacle(
-    receptacle: Receptacle,
-    half_xy: np.ndarray,
-    object_yaw: float,
-    height: float,
-    obstacles: list[Footprint],
-    corner_xy: np.ndarray,
-    step: float = 0.015,
-    near_xy: np.ndarray | None = None,
-    wall_margin: float = MARGIN,
-) -> list[PlacementSpot]:
-    """Free spots inside the receptacle's interior, filled from the corner nearest ``corner_xy`` outwards.
-
-    The object (footprint half-extents ``half_xy`` in its own frame, turned by ``object_yaw``) is turned square to
-    the receptacle in each of four ways. Filling from one corner, like packing a box, leaves the most room for
-    what comes next; the corner nearest the robot keeps the arm's reach short. With ``near_xy`` (putting
-    something aside on the table) the spots nearest that point come first instead.
-    """
-    lower, upper = receptacle.lower, receptacle.upper
-    rotation = receptacle.frame.rotation
-    frame_yaw = math.atan2(rotation[1, 0], rotation[0, 0])
-    bottom = receptacle.frame.apply(np.array([[0.0, 0.0, lower[2]]]))[0, 2]
-    local_corner = receptacle.frame.inverse().apply(np.array([[*corner_xy, bottom]]))[0, :2]
-    corner = np.clip(local_corner, lower[:2], upper[:2])
-    corner = np.where(np.abs(corner - lower[:2]) < np.abs(corner - upper[:2]), lower[:2], upper[:2])
-    out: list[PlacementSpot] = []
-    for quarter in range(4):
-        aligned = frame_yaw + quarter * math.pi / 2
-        turn = math.remainder(aligned - object_yaw, 2 * math.pi)
-        half = (half_xy if quarter % 2 == 0 else half_xy[::-1]) + wall_margin
-        lo, hi = lower[:2] + half, upper[:2] - half
-        if np.any(hi < lo - 1e-9):
-            continue
-        xs = np.arange(lo[0], hi[0] + 1e-9, step) if hi[0] - lo[0] > step else np.array([(lo[0] + hi[0]) / 2])
-        ys = np.arange(lo[1], hi[1] + 1e-9, step) if hi[1] - lo[1] > step else np.array([(lo[1] + hi[1]) / 2])
-        own_half = (half_xy if quarter % 2 == 0 else half_xy[::-1]) + MARGIN
-        for x in xs:
-            for y in ys:
-                world = receptacle.frame.apply(np.array([[x, y, 0.0]]))[0]
-                here = Footprint(world[:2], frame_yaw, own_half)
-                if any(gap(here, o) < 0 for o in obstacles):
-                    continue
-                center = np.array([world[0], world[1], bottom + height / 2 + DROP])
-                # Nearest the corner first; among equals, the smaller turn.
-                if near_xy is None:
-                    score = -float(np.abs(np.array([x, y]) - corner).sum()) - 0.01 * abs(turn)
-                else:
-                    score = -float(np.linalg.norm(world[:2] - near_xy)) - 0.01 * abs(turn)
-                out.append(PlacementSpot(center, turn, score))
-    out.sort(key=lambda s: -s.score)
-    return out
+def _overlaps_xy(box: Box3D, center: np.ndarray, half: np.ndarray) -> bool:
+    return bool(np.all(np.abs(box.center[:2] - center) < box.size[:2] / 2 + half))
 
 
-def fits(receptacle: Receptacle, half_xy: np.ndarray) -> bool:
-    """Whether a footprint of half-extents ``half_xy`` fits the empty interior at all (in some quarter turn)."""
-    inner = receptacle.upper[:2] - receptacle.lower[:2] - 2 * MARGIN
-    size = 2 * np.asarray(half_xy)
-    return bool(np.all(size <= inner + 1e-9) or np.all(size[::-1] <= inner + 1e-9))
+def _within(box: Box3D, receptacle: Receptacle) -> bool:
+    """Whether an object's box centre lies in the receptacle's interior (in its frame)."""
+    local = receptacle.frame.inverse().apply(box.center[None])[0]
+    return bool(np.all(local >= receptacle.lower - 0.01) and np.all(local <= receptacle.upper + 0.01))
 
 
-def spot_at(position: np.ndarray, object_size: np.ndarray, support_top: float) -> PlacementSpot:
-    """The object centred at ``position``; never lower than resting on the support beneath it."""
-    rest = support_top + object_size[2] / 2 + DROP
-    center = np.array([position[0], position[1], max(float(position[2]), rest)])
-    return PlacementSpot(center, 0.0, 0.0, (0.0, math.pi / 2, -math.pi / 2, math.pi))

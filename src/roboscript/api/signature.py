@@ -6,11 +6,13 @@ import functools
 import inspect
 from collections.abc import Callable
 
+from roboscript.errors import UsageError
+
 # Keyword names that programs written for the original system use, and the names they stand for here.
 ALIASES: dict[str, str] = {"obj_name": "object_name", "direction": "axis", "category_list": "object_list"}
 
 
-class ToolCallError(TypeError):
+class ToolCallError(UsageError, TypeError):
     """A tool was called with arguments that do not fit its signature."""
 
 

@@ -11,21 +11,13 @@ from collections.abc import Sequence
 
 import numpy as np
 
-from roboscript.api.placement import (
-    MARGIN,
-    Footprint,
-    PlacementError,
-    PlacementSpot,
-    ReceptacleFullError,
-    fits,
-    spot_at,
-    spots_in_receptacle,
-)
+from roboscript.api.placement import Placer
 from roboscript.api.pose import Pose, _real
 from roboscript.api.signature import tool
 from roboscript.backends.base import Backend
-from roboscript.geometry import Box3D, Transform, quat_from_yaw, quat_to_matrix
-from roboscript.perception.base import TABLE, Perception, Receptacle, UnknownObjectError
+from roboscript.geometry import Transform, rotation_angle_between
+from roboscript.names import is_part, kind_of
+from roboscript.perception.base import Perception, UnknownObjectError
 from roboscript.perception.grasp_detection import (
     WIDTH_MARGIN,
     GraspPreferences,
@@ -34,7 +26,8 @@ from roboscript.perception.grasp_detection import (
     score_grasp,
 )
 from roboscript.perception.grasp_heuristics import GraspError, central_lift_grasps, horizontal_grasps
-from roboscript.planning.cartesian import arc_poses, cartesian_path
+from roboscript.planning.cartesian import arc_poses
+from roboscript.planning.contacts import ContactAllowances
 from roboscript.planning.errors import IKError, PlanningError
 from roboscript.planning.motion import MotionPlanner
 
@@ -48,14 +41,9 @@ WIDE_BRANCH_SEARCH = 4  # the best-ranked grasp candidates whose approach is sou
 LIFT_AFTER_GRASP = 0.05
 RETREAT_AFTER_RELEASE = 0.05
 RELEASE_RETREAT_LEAST = 0.02  # a program's own retreat after a release may stop short of its distance, not of this
+SAME_ORIENTATION = 0.05  # radians: a move_to_pose turning the hand less is a straight move, a retreat if it backs off
 OWN_RETREAT = 0.5  # cosine (60 deg) above which a program's motion is its own retreat; wider than PREFERENCE_CONE
 PULL_CHECK = 0.25  # metres a drawer handle grasp must be able to pull
-DRAWER_WALL_MARGIN = 0.025
-PLACE_IK_BUDGET = 96  # IK screens per parse_place_pose call (each costs a few milliseconds to ~0.1 s)
-PLACE_RAISE_LIMIT = 0.04  # metres a place pose is raised at most when the held object has sunk in the hand
-PLACE_RETREAT = 0.08  # metres a place pose should leave the hand room to retreat straight up
-# Where things may be put down on the table, from the robot's base: in front of it, clear of it, within reach.
-TABLE_REACH = (np.array([0.15, -0.45]), np.array([0.73, 0.45]))
 JOINT_TYPES = ("any", "revolute", "prismatic")
 
 
@@ -73,19 +61,25 @@ class ToolAPI:
         )
         self.base_xy = np.asarray(motion.kinematics.mount.position[:2], dtype=float)
         self._held: list[str] = []
-        # Names the gripper may touch until it has moved clear of them (what it grasped or just let go of).
-        self._touch_allowed: set[str] = set()
-        self._link_contacts: set[tuple[str, str]] = set()  # arm links allowed to leave a contact they start in
+        self.contacts = ContactAllowances(motion, self._grasp_family)
+        self.placer = Placer(perception, motion, self.base_xy)
         # Owed before the next motion: (direction, distance, "lift" after a grasp or "release" after letting go).
         self._pending_retreat: tuple[np.ndarray, float, str] | None = None
+        self._owed_retreat: tuple[np.ndarray, float, str] | None = None
 
     @classmethod
     def for_simulation(cls, backend, seed: int = 0, perception: str = "gt") -> ToolAPI:
         """The tools on a simulated ``backend``, with perception and the planning scene as the mode
         ``perception`` says (see :mod:`roboscript.perception.modes`): ground truth by default."""
+        from roboscript.perception.ground_truth import GroundTruthPerception
         from roboscript.perception.modes import make_perception, parse_mode
 
         seen = make_perception(perception, backend, seed)
+        if isinstance(seen, GroundTruthPerception):
+            # One look before anything moves, as a tracker that has watched the scene from the start would have
+            # had: a program that pulls a drawer before it asks about a mug would otherwise see the mug first with
+            # the arm in front of it. (The camera pipeline looks at everything at the first question anyway.)
+            seen.detect(None)
         if parse_mode(perception).observed_scene:
             motion = MotionPlanner.perceived_in_mujoco(backend, seen, seed=seed)
         else:
@@ -229,7 +223,8 @@ class ToolAPI:
         if not candidates:
             raise GraspError(
                 f"no collision-free antipodal grasp found on {name!r} ({len(cloud.points)} points seen), and it is "
-                f"wider than the gripper's {self.gripper.max_width * 100:.1f} cm opening across every side"
+                f"wider than the gripper's {self.gripper.max_width * 100:.1f} cm opening across every side, so no "
+                "central lift or horizontal grasp fits either"
             )
         return Pose.from_transform(self._first_reachable(name, candidates, "adaptive"))
 
@@ -273,13 +268,17 @@ class ToolAPI:
     def move_to_pose(self, pose: Pose) -> None:
         """Collision-free motion of the TCP to ``pose``: a straight line when feasible, else a planned path."""
         target = _pose(pose, "pose")
-        self._retreat_first(target.position - self.backend.tcp_pose().position)
-        self._allow_start_contacts()
+        current = self.backend.tcp_pose()
+        own = self._retreat_first(target.position - current.position)
+        self._leave_where_started()
+        turned = rotation_angle_between(current.quaternion, target.quaternion)
+        if own == "release" and turned < SAME_ORIENTATION and self._own_retreat(target.position - current.position):
+            return
         self._allow_touch_near(target.position)
         try:
             self.motion.move_to_pose(target)
         except IKError as exc:
-            higher = self._release_height(target, exc)
+            higher = self.placer.raised_for_release(target, exc, self._held)
             if higher is None:
                 raise
             print(
@@ -287,25 +286,7 @@ class ToolAPI:
                 f"going {higher.position[2] - target.position[2]:.3f} m higher"
             )
             self.motion.move_to_pose(higher)
-        self._after_motion()
-
-    def _release_height(self, target: Transform, error: IKError) -> Transform | None:
-        """Where the TCP reaches ``target`` but only what it holds collides (an object that turned or slid down
-        in the fingers since its place pose was made, now pressed into its support), the same pose raised the
-        least that clears it, within :data:`PLACE_RAISE_LIMIT`; else None."""
-        held = set(self._held)
-        if not held or not error.colliding or error.position_error > 1e-3:
-            return None
-        if not all(a in held or b in held for a, b in error.colliding):
-            return None
-        for lift in np.arange(0.01, PLACE_RAISE_LIMIT + 1e-9, 0.01):
-            raised = Transform(target.position + np.array([0.0, 0.0, lift]), target.quaternion)
-            try:
-                self.motion.ik(raised)
-            except IKError:
-                continue
-            return raised
-        return None
+        self.contacts.withdraw_cleared(self._held)
 
     @tool
     def move_in_direction(self, axis: Sequence[float], distance: float) -> None:
@@ -315,18 +296,11 @@ class ToolAPI:
         if abs(distance) > 1.5:
             raise ValueError(f"distance is in metres and must be within [-1.5, 1.5], got {distance}")
         own = self._retreat_first(direction * distance)
-        self._allow_start_contacts()
-        if own == "release":
-            # Backing off from what was just let go goes as far as reach allows: an opened drawer's handle may
-            # stand at the edge of the workspace, and the retreat's purpose (clearing it) is met before its end.
-            moved = self.motion.retreat(direction, distance, least=min(RELEASE_RETREAT_LEAST, distance))
-            if moved > 0.0:
-                if moved < distance - 1e-3:
-                    print(f"[move_in_direction] retreated {moved:.3f} m of {distance:.3f} m: the rest is out of reach")
-                self._after_motion()
-                return
+        self._leave_where_started()
+        if own == "release" and self._own_retreat(direction * distance):
+            return
         self.motion.move_in_direction(direction, distance, plan_if_blocked=True)
-        self._after_motion()
+        self.contacts.withdraw_cleared(self._held)
 
     @tool
     def generate_arc_path_around_joint(
@@ -350,9 +324,9 @@ class ToolAPI:
             raise TypeError(f"path must be a non-empty list of Pose, got {type(path).__name__}")
         targets = [_pose(p, f"path[{i}]") for i, p in enumerate(path)]
         self._retreat_first(targets[0].position - self.backend.tcp_pose().position)
-        self._allow_start_contacts()
+        self._leave_where_started()
         self.motion.follow(targets)
-        self._after_motion()
+        self.contacts.withdraw_cleared(self._held)
 
     @tool
     def grasp(self, grasp_pose: Pose) -> None:
@@ -361,27 +335,16 @@ class ToolAPI:
         The gripper is not closed; call ``close_gripper()`` next.
         """
         target = _pose(grasp_pose, "grasp_pose")
-        pre = Transform(target.position - PRE_GRASP_DISTANCE * target.rotation[:, 2], target.quaternion)
         # The way to the pre-grasp is planned, not straight: it is never the retreat itself, whatever its direction.
         self._retreat_first(None)
-        self._allow_start_contacts()
+        self._leave_where_started()
         # The fingers may touch the object only on the final straight approach, not on the way to its start.
-        q = self.motion.sync()
-        with _touch(self.motion, self._new_touches(target.position)):
-            options = self.motion.straight_approaches(target, PRE_GRASP_DISTANCE, q)
-        # Each IK branch with a clear approach line is a goal: where the planner finds none to one branch's
-        # pre-grasp (it may be walled in by the table on a 6-joint arm), it tries the next.
-        starts = [approach[0] if approach is not None else self.motion.ik(pre, goal) for goal, approach in options]
-        goal, approach = options[self.motion.move_to_any(starts)]
+        with self.contacts.touching(self._new_touches(target.position)):
+            options = self.motion.approaches(target, PRE_GRASP_DISTANCE)
+        chosen = self.motion.move_to_approach(options, target, PRE_GRASP_DISTANCE)
         self._allow_touch_near(target.position)
-        if approach is not None:
-            approach[0] = self.motion.sync()
-            self.motion.execute(approach)
-        else:
-            line = self.motion.cartesian([target])
-            # Should the straight approach be blocked after all (the world moved), a planned one is the fallback.
-            self.motion.execute(line.waypoints if line.fraction >= 1.0 else self.motion.plan_to_joints(goal))
-        self._after_motion()
+        self.motion.finish_approach(chosen, target)
+        self.contacts.withdraw_cleared(self._held)
 
     @tool
     def parse_place_pose(
@@ -399,60 +362,9 @@ class ToolAPI:
                 f"parse_place_pose needs {name!r} in the gripper (it holds {held}): grasp it, close_gripper() and "
                 f"attach_object({name!r}) first"
             )
-        others = [o for o in self.perception.objects() if o not in (name, receptacle_name)]
-        if position is not None:
-            target = _vector(position, "position")
-            spots, where = [self._spot_at(name, target, others)], f"at {np.round(target, 3).tolist()}"
-        else:
-            receptacle = self._receptacle(receptacle_name, name)
-            if receptacle_name == TABLE:
-                spots = self._spots_aside(name, receptacle, others)
-            else:
-                spots = self._spots_in(name, receptacle, others)
-            if not spots:
-                inside = [o for o in others if _within(self.perception.box(o), receptacle)]
-                size = self.perception.box(name).size
-                raise ReceptacleFullError(
-                    f"{receptacle_name!r} has no free spot for {name!r} "
-                    f"({size[0] * 100:.0f} x {size[1] * 100:.0f} cm); "
-                    f"it holds {', '.join(inside) or 'nothing'}"
-                )
-            where = f"in {receptacle_name!r}"
-        # Spots are where the middle of the object's footprint goes (for a curved banana lying turned, not the
-        # middle of its world-aligned box): the hand turns about that.
-        footprint_center = self.perception.footprint(name)[0]
-        pivot = np.array([footprint_center[0], footprint_center[1], self.perception.box(name).center[2]])
-        return Pose.from_transform(self._reachable_place(name, self.backend.tcp_pose(), pivot, spots, where))
-
-    def _spot_at(self, name: str, target: np.ndarray, others: list[str]) -> PlacementSpot:
-        """The held object at ``target``, resting on whatever is under it there (the table at least)."""
-        size = self.perception.box(name).size
-        below = [self.perception.box(o) for o in others]
-        table_top = float(self.perception.box(TABLE).upper[2])
-        support = max([table_top] + [b.upper[2] for b in below if _overlaps_xy(b, target[:2], size[:2] / 2)])
-        return spot_at(target, size, support)
-
-    def _spots_aside(self, name: str, table: Receptacle, others: list[str]) -> list[PlacementSpot]:
-        """Spots on the table for putting the held object aside: clear of objects, furniture and whatever the
-        cameras see there, near where it was but not on it."""
-        box = self.perception.box(name)
-        _, yaw, half = self.perception.footprint(name)
-        obstacles = [self._footprint(o) for o in others]
-        obstacles += [Footprint.of_box(self.perception.box(n)) for n in self.perception.furniture()]
-        spots = spots_in_receptacle(table, half, yaw, box.size[2], obstacles, self.base_xy, near_xy=box.center[:2])
-        radius = float(np.linalg.norm(half)) + MARGIN
-        spots = _clear_of(spots, self.perception.occupied([name]), radius, table.lower[2])
-        return [s for s in spots if np.linalg.norm(s.center[:2] - box.center[:2]) > 0.15]
-
-    def _spots_in(self, name: str, receptacle: Receptacle, others: list[str]) -> list[PlacementSpot]:
-        """Free spots for the held object in a container or a drawer, clear of what is already in it."""
-        _, yaw, half = self.perception.footprint(name)
-        inside = [self._footprint(o) for o in others if _within(self.perception.box(o), receptacle)]
-        # A drawer's front and walls stand high around a held object that may swing a little.
-        wall_margin = DRAWER_WALL_MARGIN if ".drawer_" in receptacle.name else MARGIN
-        height = self.perception.box(name).size[2]
-        corner = self._fill_corner(receptacle)
-        return spots_in_receptacle(receptacle, half, yaw, height, inside, corner, wall_margin=wall_margin)
+        target = None if position is None else _vector(position, "position")
+        spots, where = self.placer.spots(name, receptacle_name, target)
+        return Pose.from_transform(self.placer.reachable(name, self.backend.tcp_pose(), spots, where))
 
     @tool
     def attach_object(self, object_name: str) -> None:
@@ -469,10 +381,8 @@ class ToolAPI:
                 f"({', '.join(movable) or 'none'})"
             )
         self._held.append(name)
-        self._touch_allowed.add(name)
-        if not is_object:  # a part of furniture (cabinet.drawer_1): it moves on its joint, or with its drawer
-            for part in self._part_family(name):  # the gripper may touch it and its handle
-                self.motion.scene.allow("gripper", part)
+        self.contacts.allow_touch([name])  # a drawer with its handle: it moves on its joint, or with its drawer
+        if not is_object:
             return
         self.motion.attach(name)
         self.perception.carried(name, self.backend.tcp_pose())
@@ -490,34 +400,49 @@ class ToolAPI:
             raise ValueError(f"{name!r} is not attached; attached: {', '.join(self._held) or 'nothing'}")
         self._held.remove(name)
         self.perception.released(name, self.backend.tcp_pose())
-        if name in self.perception.objects():
+        is_object = name in self.perception.objects()
+        if is_object:
             self.motion.detach(name)
-            self.motion.scene.allow_leaving("gripper", name, self.motion.sync())
-        else:  # a handle let go: the open fingers may back out of it, not sweep through it
-            q = self.motion.sync()
-            for part in self._part_family(name):
-                self.motion.scene.allow("gripper", part, False)
-                self.motion.scene.allow_leaving("gripper", part, q)
+        self.contacts.released(name, is_object)
         self.motion.world_changed()
-        self._touch_allowed.add(name)
 
     # --- internals -------------------------------------------------------------------------------------------
+
+    def _own_retreat(self, motion: np.ndarray) -> bool:
+        """The program's own straight retreat from what it just let go of, as far as reach allows: an opened
+        drawer's handle, or a place pose in a high drawer, may stand at the edge of the workspace, and the
+        retreat's purpose (clearing what was let go) is met before its end. False where not even
+        :data:`RELEASE_RETREAT_LEAST` is free (the caller then moves as it would have)."""
+        distance = float(np.linalg.norm(motion))
+        moved = self.motion.retreat(motion, distance, least=min(RELEASE_RETREAT_LEAST, distance))
+        if moved <= 0.0:
+            if self._owed_retreat is not None:  # the retreat owed, before the program's motion is tried as it is
+                self.motion.retreat(*self._owed_retreat[:2])
+            return False
+        if moved < distance - 1e-3:
+            print(f"[retreat] backed off {moved:.3f} m of {distance:.3f} m: the rest is out of reach")
+        self.contacts.withdraw_cleared(self._held)
+        return True
 
     def _retreat_first(self, motion: np.ndarray | None) -> str | None:
         """Makes the retreat owed since the last grasp or release, unless ``motion`` (the program's next straight
         move, as a displacement of the TCP; None for a planned one) is already one: mostly along the retreat, and
         at least as long. Returns the retreat's kind ("lift" or "release") when ``motion`` is the program's own
         retreat, else None."""
-        pending, self._pending_retreat = self._pending_retreat, None
+        pending, self._pending_retreat, self._owed_retreat = self._pending_retreat, None, None
         if pending is None:
             return None
         direction, distance, kind = pending
         length = 0.0 if motion is None else float(np.linalg.norm(motion))
-        if length >= distance and float(direction @ motion) / length > OWN_RETREAT:
+        # Away from what was let go is back along the approach, or up: a hand that let go beside something
+        # leaves it as well upwards.
+        away = [direction] if kind == "lift" else [direction, np.array([0.0, 0.0, 1.0])]
+        if length >= distance and any(float(a @ motion) / length > OWN_RETREAT for a in away):
+            self._owed_retreat = pending  # made after all should the program's own not get clear (_own_retreat)
             return kind
-        self._allow_start_contacts()
+        self._leave_where_started()
         self.motion.retreat(direction, distance)
-        self._after_motion()
+        self.contacts.withdraw_cleared(self._held)
         return None
 
     def _name(self, name: object) -> str:
@@ -528,8 +453,8 @@ class ToolAPI:
         family = {name}
         for joint in self.perception.joints(name):
             family.add(joint.part)
-        prefix, _, part = name.rpartition(".")
-        if part.startswith(("drawer_", "door_", "handle_")):
+        prefix = name.rpartition(".")[0]
+        if is_part(name):
             for other in self.perception.names():
                 if other.startswith(prefix + ".") and any(j.part in family for j in self._joints_if_known(other)):
                     family.add(other)
@@ -543,51 +468,6 @@ class ToolAPI:
         except (UnknownObjectError, ValueError):
             return []
 
-    def _holds_things(self, name: str) -> bool:
-        """Whether ``name`` is a receptacle, for an error message: False where perception cannot tell."""
-        try:
-            return self.perception.receptacle(name) is not None
-        except (UnknownObjectError, ValueError):
-            return False
-
-    def _receptacle(self, receptacle_name: str, held: str) -> Receptacle:
-        if receptacle_name == TABLE:
-            return self._table_region()
-        name = self._name(receptacle_name)
-        if name == held:
-            raise ValueError(f"cannot place {held!r} into itself")
-        receptacle = self.perception.receptacle(name)
-        if receptacle is None:
-            containers = [n for n in self.perception.names() if self._holds_things(n)]
-            raise ValueError(
-                f"{name!r} cannot hold things; receptacles here: {', '.join([*containers, TABLE])}; or pass position="
-            )
-        if receptacle.upper[0] - receptacle.lower[0] < 0.04 and ".drawer_" in name:
-            raise PlacementError(f"{name!r} is closed: open it before placing anything into it")
-        _, _, half = self.perception.footprint(held)
-        if not fits(receptacle, half):
-            inner = receptacle.upper - receptacle.lower
-            raise PlacementError(
-                f"{held!r} ({half[0] * 200:.0f} x {half[1] * 200:.0f} cm) does not fit into {name!r}, "
-                f"whose free interior is {inner[0] * 100:.0f} x {inner[1] * 100:.0f} cm"
-            )
-        return receptacle
-
-    def _footprint(self, name: str) -> Footprint:
-        center, yaw, half = self.perception.footprint(name)
-        return Footprint(np.asarray(center, dtype=float), float(yaw), np.asarray(half, dtype=float))
-
-    def _table_region(self) -> Receptacle:
-        """Where things may be put aside on the table: its top as perception knows it, within the robot's reach."""
-        table = self.perception.box(TABLE)
-        reach_lower, reach_upper = self.base_xy + TABLE_REACH[0], self.base_xy + TABLE_REACH[1]
-        lower = np.maximum(table.lower[:2], reach_lower)
-        upper = np.minimum(table.upper[:2], reach_upper)
-        top = float(table.upper[2])
-        if np.any(upper <= lower):
-            raise PlacementError(f"no part of the table {np.round(table.as_array(), 3).tolist()} is within reach")
-        return Receptacle(TABLE, Transform.identity(), np.array([*lower, top]), np.array([*upper, top + 0.4]))
-
     def _first_reachable(self, name: str, candidates: list[Transform], kind: str) -> Transform:
         """The first candidate whose grasp and pre-grasp poses have collision-free IK (the gripper may touch the
         object itself); each is also tried turned half a turn about its approach axis."""
@@ -595,8 +475,7 @@ class ToolAPI:
         errors: list[str] = []
         flip = Transform(np.zeros(3), np.array([0.0, 0.0, 1.0, 0.0]))
         fallback: Transform | None = None
-        new = [n for n in self._grasp_family(name) if n not in self._touch_allowed and n not in self._held]
-        with _touch(self.motion, new):
+        with self.contacts.touching(self.contacts.not_yet_allowed([name], self._held)):
             for rank, candidate in enumerate(candidates):
                 for pose in (candidate, candidate.compose(flip)):
                     try:
@@ -633,7 +512,7 @@ class ToolAPI:
     def _pull_check(self, name: str, pose: Transform, q: np.ndarray) -> str:
         """For the handle of a drawer: why the arm could not pull it ``PULL_CHECK`` metres open from this grasp
         (empty if it could). A handle is grasped to be pulled, and a grasp that cannot pull is no use."""
-        if ".handle_" not in name:
+        if kind_of(name) != "handle":
             return ""
         joints = self.perception.joints(name)
         if not joints or joints[0].type != "prismatic":
@@ -643,7 +522,7 @@ class ToolAPI:
         if distance < 0.02:
             return ""
         target = Transform(pose.position + joints[0].axis * distance, pose.quaternion)
-        line = cartesian_path(self.motion.kinematics, self.motion.scene, q, [target])
+        line = self.motion.cartesian([target], start=q)
         if line.fraction >= 1.0:
             return ""
         return f"from this grasp the drawer can be pulled only {line.fraction * distance * 100:.0f} cm: {line.reason}"
@@ -651,95 +530,13 @@ class ToolAPI:
     def _grasp_family(self, name: str) -> list[str]:
         return self._part_family(name) if name not in self.perception.objects() else [name]
 
-    def _fill_corner(self, receptacle: Receptacle) -> np.ndarray:
-        """Where filling starts: the corner nearest the robot; for a drawer, the front corner nearest the robot
-        (the back of an open drawer is under the carcass, where the arm has no room)."""
-        if ".drawer_" not in receptacle.name:
-            return self.base_xy
-        lower, upper = receptacle.lower, receptacle.upper
-        fronts = receptacle.frame.apply(np.array([[upper[0], lower[1], 0.0], [upper[0], upper[1], 0.0]]))[:, :2]
-        return fronts[int(np.argmin(np.linalg.norm(fronts - self.base_xy, axis=1)))]
-
-    def _reachable_place(
-        self, name: str, tcp: Transform, pivot: np.ndarray, spots: list[PlacementSpot], where: str
-    ) -> Transform:
-        """The first spot (in order, skipping near-repeats of spots that failed) with a collision-free IK from which
-        the hand can also retreat straight up (:data:`PLACE_RETREAT`), as a place's retreat would: a hand put
-        down with a link against the cabinet has no way out but through what it let go. Each spot is tried with
-        the object turned as the spot allows (round, or any quarter turn at a position), and released higher up
-        so the hand clears a deep container's walls; of the turns and IK branches that work at a height, the one
-        nearest the arm's present configuration is taken (a hand kept facing one way can make the arm swing
-        round behind itself). Where no spot allows the retreat, the first reachable one is taken. The
-        configuration chosen becomes the motion's goal for that pose (:meth:`MotionPlanner.prefer_goal`)."""
-        q = self.motion.sync()
-        tried: list[PlacementSpot] = []
-        errors: list[str] = []
-        fallback: tuple[Transform, np.ndarray] | None = None
-        budget = PLACE_IK_BUDGET
-        for spot in spots:
-            if budget <= 0:
-                break
-            if any(np.linalg.norm(spot.center - t.center) < 0.05 and _same_turn(spot.yaw, t.yaw) for t in tried):
-                continue
-            tried.append(spot)
-            for lift in (0.0, 0.02, 0.05, 0.1):
-                reached = self._place_options(spot, lift, tcp, pivot, q, errors)
-                budget -= len(spot.turns)
-                fallback = fallback or next(((pose, goals[0]) for pose, goals in reached), None)
-                leaving = [(pose, g) for pose, goals in reached for g in goals if self._can_retreat(pose, g)]
-                if leaving:
-                    pose, goal = min(leaving, key=lambda c: float(np.sum((c[1] - q) ** 2)))
-                    self.motion.prefer_goal(pose, goal)
-                    return pose
-                if budget <= 0:
-                    break
-        if fallback is not None:
-            self.motion.prefer_goal(*fallback)
-            return fallback[0]
-        raise PlacementError(
-            f"no reachable, collision-free pose puts {name!r} {where} ({len(tried)} spots tried): "
-            f"{errors[0] if errors else 'no spot'}"
-        )
-
-    def _place_options(
-        self, spot: PlacementSpot, lift: float, tcp: Transform, pivot: np.ndarray, q: np.ndarray, errors: list[str]
-    ) -> list[tuple[Transform, list[np.ndarray]]]:
-        """The gripper poses that put the held object at ``spot`` (``lift`` higher), one per turn it allows, with
-        their collision-free IK branches; the poses without any add their reason to ``errors``."""
-        out = []
-        for turn in spot.turns:
-            rotation = quat_to_matrix(quat_from_yaw(spot.yaw + turn))
-            # Turning the held object about world z around its middle turns the gripper with it.
-            position = spot.center + [0.0, 0.0, lift] + rotation @ (tcp.position - pivot)
-            pose = Transform.from_rotation(position, rotation @ tcp.rotation)
-            try:
-                out.append((pose, self.motion.ik_choices(pose, q, attempts=8, max_attempts=24)))
-            except IKError as exc:
-                errors.append(str(exc))
-        return out
-
-    def _can_retreat(self, pose: Transform, q: np.ndarray) -> bool:
-        """Whether the arm at ``q`` (the TCP at ``pose``) can let go there, the fingers opening fully without
-        touching anything but what they held, and then move straight up by :data:`PLACE_RETREAT` (what it held
-        stays behind)."""
-        up = Transform(pose.position + np.array([0.0, 0.0, PLACE_RETREAT]), pose.quaternion)
-        scene = self.motion.scene
-        with scene.ignoring_held(), scene.fingers_open():
-            return cartesian_path(self.motion.kinematics, scene, q, [up]).fraction >= 1.0
-
     def _allow_touch_near(self, point: np.ndarray) -> None:
         """Lets the fingers touch what lies at the goal (the object to be grasped); withdrawn once clear of it.
 
         Not while holding something: then the goal is a place pose, and the fingers must keep clear of the
         receptacle."""
-        if self._held:
-            return
-        scene = self.motion.scene
-        for name in self._near(point):
-            if name not in self._touch_allowed:
-                for part in self._grasp_family(name):
-                    scene.allow("gripper", part)
-                self._touch_allowed.add(name)
+        if not self._held:
+            self.contacts.allow_touch(self._near(point))
 
     def _near(self, point: np.ndarray, distance: float = 0.02) -> list[str]:
         """Objects and furniture whose box is within ``distance`` of ``point`` (never the table, which everything
@@ -754,88 +551,11 @@ class ToolAPI:
 
     def _new_touches(self, point: np.ndarray) -> list[str]:
         """Parts near ``point`` the gripper may not touch yet (for a temporary allowance)."""
-        if self._held:
-            return []
-        names = [n for n in self._near(point) if n not in self._touch_allowed]
-        return sorted({part for n in names for part in self._grasp_family(n)})
+        return [] if self._held else self.contacts.not_yet_allowed(self._near(point))
 
-    def _allow_start_contacts(self) -> None:
-        """Lets the gripper leave what it touches now (an object that settled against the fingers after being let
-        go) until it has moved clear: the motion that leaves a contact must be allowed to start in it, though not
-        to push deeper into it (a planned motion that swept the hand through what was just put down would knock
-        it over)."""
-        scene = self.motion.scene
-        q = self.motion.sync()
-        names = set(self.perception.names())
-        for pair in scene.collisions(q):
-            for name in pair:
-                if name in names and scene.touching("gripper", name, q):
-                    for part in self._grasp_family(name):
-                        scene.allow_leaving("gripper", part, q)
-                    self._touch_allowed.add(name)
-        # An arm link can end a motion a few millimetres nearer furniture than planned (tracking), inside the
-        # scene's padding; without this the next motion could not start at all.
-        for pair in scene.collisions(q):
-            scene.allow_leaving(*pair, q)
-            self._link_contacts.add(pair)
-
-    def _after_motion(self) -> None:
-        """Withdraws touch allowances the gripper has moved clear of (never for what it holds)."""
-        scene = self.motion.scene
-        q = self.motion.sync()
-        for pair in list(self._link_contacts):
-            if not scene.touching(*pair, q):
-                scene.allow(*pair, False)
-                self._link_contacts.discard(pair)
-        for name in list(self._touch_allowed):
-            if name in self._held:
-                continue
-            family = self._grasp_family(name)
-            if not any(scene.touching("gripper", part, q) for part in family):
-                for part in family:
-                    scene.allow("gripper", part, False)
-                self._touch_allowed.discard(name)
-
-
-class _touch:
-    """Context: the gripper may touch these names while candidate grasps are checked."""
-
-    # The motion, not its scene: a scene rebuilt within the block (a look on the way) carries the allowance over,
-    # and it is withdrawn from the scene in use at the end.
-    def __init__(self, motion, names: list[str]):
-        self.motion, self.names = motion, names
-
-    def __enter__(self):
-        for name in self.names:
-            self.motion.scene.allow("gripper", name)
-
-    def __exit__(self, *exc):
-        for name in self.names:
-            self.motion.scene.allow("gripper", name, False)
-
-
-def _clear_of(spots: list, points: np.ndarray, radius: float, table_top: float) -> list:
-    """The spots with no observed point above the table within ``radius`` of their centre (on the table's level:
-    the table itself and what hangs high above it do not count)."""
-    band = points[(points[:, 2] > table_top + 0.005) & (points[:, 2] < table_top + 0.5)][:, :2]
-    if len(band) == 0:
-        return spots
-    return [s for s in spots if float(np.min(np.linalg.norm(band - s.center[:2], axis=1))) > radius]
-
-
-def _same_turn(a: float, b: float) -> bool:
-    """Whether two yaw turns face the same way, or opposite ways (a spot tried both ways round already)."""
-    return abs(math.remainder(a - b, math.pi)) < 0.1
-
-
-def _overlaps_xy(box: Box3D, center: np.ndarray, half: np.ndarray) -> bool:
-    return bool(np.all(np.abs(box.center[:2] - center) < box.size[:2] / 2 + half))
-
-
-def _within(box: Box3D, receptacle: Receptacle) -> bool:
-    """Whether an object's box centre lies in the receptacle's interior (in its frame)."""
-    local = receptacle.frame.inverse().apply(box.center[None])[0]
-    return bool(np.all(local >= receptacle.lower - 0.01) and np.all(local <= receptacle.upper + 0.01))
+    def _leave_where_started(self) -> None:
+        """Before a motion: contacts it starts in may be left, not pushed into (:class:`ContactAllowances`)."""
+        self.contacts.leave_where_started(set(self.perception.names()))
 
 
 def _vector(value: object, field: str) -> np.ndarray:

@@ -13,6 +13,7 @@ from abc import ABC, abstractmethod
 
 import numpy as np
 
+from roboscript.errors import RoboScriptError
 from roboscript.geometry import Transform
 from roboscript.robots import RobotDescription
 from roboscript.sim.cameras import CameraFrame
@@ -21,7 +22,7 @@ from roboscript.sim.simulator import ExecutionReport, GripperReport
 from roboscript.sim.trajectory import JointTrajectory
 
 
-class BackendError(RuntimeError):
+class BackendError(RoboScriptError, RuntimeError):
     """A backend could not do what was asked (the message says what and why)."""
 
 

@@ -20,11 +20,12 @@ from dataclasses import dataclass
 from pathlib import Path
 
 from roboscript.bench.task_file import Task, query_key
+from roboscript.errors import UsageError
 
 PREFIX = "programs:"
 
 
-class StoredProgramsError(ValueError):
+class StoredProgramsError(UsageError, ValueError):
     """Stored programs that cannot be used; the message names the file, the entry and the problem."""
 
 

@@ -34,6 +34,7 @@ from typing import Any
 from roboscript.bench.checks import Check
 from roboscript.codegen.prompt import task_query
 from roboscript.datafile import DataFileError, Reader, names_a_file, read_data_file
+from roboscript.names import kind_of
 from roboscript.sim.ground_truth import GroundTruth
 from roboscript.sim.world_catalog import load_world
 from roboscript.sim.world_file import TABLE_NAME, WorldFileError, WorldSpec
@@ -174,7 +175,7 @@ def _receptacles(world: WorldSpec, kind: str) -> list[str]:
     """What ``in`` may name (containers and drawers) and ``on`` (any object, and the table)."""
     if kind == "in":
         containers = [o.name for o in world.objects if o.type.container]
-        return containers + [p for p in world.part_names() if ".drawer_" in p]
+        return containers + [p for p in world.part_names() if kind_of(p) == "drawer"]
     return [TABLE_NAME, *world.object_names()]
 
 
@@ -221,7 +222,7 @@ def _at_check(entry: Reader, kind: str, world: WorldSpec, negate: bool) -> Check
 
 def _joint_check(entry: Reader, kind: str, world: WorldSpec, negate: bool) -> CheckSpec:
     """``{joint: drawer or door, above: value}``: opened beyond ``value`` metres (radians for a door)."""
-    articulated = [p for p in world.part_names() if ".drawer_" in p or ".door_" in p]
+    articulated = [p for p in world.part_names() if kind_of(p) in ("drawer", "door")]
     subject = _name_check(entry, entry.data["joint"], articulated, "drawers and doors")
     if "above" not in entry.data:
         entry.fail("'joint' takes above: VALUE, how far it must be open (metres for a drawer, radians for a door)")

@@ -26,13 +26,14 @@ from multiprocessing.connection import Connection
 
 from roboscript.codegen.outcomes import Outcome
 from roboscript.codegen.sandbox import ExecutionResult, Limits, ProgramTimeout, execute
+from roboscript.errors import UsageError
 
 EXIT_GRACE = 10.0  # seconds past the time limit before a program's process that does not report is killed
 MAX_MESSAGE = 64 * 1024**2  # bytes of one tool call's arguments or one reply
 MAX_REPORTED_OUTPUT = 8000  # characters of printed output sent back (its start and its end)
 
 
-class ToolArgumentError(TypeError):
+class ToolArgumentError(UsageError, TypeError):
     """A tool was given something that cannot be passed to it (a function, a generator, too much data)."""
 
 

@@ -109,13 +109,11 @@ def describe_exception(exc: BaseException) -> str:
 
 
 def classify_exception(exc: BaseException) -> Outcome:
-    """Planning failures (the robot could not do what was asked) apart from other runtime errors."""
-    from roboscript.api.placement import PlacementError
-    from roboscript.perception.grasp_heuristics import GraspError
-    from roboscript.planning.errors import PlanningError, TrackingError
+    """Failures (the robot could not do what was asked: :class:`~roboscript.errors.FailureError`) apart from
+    other runtime errors."""
+    from roboscript.errors import FailureError
 
-    planning = (PlanningError, TrackingError, PlacementError, GraspError)
-    return Outcome.PLANNING_FAILURE if isinstance(exc, planning) else Outcome.RUNTIME_ERROR
+    return Outcome.PLANNING_FAILURE if isinstance(exc, FailureError) else Outcome.RUNTIME_ERROR
 
 
 def execute(program: str, namespace: dict, limits: Limits = Limits()) -> ExecutionResult:

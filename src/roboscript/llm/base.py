@@ -7,8 +7,10 @@ import json
 from abc import ABC, abstractmethod
 from dataclasses import asdict, dataclass, field
 
+from roboscript.errors import RoboScriptError
 
-class LLMError(RuntimeError):
+
+class LLMError(RoboScriptError, RuntimeError):
     """The model could not be asked or did not answer (after any retries); the message says why."""
 
 

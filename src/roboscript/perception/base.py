@@ -13,16 +13,17 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from roboscript.errors import UsageError
 from roboscript.geometry import Box3D, Transform
+from roboscript.names import TABLE
 
-TABLE = "table"  # the table is an object to every tool, as the original benchmark's queries list it
 OCCUPANCY_MARGIN = 0.02  # metres around an ignored object's box whose points are taken to be its own
 # Room kept between the carcass front and where things are put into an open drawer: the panel above the drawer
 # overhangs that line and fingers need space.
 DRAWER_FRONT_CLEARANCE = 0.03
 
 
-class UnknownObjectError(KeyError):
+class UnknownObjectError(UsageError, KeyError):
     """No object of that name is known; the message suggests the closest known names."""
 
     def __init__(self, name: object, known: list[str]):

@@ -12,6 +12,7 @@ from collections.abc import Sequence
 
 import numpy as np
 
+from roboscript.errors import RoboScriptError
 from roboscript.perception.grounding import Detection2D, Grounder, normalize_phrase
 from roboscript.sim.cameras import CameraFrame
 
@@ -20,7 +21,7 @@ DETECTOR_KINDS = ("owlv2", "grounding-dino")
 REQUIRED_FILES = ("config.json", ("processor_config.json", "preprocessor_config.json"))
 
 
-class DetectorError(RuntimeError):
+class DetectorError(RoboScriptError, RuntimeError):
     """A detector could not be loaded or run; the message says what is missing."""
 
 

@@ -10,7 +10,9 @@ import math
 
 import numpy as np
 
+from roboscript.errors import FailureError
 from roboscript.geometry import Transform
+from roboscript.names import kind_of
 from roboscript.perception.base import Perception
 
 DOWN = np.array([0.0, 0.0, -1.0])
@@ -18,7 +20,7 @@ DOWN = np.array([0.0, 0.0, -1.0])
 HANDLE_BAR_RADIUS = 0.008
 
 
-class GraspError(ValueError):
+class GraspError(FailureError, ValueError):
     """No grasp of the asked kind suits this object; the message says why and what to try instead."""
 
 
@@ -97,7 +99,7 @@ def _with_side_on_yaws(yaws: list[float], approach: np.ndarray, footprint_yaw: f
 
 def _handle_normal(perception: Perception, name: str, box) -> np.ndarray:
     """The horizontal direction a handle faces: its part's opening direction, or its front's normal."""
-    joints = perception.joints(name) if ".handle_" in name else []
+    joints = perception.joints(name) if kind_of(name) == "handle" else []
     if joints and joints[0].type == "prismatic":
         normal = np.asarray(joints[0].axis, dtype=float).copy()
     else:
@@ -121,7 +123,7 @@ def horizontal_grasps(
     object too low to be gripped level without the hand touching its support is approached tilted downwards.
     """
     box = perception.box(name)
-    is_handle = ".handle_" in name
+    is_handle = kind_of(name) == "handle"
     if approach_direction is not None:
         approach = np.asarray(approach_direction, dtype=float).copy()
         approach[2] = 0.0

@@ -29,6 +29,7 @@ import numpy as np
 
 from roboscript.backends.base import Backend
 from roboscript.geometry import Box3D, Transform, quat_from_yaw
+from roboscript.names import kind_of
 from roboscript.perception.articulation import DRAWER_TRAVEL, door_joint, drawer_joint, front_plane
 from roboscript.perception.base import (
     OCCUPANCY_MARGIN,
@@ -130,7 +131,8 @@ class PipelinePerception(Perception):
         # moves.
         self.furniture_phrases = {normalize_phrase(n): n for n in parts.furniture()}  # phrase -> name
         self._table_height = math.nan  # the height of the table's top, as the last look that saw it measured
-        self._moved_by = {n: _labelled_part(parts, n) for n in self.furniture_phrases.values() if ".handle_" in n}
+        handles = [n for n in self.furniture_phrases.values() if kind_of(n) == "handle"]
+        self._moved_by = {n: _labelled_part(parts, n) for n in handles}
 
     # --- looking ----------------------------------------------------------------------------------------------
 
@@ -222,7 +224,7 @@ class PipelinePerception(Perception):
         """Keeps of each handle the points standing out of its part's front: its 2D boxes hold some of the front
         around it, and the handle's centre decides where the gripper closes and where the joint's line runs. Only
         a handle and a front of this look: one seen earlier may have moved since."""
-        for handle in [n for n in self.parts_seen if ".handle_" in n and self._part_look[n] == self.looks]:
+        for handle in [n for n in self.parts_seen if kind_of(n) == "handle" and self._part_look[n] == self.looks]:
             part = self._moved_by[handle]
             if part is None or self._part_look.get(part) != self.looks:
                 continue
@@ -416,7 +418,7 @@ class PipelinePerception(Perception):
     def _drawer_inside(self, name: str, retried: bool = False) -> Receptacle | None:
         """The free inside of a drawer, from its points, its joint, its handle and its cabinet's front; other
         furniture and parts hold nothing."""
-        joints = self.parts.joints(name) if ".drawer_" in name else []
+        joints = self.parts.joints(name) if kind_of(name) == "drawer" else []
         if not joints or joints[0].type != "prismatic" or joints[0].part != name:
             return None
         try:
@@ -453,7 +455,7 @@ class PipelinePerception(Perception):
 def shows_in_pieces(name: str) -> bool:
     """Whether furniture or a part may be seen as several unconnected pieces: a drawer, a door or a carcass may (an
     open drawer's front and, apart from it, its inside); a handle is one piece."""
-    return ".handle_" not in name
+    return kind_of(name) != "handle"
 
 
 def _labelled_part(parts: Perception, handle: str) -> str | None:

@@ -6,8 +6,10 @@ from collections.abc import Sequence
 
 import numpy as np
 
+from roboscript.errors import FailureError, UsageError
 
-class PlanningError(RuntimeError):
+
+class PlanningError(FailureError, RuntimeError):
     """Base class of every planning failure."""
 
 
@@ -76,7 +78,7 @@ class CartesianPathIncompleteError(PlanningError):
         super().__init__(f"the Cartesian path is only {self.fraction:.0%} achievable: {reason}")
 
 
-class UnknownPlannerError(PlanningError, ValueError):
+class UnknownPlannerError(UsageError, ValueError):
     def __init__(self, name: str, available: Sequence[str], unavailable: dict[str, str]):
         self.name = name
         message = f"unknown planner {name!r}; available: {', '.join(available)}"

@@ -253,6 +253,37 @@ class MotionPlanner:
                     break
         return found or [(solutions[0], None)]
 
+    def approaches(self, target: Transform, distance: float) -> list[tuple[np.ndarray, np.ndarray | None]]:
+        """:meth:`straight_approaches` from the present configuration, searching more IK branches where the nearest
+        have no clear line (as the grasp tools do before they take a worse grasp)."""
+        q = self.sync()
+        options = self.straight_approaches(target, distance, q)
+        if options[0][1] is None:
+            options = self.straight_approaches(target, distance, q, attempts=8, max_attempts=80, branches=8)
+        return options
+
+    def move_to_approach(
+        self, options: list[tuple[np.ndarray, np.ndarray | None]], target: Transform, distance: float
+    ) -> tuple[np.ndarray, np.ndarray | None]:
+        """Moves to the start of whichever of ``options`` (from :meth:`approaches`) a planned path reaches: each IK
+        branch with a clear line is a goal, so where none leads to one branch's start (walled in by the table on a
+        6-joint arm) the next is tried. Returns that option."""
+        start = Transform(target.position - distance * target.rotation[:, 2], target.quaternion)
+        starts = [line[0] if line is not None else self.ik(start, goal) for goal, line in options]
+        return options[self.move_to_any(starts)]
+
+    def finish_approach(self, option: tuple[np.ndarray, np.ndarray | None], target: Transform) -> None:
+        """Moves in along the option's straight line to ``target``; where it had none, or the line is blocked now
+        (the world moved), straight if that has become feasible, else planned."""
+        goal, line = option
+        if line is not None:
+            line = line.copy()
+            line[0] = self.sync()
+            self.execute(line)
+            return
+        straight = self.cartesian([target])
+        self.execute(straight.waypoints if straight.fraction >= 1.0 else self.plan_to_joints(goal))
+
     def move_to_any(self, goals: Sequence[np.ndarray], planner: str | None = None) -> int:
         """Plans to the first of ``goals`` (other IK branches of one pose) that a path reaches, trying the next
         where the planner runs out of time, executes it, and returns the index of the goal reached."""
@@ -292,9 +323,12 @@ class MotionPlanner:
             goals = [preferred, preferred, *goals]
         return self.plan(start, goals, planner, timeout)
 
-    def cartesian(self, poses: Sequence[Transform], eef_step: float = 0.005) -> CartesianResult:
-        """Straight TCP lines through ``poses`` from the present pose; see :func:`cartesian_path`."""
-        start = self.sync()
+    def cartesian(
+        self, poses: Sequence[Transform], eef_step: float = 0.005, start: np.ndarray | None = None
+    ) -> CartesianResult:
+        """Straight TCP lines through ``poses`` from ``start`` (default: the present configuration); see
+        :func:`cartesian_path`."""
+        start = self.sync() if start is None else np.asarray(start, dtype=float)
         return cartesian_path(self.kinematics, self.scene, start, list(poses), eef_step)
 
     # --- execution -----------------------------------------------------------------------------------------

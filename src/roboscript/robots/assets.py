@@ -23,6 +23,8 @@ import xml.etree.ElementTree as ET
 from dataclasses import dataclass
 from pathlib import Path
 
+from roboscript.errors import UsageError
+
 ENV_VAR = "ROBOSCRIPT_MENAGERIE"
 
 
@@ -63,7 +65,7 @@ HOW_TO_GET_MODELS = (
 )
 
 
-class AssetNotFoundError(FileNotFoundError):
+class AssetNotFoundError(UsageError, FileNotFoundError):
     """No source holds a verified copy of a robot model."""
 
 

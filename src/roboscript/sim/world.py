@@ -15,6 +15,7 @@ import mujoco
 import numpy as np
 
 from roboscript.geometry import Transform, quat_from_yaw, quat_to_mujoco
+from roboscript.names import kind_of
 from roboscript.robots import ROBOT_PREFIX, RobotDescription, get_robot
 from roboscript.sim.cameras import add_camera
 from roboscript.sim.furniture import add_cabinet, add_table, drawer_interior
@@ -293,7 +294,7 @@ def _drawer_frames(spec: mujoco.MjSpec, world: WorldSpec) -> dict[str, tuple[np.
     frames = {}
     for cabinet in world.cabinets:
         for part in cabinet.part_names():
-            if ".drawer_" in part:
+            if kind_of(part) == "drawer":
                 body = data.body(part)
                 frames[part] = (
                     body.xpos.copy(),

@@ -28,11 +28,12 @@ from typing import Any
 import numpy as np
 
 from roboscript.datafile import DataFileError, Reader, read_data_file
+from roboscript.names import TABLE, kind_of
 from roboscript.sim.cameras import CameraSpec, default_camera_rig
 from roboscript.sim.furniture import CabinetRow, CabinetSpec, TableSpec
 from roboscript.sim.objects import ObjectType, object_types
 
-TABLE_NAME = "table"
+TABLE_NAME = TABLE
 ROBOT_BASE_XY = (-0.45, 0.0)
 ROBOT_BASE_RADIUS = 0.12
 OVERLAP_MARGIN = 0.004
@@ -86,7 +87,7 @@ class WorldSpec:
     def query_names(self) -> list[str]:
         """Every name a program may use here, in the order of the original benchmark's queries: the table, the
         furniture, the objects, then each piece of furniture's drawers and doors before its handles."""
-        parts = sorted(self.part_names(), key=lambda p: (p.split(".")[0], ".handle_" in p))
+        parts = sorted(self.part_names(), key=lambda p: (p.split(".")[0], kind_of(p) == "handle"))
         return [TABLE_NAME, *(c.name for c in self.cabinets), *self.object_names(), *parts]
 
     def randomized(self, seed: int) -> WorldSpec:
@@ -215,7 +216,7 @@ def _parse_objects(source: str, items: Any, part_names: set[str]) -> tuple[Objec
                 )
         elif "inside" in r.data:
             support, kind = r.string("inside"), "inside"
-            drawers = sorted(p for p in part_names if ".drawer_" in p)
+            drawers = sorted(p for p in part_names if kind_of(p) == "drawer")
             if support not in drawers:
                 r.fail(f"'inside: {support}' must name a drawer; drawers in this world: {', '.join(drawers) or 'none'}")
         default_pos = None if kind == "table" else (0.0, 0.0)

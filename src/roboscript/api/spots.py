@@ -1,0 +1,133 @@
+"""Free spots for a held object: inside a receptacle, on the table, or at a given position (geometry only).
+
+Candidates are object positions (the middle of the object's footprint, at its box's height) with a yaw turn; the
+placement search (:mod:`roboscript.api.placement`) turns them into gripper poses and keeps the first one the arm
+can reach. A spot is free when the
+object's footprint, with a margin, stays inside the receptacle's interior and clear of every other object's
+footprint. Footprints are turned rectangles: a banana lying at 30 degrees covers a strip of a plate, while its
+world-aligned box would cover most of it.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+import numpy as np
+
+from roboscript.geometry import Box3D
+from roboscript.perception.base import Receptacle
+
+MARGIN = 0.007  # clearance kept from walls and from other objects
+DROP = 0.012  # the object is released this far above its support
+
+
+@dataclass(frozen=True)
+class Footprint:
+    """A rectangle on the table: centre (x, y), turned by ``yaw`` radians, with half-extents along its own axes."""
+
+    center: np.ndarray
+    yaw: float
+    half: np.ndarray
+
+    @staticmethod
+    def of_box(box: Box3D) -> Footprint:
+        return Footprint(box.center[:2], 0.0, box.size[:2] / 2)
+
+    def axes(self) -> np.ndarray:
+        c, s = math.cos(self.yaw), math.sin(self.yaw)
+        return np.array([[c, s], [-s, c]])
+
+    def corners(self) -> np.ndarray:
+        signs = np.array([[1, 1], [1, -1], [-1, 1], [-1, -1]])
+        return np.asarray(self.center) + (signs * self.half) @ self.axes()
+
+
+def gap(a: Footprint, b: Footprint) -> float:
+    """How far apart two footprints are along the axis that separates them best (negative: they overlap)."""
+    best = -math.inf
+    ca, cb = a.corners(), b.corners()
+    for axis in np.vstack([a.axes(), b.axes()]):
+        pa, pb = ca @ axis, cb @ axis
+        best = max(best, float(pb.min() - pa.max()), float(pa.min() - pb.max()))
+    return best
+
+
+@dataclass(frozen=True)
+class PlacementSpot:
+    """Where the middle of the object's footprint goes (its box's middle in height), and the yaw turn (radians)
+    about world z from its present pose; ``score`` orders spots (higher first). ``turns``: further turns about z
+    the object may be given there (a spot at a position does not care how the object faces; one squared to a
+    receptacle may only be turned round)."""
+
+    center: np.ndarray
+    yaw: float
+    score: float
+    turns: tuple[float, ...] = (0.0, math.pi)
+
+
+def spots_in_receptacle(
+    receptacle: Receptacle,
+    half_xy: np.ndarray,
+    object_yaw: float,
+    height: float,
+    obstacles: list[Footprint],
+    corner_xy: np.ndarray,
+    step: float = 0.015,
+    near_xy: np.ndarray | None = None,
+    wall_margin: float = MARGIN,
+) -> list[PlacementSpot]:
+    """Free spots inside the receptacle's interior, filled from the corner nearest ``corner_xy`` outwards.
+
+    The object (footprint half-extents ``half_xy`` in its own frame, turned by ``object_yaw``) is turned square to
+    the receptacle in each of four ways. Filling from one corner, like packing a box, leaves the most room for
+    what comes next; the corner nearest the robot keeps the arm's reach short. With ``near_xy`` (putting
+    something aside on the table) the spots nearest that point come first instead.
+    """
+    lower, upper = receptacle.lower, receptacle.upper
+    rotation = receptacle.frame.rotation
+    frame_yaw = math.atan2(rotation[1, 0], rotation[0, 0])
+    bottom = receptacle.frame.apply(np.array([[0.0, 0.0, lower[2]]]))[0, 2]
+    local_corner = receptacle.frame.inverse().apply(np.array([[*corner_xy, bottom]]))[0, :2]
+    corner = np.clip(local_corner, lower[:2], upper[:2])
+    corner = np.where(np.abs(corner - lower[:2]) < np.abs(corner - upper[:2]), lower[:2], upper[:2])
+    out: list[PlacementSpot] = []
+    for quarter in range(4):
+        aligned = frame_yaw + quarter * math.pi / 2
+        turn = math.remainder(aligned - object_yaw, 2 * math.pi)
+        half = (half_xy if quarter % 2 == 0 else half_xy[::-1]) + wall_margin
+        lo, hi = lower[:2] + half, upper[:2] - half
+        if np.any(hi < lo - 1e-9):
+            continue
+        xs = np.arange(lo[0], hi[0] + 1e-9, step) if hi[0] - lo[0] > step else np.array([(lo[0] + hi[0]) / 2])
+        ys = np.arange(lo[1], hi[1] + 1e-9, step) if hi[1] - lo[1] > step else np.array([(lo[1] + hi[1]) / 2])
+        own_half = (half_xy if quarter % 2 == 0 else half_xy[::-1]) + MARGIN
+        for x in xs:
+            for y in ys:
+                world = receptacle.frame.apply(np.array([[x, y, 0.0]]))[0]
+                here = Footprint(world[:2], frame_yaw, own_half)
+                if any(gap(here, o) < 0 for o in obstacles):
+                    continue
+                center = np.array([world[0], world[1], bottom + height / 2 + DROP])
+                # Nearest the corner first; among equals, the smaller turn.
+                if near_xy is None:
+                    score = -float(np.abs(np.array([x, y]) - corner).sum()) - 0.01 * abs(turn)
+                else:
+                    score = -float(np.linalg.norm(world[:2] - near_xy)) - 0.01 * abs(turn)
+                out.append(PlacementSpot(center, turn, score))
+    out.sort(key=lambda s: -s.score)
+    return out
+
+
+def fits(receptacle: Receptacle, half_xy: np.ndarray) -> bool:
+    """Whether a footprint of half-extents ``half_xy`` fits the empty interior at all (in some quarter turn)."""
+    inner = receptacle.upper[:2] - receptacle.lower[:2] - 2 * MARGIN
+    size = 2 * np.asarray(half_xy)
+    return bool(np.all(size <= inner + 1e-9) or np.all(size[::-1] <= inner + 1e-9))
+
+
+def spot_at(position: np.ndarray, object_size: np.ndarray, support_top: float) -> PlacementSpot:
+    """The object centred at ``position``; never lower than resting on the support beneath it."""
+    rest = support_top + object_size[2] / 2 + DROP
+    center = np.array([position[0], position[1], max(float(position[2]), rest)])
+    return PlacementSpot(center, 0.0, 0.0, (0.0, math.pi / 2, -math.pi / 2, math.pi))

@@ -1,0 +1,36 @@
+"""The roots of every error RoboScript raises on purpose.
+
+Two branches say whose move it is:
+
+- :class:`FailureError`: the input was valid but the robot could not do it (no path, no grasp, no free spot, an
+  arm blocked on its way). A benchmark counts these as the robot's failures; a program may catch them and try
+  another way.
+- :class:`UsageError`: the input was wrong (an unknown name, a malformed world or task file, a bad argument). The
+  message says what was wrong and what would be valid.
+
+What lies outside both (a language model that does not answer, a detector that cannot load, a backend that
+breaks) derives from :class:`RoboScriptError` directly. Each class also keeps the builtin base its callers have
+always caught (``RuntimeError``, ``ValueError``, ``KeyError``, ``TypeError``), so ``except ValueError`` goes on
+working.
+"""
+
+from __future__ import annotations
+
+
+class RoboScriptError(Exception):
+    """Anything RoboScript raises on purpose."""
+
+
+class FailureError(RoboScriptError):
+    """A valid request the robot could not carry out: planning, grasping, placing, tracking."""
+
+
+class UsageError(RoboScriptError):
+    """An invalid request: the message names what was wrong and what would be valid."""
+
+
+def error_message(exc: BaseException) -> str:
+    """The message of ``exc`` as a person should read it (a ``KeyError`` shows its text without quotes)."""
+    if isinstance(exc, KeyError) and exc.args:
+        return str(exc.args[0])
+    return str(exc)
