@@ -65,7 +65,6 @@ class ToolAPI:
         self.placer = Placer(perception, motion, self.base_xy)
         # Owed before the next motion: (direction, distance, "lift" after a grasp or "release" after letting go).
         self._pending_retreat: tuple[np.ndarray, float, str] | None = None
-        self._owed_retreat: tuple[np.ndarray, float, str] | None = None
 
     @classmethod
     def for_simulation(cls, backend, seed: int = 0, perception: str = "gt") -> ToolAPI:
@@ -269,10 +268,11 @@ class ToolAPI:
         """Collision-free motion of the TCP to ``pose``: a straight line when feasible, else a planned path."""
         target = _pose(pose, "pose")
         current = self.backend.tcp_pose()
-        own = self._retreat_first(target.position - current.position)
+        motion = target.position - current.position
+        own = self._retreat_first(motion)
         self._leave_where_started()
         turned = rotation_angle_between(current.quaternion, target.quaternion)
-        if own == "release" and turned < SAME_ORIENTATION and self._own_retreat(target.position - current.position):
+        if own is not None and own[2] == "release" and turned < SAME_ORIENTATION and self._own_retreat(motion, own):
             return
         self._allow_touch_near(target.position)
         try:
@@ -297,7 +297,7 @@ class ToolAPI:
             raise ValueError(f"distance is in metres and must be within [-1.5, 1.5], got {distance}")
         own = self._retreat_first(direction * distance)
         self._leave_where_started()
-        if own == "release" and self._own_retreat(direction * distance):
+        if own is not None and own[2] == "release" and self._own_retreat(direction * distance, own):
             return
         self.motion.move_in_direction(direction, distance, plan_if_blocked=True)
         self.contacts.withdraw_cleared(self._held)
@@ -408,28 +408,28 @@ class ToolAPI:
 
     # --- internals -------------------------------------------------------------------------------------------
 
-    def _own_retreat(self, motion: np.ndarray) -> bool:
+    def _own_retreat(self, motion: np.ndarray, owed: tuple[np.ndarray, float, str]) -> bool:
         """The program's own straight retreat from what it just let go of, as far as reach allows: an opened
         drawer's handle, or a place pose in a high drawer, may stand at the edge of the workspace, and the
         retreat's purpose (clearing what was let go) is met before its end. False where not even
-        :data:`RELEASE_RETREAT_LEAST` is free (the caller then moves as it would have)."""
+        :data:`RELEASE_RETREAT_LEAST` is free: the ``owed`` retreat is then made, and the caller moves as it
+        would have."""
         distance = float(np.linalg.norm(motion))
         moved = self.motion.retreat(motion, distance, least=min(RELEASE_RETREAT_LEAST, distance))
         if moved <= 0.0:
-            if self._owed_retreat is not None:  # the retreat owed, before the program's motion is tried as it is
-                self.motion.retreat(*self._owed_retreat[:2])
+            self.motion.retreat(*owed[:2])
             return False
         if moved < distance - 1e-3:
             print(f"[retreat] backed off {moved:.3f} m of {distance:.3f} m: the rest is out of reach")
         self.contacts.withdraw_cleared(self._held)
         return True
 
-    def _retreat_first(self, motion: np.ndarray | None) -> str | None:
+    def _retreat_first(self, motion: np.ndarray | None) -> tuple[np.ndarray, float, str] | None:
         """Makes the retreat owed since the last grasp or release, unless ``motion`` (the program's next straight
         move, as a displacement of the TCP; None for a planned one) is already one: mostly along the retreat, and
-        at least as long. Returns the retreat's kind ("lift" or "release") when ``motion`` is the program's own
-        retreat, else None."""
-        pending, self._pending_retreat, self._owed_retreat = self._pending_retreat, None, None
+        at least as long. Returns the retreat not made, ``(direction, distance, kind)`` with kind "lift" or
+        "release", when ``motion`` is the program's own retreat, else None."""
+        pending, self._pending_retreat = self._pending_retreat, None
         if pending is None:
             return None
         direction, distance, kind = pending
@@ -438,8 +438,7 @@ class ToolAPI:
         # leaves it as well upwards.
         away = [direction] if kind == "lift" else [direction, np.array([0.0, 0.0, 1.0])]
         if length >= distance and any(float(a @ motion) / length > OWN_RETREAT for a in away):
-            self._owed_retreat = pending  # made after all should the program's own not get clear (_own_retreat)
-            return kind
+            return pending
         self._leave_where_started()
         self.motion.retreat(direction, distance)
         self.contacts.withdraw_cleared(self._held)
@@ -478,17 +477,12 @@ class ToolAPI:
         with self.contacts.touching(self.contacts.not_yet_allowed([name], self._held)):
             for rank, candidate in enumerate(candidates):
                 for pose in (candidate, candidate.compose(flip)):
+                    # The best-ranked grasps are worth a wider IK search before a worse grasp is taken.
+                    search = self.motion.approaches if rank < WIDE_BRANCH_SEARCH else self.motion.straight_approaches
                     try:
-                        goal, approach = self.motion.straight_approach(
-                            pose, PRE_GRASP_DISTANCE, q, attempts=8, max_attempts=40, branches=3
-                        )
-                        if approach is None and rank < WIDE_BRANCH_SEARCH:
-                            # The IK branches nearest the arm's present configuration may all be walled in
-                            # (an arm that has just put something down beside the cabinet): the best-ranked grasps
-                            # are worth a wider search before a worse grasp is taken.
-                            goal, approach = self.motion.straight_approach(
-                                pose, PRE_GRASP_DISTANCE, q, attempts=8, max_attempts=80, branches=8
-                            )
+                        goal, approach = search(
+                            pose, PRE_GRASP_DISTANCE, q, attempts=8, max_attempts=40, branches=3, first=True
+                        )[0]
                     except IKError as exc:
                         errors.append(str(exc))
                         continue

@@ -58,7 +58,7 @@ class ContactAllowances:
         would be knocked over; a handle would be caught)."""
         scene = self.motion.scene
         q = self.motion.sync()
-        for part in [name] if is_object else self.family(name):
+        for part in self.family(name):
             if not is_object:
                 scene.allow("gripper", part, False)
             scene.allow_leaving("gripper", part, q)

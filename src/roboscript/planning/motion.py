@@ -29,6 +29,7 @@ from roboscript.planning.timing import time_parameterize
 from roboscript.planning.transfer import plan_transfer
 from roboscript.sim.simulator import ExecutionReport
 
+WIDE_APPROACH_SEARCH = {"attempts": 8, "max_attempts": 80, "branches": 8}  # see MotionPlanner.approaches
 PLANNING_ATTEMPTS = 3  # tries of a planner that runs out of time, each with twice the time of the one before
 
 
@@ -253,13 +254,23 @@ class MotionPlanner:
                     break
         return found or [(solutions[0], None)]
 
-    def approaches(self, target: Transform, distance: float) -> list[tuple[np.ndarray, np.ndarray | None]]:
-        """:meth:`straight_approaches` from the present configuration, searching more IK branches where the nearest
-        have no clear line (as the grasp tools do before they take a worse grasp)."""
-        q = self.sync()
-        options = self.straight_approaches(target, distance, q)
+    def approaches(
+        self,
+        target: Transform,
+        distance: float,
+        reference: np.ndarray | None = None,
+        attempts: int = 16,
+        max_attempts: int = 150,
+        branches: int = 4,
+        first: bool = False,
+    ) -> list[tuple[np.ndarray, np.ndarray | None]]:
+        """:meth:`straight_approaches` (from the present configuration by default), searching
+        :data:`WIDE_APPROACH_SEARCH`'s IK branches where the nearest have no clear line: they may all be walled in
+        (an arm that has just put something down beside the cabinet)."""
+        reference = self.sync() if reference is None else reference
+        options = self.straight_approaches(target, distance, reference, attempts, max_attempts, branches, first)
         if options[0][1] is None:
-            options = self.straight_approaches(target, distance, q, attempts=8, max_attempts=80, branches=8)
+            options = self.straight_approaches(target, distance, reference, first=first, **WIDE_APPROACH_SEARCH)
         return options
 
     def move_to_approach(
