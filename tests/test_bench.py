@@ -32,6 +32,9 @@ def test_checks_on_ground_truth():
     assert not inside("lemon", "white_ceramic_plate").evaluate(gt).passed
     assert on("lemon", "table").evaluate(gt).passed
     assert Check("on", "lemon", "white_ceramic_plate", negate=True).evaluate(gt).passed
+    below = on("turquoise_salad_plate", "lemon").evaluate(gt)  # the plate is not above the lemon
+    assert not below.passed and "above: False" in below.detail
+    assert json.loads(json.dumps(below.to_dict()))["passed"] is False  # records hold plain booleans
     lemon = gt.box("lemon").center
     assert at("lemon", lemon).evaluate(gt).passed
     assert not at("lemon", lemon + np.array([0.15, 0, 0])).evaluate(gt).passed

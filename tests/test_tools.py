@@ -281,3 +281,68 @@ def test_a_released_handle_is_backed_out_of_before_a_planned_motion():
         backed = first_moves[0] - released
         assert float(backed @ -approach) == pytest.approx(0.05, abs=0.005), backed
         np.testing.assert_allclose(backend.ground_truth.box("cabinet.drawer_1").center, opened, atol=0.005)
+
+
+def test_a_handle_met_head_on_at_the_edge_of_reach_is_grasped_and_pulled():
+    """The UR5e's pre-grasp 10 cm out from handle_1 met head-on (against the drawer front's normal) is at the edge
+    of reach: the straight approach of the grasps nearest that direction is shortened to what is free (at least
+    half). Those grasps pull the drawer only 6 cm, and of the grasps within the preferred cone none pulls 25 cm,
+    so the one that pulls furthest is taken. Before, the grasp planned its way in across IK branches, swept the
+    wrist round at the handle and was blocked (paper moderate_0, articulation style, every seed)."""
+    from roboscript.bench.tasks import get_task
+    from roboscript.planning.motion import MIN_APPROACH_FRACTION
+
+    task = get_task("moderate_0", "paper")
+    with MujocoBackend(task.world, robot="ur5e", seed=0, randomize=True) as backend:
+        tools = ToolAPI.for_simulation(backend, seed=0)
+        handle = tools.get_object_center_position("cabinet.handle_1")
+        normal = np.asarray(tools.get_plane_normal("cabinet.drawer_1", handle))
+        found = []
+        straight_approaches = tools.motion.straight_approaches
+
+        def recording(target, distance, *args, **kwargs):  # the real search, its answers kept
+            options = straight_approaches(target, distance, *args, **kwargs)
+            found.append((target.rotation[:, 2], tools.motion.approach_length(options[0][1])))
+            return options
+
+        tools.motion.straight_approaches = recording
+        chosen = tools.parse_horizontal_grasp_pose("cabinet.handle_1", approach_direction=-normal)
+        del tools.motion.straight_approaches
+        approach = chosen.rotation_matrix()[:, 2]
+        assert float(approach @ -normal) >= np.cos(0.8) - 1e-6  # within the preferred cone
+        nearest = [length for axis, length in found if float(axis @ -normal) >= float(found[0][0] @ -normal) - 1e-6]
+        assert all(MIN_APPROACH_FRACTION * 0.1 - 1e-3 <= length < 0.099 for length in nearest), found
+
+        tools.open_gripper()
+        tools.grasp(chosen)
+        assert np.linalg.norm(backend.tcp_pose().position - chosen.position_array()) < 0.01
+        tools.close_gripper()
+        tools.attach_object("cabinet.handle_1")
+        tools.move_in_direction([1, 0, 0], 0.2)
+        assert backend.ground_truth.joint("cabinet.drawer_1").value == pytest.approx(0.2, abs=0.02)
+
+
+def test_a_grasp_no_path_reaches_gives_way_to_the_next(tools):
+    """The grasp tools screen their best candidate with one planner run to its pre-grasp configuration (a test
+    double stands in for the planner's verdict here): one no path reaches gives way to the next, and is still
+    taken where every candidate is walled in."""
+    best = tools.parse_adaptive_shape_grasp_pose("plum", preferred_approach_direction=[0, 0, -1])
+    connects = tools.motion.connects
+    verdicts: list[bool] = []
+
+    def walled_first(start, goal, timeout=None):  # test double: the first candidate has no path
+        verdicts.append(len(verdicts) > 0)
+        return verdicts[-1]
+
+    try:
+        tools.motion.connects = walled_first
+        other = tools.parse_adaptive_shape_grasp_pose("plum", preferred_approach_direction=[0, 0, -1])
+        assert verdicts[:2] == [False, True]
+        assert not np.allclose(other.position_array(), best.position_array(), atol=1e-6) or not np.allclose(
+            other.rotation_matrix(), best.rotation_matrix(), atol=1e-6
+        )
+        tools.motion.connects = lambda start, goal, timeout=None: False  # test double: every candidate walled in
+        kept = tools.parse_adaptive_shape_grasp_pose("plum", preferred_approach_direction=[0, 0, -1])
+        np.testing.assert_allclose(kept.position_array(), best.position_array(), atol=1e-6)
+    finally:
+        tools.motion.connects = connects

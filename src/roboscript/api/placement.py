@@ -31,7 +31,7 @@ from roboscript.planning.motion import MotionPlanner
 DRAWER_WALL_MARGIN = 0.025
 PLACE_IK_BUDGET = 96  # IK screens per parse_place_pose call (each costs a few milliseconds to ~0.1 s)
 PLACE_RAISE_LIMIT = 0.04  # metres a place pose is raised at most when the held object has sunk in the hand
-PLACE_RETREAT = 0.08  # metres a place pose should leave the hand room to retreat straight up
+PLACE_RETREAT = 0.10  # metres a place pose should leave straight above it: the customary pre-place approach and retreat
 # Where things may be put down on the table, from the robot's base: in front of it, clear of it, within reach.
 TABLE_REACH = (np.array([0.15, -0.45]), np.array([0.73, 0.45]))
 

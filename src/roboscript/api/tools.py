@@ -43,7 +43,8 @@ RETREAT_AFTER_RELEASE = 0.05
 RELEASE_RETREAT_LEAST = 0.02  # a program's own retreat after a release may stop short of its distance, not of this
 SAME_ORIENTATION = 0.05  # radians: a move_to_pose turning the hand less is a straight move, a retreat if it backs off
 OWN_RETREAT = 0.5  # cosine (60 deg) above which a program's motion is its own retreat; wider than PREFERENCE_CONE
-PULL_CHECK = 0.25  # metres a drawer handle grasp must be able to pull
+PULL_CHECK = 0.25  # metres a drawer handle grasp should be able to pull
+PULL_LEAST = 0.15  # metres the grasp must pull where none pulls PULL_CHECK
 JOINT_TYPES = ("any", "revolute", "prismatic")
 
 
@@ -474,6 +475,9 @@ class ToolAPI:
         errors: list[str] = []
         flip = Transform(np.zeros(3), np.array([0.0, 0.0, 1.0, 0.0]))
         fallback: Transform | None = None
+        short_pull: tuple[float, Transform] | None = None
+        walled: Transform | None = None
+        short_approach: Transform | None = None
         with self.contacts.touching(self.contacts.not_yet_allowed([name], self._held)):
             for rank, candidate in enumerate(candidates):
                 for pose in (candidate, candidate.compose(flip)):
@@ -491,35 +495,53 @@ class ToolAPI:
                         fallback = fallback or pose
                         errors.append("the straight approach from the pre-grasp pose is blocked on every IK branch")
                         continue
-                    pull = self._pull_check(name, pose, goal)
-                    if pull:
-                        errors.append(pull)
+                    pulled, why = self._pull_reach(name, pose, goal)
+                    if why:
+                        errors.append(why)
+                        if pulled >= PULL_LEAST and (short_pull is None or pulled > short_pull[0]):
+                            short_pull = (pulled, pose)
+                        continue
+                    if self.motion.approach_length(approach) < PRE_GRASP_DISTANCE - 1e-3:
+                        # Moved in along a shortened line: kept, in case no grasp has the full approach.
+                        errors.append("the straight approach is free only part of the way")
+                        short_approach = short_approach or pose
+                        continue
+                    if not self.motion.connects(q, approach[0]):
+                        # IK reaches its pre-grasp, but no path was found to it: a configuration walled in by
+                        # the table. Kept, in case the planner's retries would find one.
+                        errors.append("no path was found to the pre-grasp configuration")
+                        walled = walled or pose
                         continue
                     return pose
-        if fallback is not None:
-            return fallback
+        # The last resorts, best first. A handle grasp that pulls less than PULL_CHECK is kept over one that
+        # cannot move in straight: the program may not pull that far (a preferred approach costs reach).
+        for kept in (walled, short_approach, short_pull[1] if short_pull else None, fallback):
+            if kept is not None:
+                return kept
         raise PlanningError(
             f"none of the {len(candidates)} {kind} grasps of {name!r} (each also turned half a turn) can be reached "
             f"without collision; first failure: {errors[0] if errors else 'none'}",
         )
 
-    def _pull_check(self, name: str, pose: Transform, q: np.ndarray) -> str:
-        """For the handle of a drawer: why the arm could not pull it ``PULL_CHECK`` metres open from this grasp
-        (empty if it could). A handle is grasped to be pulled, and a grasp that cannot pull is no use."""
+    def _pull_reach(self, name: str, pose: Transform, q: np.ndarray) -> tuple[float, str]:
+        """For the handle of a drawer: how far the arm can pull it open from this grasp, up to ``PULL_CHECK``
+        metres, and why not further (empty if it can pull that far). A handle is grasped to be pulled, and a
+        grasp that cannot pull is no use."""
         if kind_of(name) != "handle":
-            return ""
+            return 0.0, ""
         joints = self.perception.joints(name)
         if not joints or joints[0].type != "prismatic":
-            return ""
+            return 0.0, ""
         remaining = joints[0].upper - joints[0].value
         distance = min(PULL_CHECK, remaining)
         if distance < 0.02:
-            return ""
+            return distance, ""
         target = Transform(pose.position + joints[0].axis * distance, pose.quaternion)
         line = self.motion.cartesian([target], start=q)
         if line.fraction >= 1.0:
-            return ""
-        return f"from this grasp the drawer can be pulled only {line.fraction * distance * 100:.0f} cm: {line.reason}"
+            return distance, ""
+        pulled = line.fraction * distance
+        return pulled, f"from this grasp the drawer can be pulled only {pulled * 100:.0f} cm: {line.reason}"
 
     def _grasp_family(self, name: str) -> list[str]:
         return self._part_family(name) if name not in self.perception.objects() else [name]

@@ -23,6 +23,10 @@ class CheckResult:
     passed: bool
     detail: str
 
+    def __post_init__(self) -> None:
+        # Relations computed with numpy give numpy booleans, which records (JSON) cannot hold.
+        object.__setattr__(self, "passed", bool(self.passed))
+
     def to_dict(self) -> dict:
         return {"check": self.name, "passed": self.passed, "detail": self.detail}
 
@@ -65,7 +69,7 @@ class Check:
                 np.clip(np.minimum(a.upper[:2], b.upper[:2]) - np.maximum(a.lower[:2], b.lower[:2]), 0, None)
             )
             fraction = float(overlap / max(np.prod(a.size[:2]), 1e-12))
-            above = a.lower[2] >= b.lower[2] - 0.005
+            above = bool(a.lower[2] >= b.lower[2] - 0.005)
             return CheckResult(
                 self.name, above and fraction >= FRACTION, f"{fraction:.0%} of its footprint over, above: {above}"
             )

@@ -31,6 +31,7 @@ from roboscript.sim.simulator import ExecutionReport
 
 WIDE_APPROACH_SEARCH = {"attempts": 8, "max_attempts": 80, "branches": 8}  # see MotionPlanner.approaches
 PLANNING_ATTEMPTS = 3  # tries of a planner that runs out of time, each with twice the time of the one before
+MIN_APPROACH_FRACTION = 0.5  # of the pre-grasp distance: the least straight approach a grasp is moved in along
 
 
 class SceneSource(Protocol):
@@ -193,6 +194,16 @@ class MotionPlanner:
                 last = exc
         raise last
 
+    def connects(self, start: np.ndarray, goal: np.ndarray, timeout: float | None = None) -> bool:
+        """Whether one planner run finds a collision-free path from ``start`` to ``goal`` within ``timeout``
+        (default: the planning timeout): a screen for goals that IK reaches but a path cannot (a configuration
+        walled in by the table), not a verdict, since a busy machine may need the retries of :meth:`plan`."""
+        try:
+            self.planner.plan(start, goal, self.default_planner, timeout or self.planning_timeout)
+        except PlannerTimeoutError:
+            return False
+        return True
+
     def ik(
         self, pose: Transform, reference: np.ndarray | None = None, attempts: int = 16, max_attempts: int = 150
     ) -> np.ndarray:
@@ -239,19 +250,27 @@ class MotionPlanner:
         target's own IK branch: a configuration solved for the start of the line on its own may sit on another
         branch, from which no straight line leads to the target. Near a singularity (the hand above the base)
         some branches cannot follow the line at all, so up to ``branches`` IK solutions are tried. Returns those
-        whose line is clear (with ``first``, the first such), with its joint waypoints; or, when every line is
-        blocked, the nearest solution with None. Raises :class:`IKError` if ``target`` has no solution.
+        whose line is clear (with ``first``, the first such), with its joint waypoints; where none is, the longest
+        line clear for at least :data:`MIN_APPROACH_FRACTION` of ``distance``; or, when every line is blocked
+        sooner, the nearest solution with None. Raises :class:`IKError` if ``target`` has no solution.
         """
         reference = self.backend.joint_positions() if reference is None else reference
         solutions = ik_solutions(self.kinematics, target, reference, self.scene, attempts, max_attempts, branches)
         start = Transform(target.position - distance * target.rotation[:, 2], target.quaternion)
         found = []
+        shorter: tuple[float, np.ndarray, np.ndarray] | None = None
         for q in solutions:
             line = cartesian_path(self.kinematics, self.scene, q, [start])
             if line.fraction >= 1.0:
                 found.append((q, line.waypoints[::-1].copy()))
                 if first:
                     break
+            elif line.fraction >= MIN_APPROACH_FRACTION and (shorter is None or line.fraction > shorter[0]):
+                shorter = (line.fraction, q, line.waypoints[::-1].copy())
+        if not found and shorter is not None:
+            # As MoveIt's pick has a desired and a least approach distance: a pre-grasp pose at the edge of reach
+            # (a handle met head-on) is moved in along the line as far as it is free.
+            found.append(shorter[1:])
         return found or [(solutions[0], None)]
 
     def approaches(
@@ -265,13 +284,21 @@ class MotionPlanner:
         first: bool = False,
     ) -> list[tuple[np.ndarray, np.ndarray | None]]:
         """:meth:`straight_approaches` (from the present configuration by default), searching
-        :data:`WIDE_APPROACH_SEARCH`'s IK branches where the nearest have no clear line: they may all be walled in
-        (an arm that has just put something down beside the cabinet)."""
+        :data:`WIDE_APPROACH_SEARCH`'s IK branches where the nearest have no clear line of the full ``distance``: they
+        may all be walled in (an arm that has just put something down beside the cabinet)."""
         reference = self.sync() if reference is None else reference
         options = self.straight_approaches(target, distance, reference, attempts, max_attempts, branches, first)
-        if options[0][1] is None:
-            options = self.straight_approaches(target, distance, reference, first=first, **WIDE_APPROACH_SEARCH)
+        if self.approach_length(options[0][1]) < distance - 1e-3:
+            wider = self.straight_approaches(target, distance, reference, first=first, **WIDE_APPROACH_SEARCH)
+            if self.approach_length(wider[0][1]) > self.approach_length(options[0][1]):
+                options = wider
         return options
+
+    def approach_length(self, line: np.ndarray | None) -> float:
+        """How far a straight approach's line (joint waypoints) moves the TCP; 0 for none."""
+        if line is None:
+            return 0.0
+        return float(np.linalg.norm(self.kinematics.fk(line[0]).position - self.kinematics.fk(line[-1]).position))
 
     def move_to_approach(
         self, options: list[tuple[np.ndarray, np.ndarray | None]], target: Transform, distance: float
