@@ -11,6 +11,7 @@ from collections.abc import Sequence
 
 import numpy as np
 
+from roboscript.api.held import Held, PerceptionFollower, PlanningFollower
 from roboscript.api.placement import Placer
 from roboscript.api.pose import Pose, _real
 from roboscript.api.signature import tool
@@ -61,8 +62,8 @@ class ToolAPI:
             max_width=gripper.max_width, hand_lower=gripper.hand_box[0], hand_upper=gripper.hand_box[1]
         )
         self.base_xy = np.asarray(motion.kinematics.mount.position[:2], dtype=float)
-        self._held: list[str] = []
         self.contacts = ContactAllowances(motion, self._grasp_family)
+        self.held = Held([PlanningFollower(motion, self.contacts), PerceptionFollower(perception)])
         self.placer = Placer(perception, motion, self.base_xy)
         # Owed before the next motion: (direction, distance, "lift" after a grasp or "release" after letting go).
         self._pending_retreat: tuple[np.ndarray, float, str] | None = None
@@ -251,7 +252,7 @@ class ToolAPI:
     def open_gripper(self) -> None:
         """Opens the gripper fully."""
         self.backend.open_gripper()
-        if self._held:  # what was let go stays behind
+        if self.held:  # what was let go stays behind
             self._pending_retreat = (-self.backend.tcp_pose().rotation[:, 2], RETREAT_AFTER_RELEASE, "release")
 
     @tool
@@ -279,15 +280,15 @@ class ToolAPI:
         try:
             self.motion.move_to_pose(target)
         except IKError as exc:
-            higher = self.placer.raised_for_release(target, exc, self._held)
+            higher = self.placer.raised_for_release(target, exc, self.held)
             if higher is None:
                 raise
             print(
-                f"[move_to_pose] {', '.join(self._held)} sits lower in the hand than when the pose was made: "
+                f"[move_to_pose] {', '.join(self.held)} sits lower in the hand than when the pose was made: "
                 f"going {higher.position[2] - target.position[2]:.3f} m higher"
             )
             self.motion.move_to_pose(higher)
-        self.contacts.withdraw_cleared(self._held)
+        self.contacts.withdraw_cleared(self.held)
 
     @tool
     def move_in_direction(self, axis: Sequence[float], distance: float) -> None:
@@ -301,7 +302,7 @@ class ToolAPI:
         if own is not None and own[2] == "release" and self._own_retreat(direction * distance, own):
             return
         self.motion.move_in_direction(direction, distance, plan_if_blocked=True)
-        self.contacts.withdraw_cleared(self._held)
+        self.contacts.withdraw_cleared(self.held)
 
     @tool
     def generate_arc_path_around_joint(
@@ -327,7 +328,7 @@ class ToolAPI:
         self._retreat_first(targets[0].position - self.backend.tcp_pose().position)
         self._leave_where_started()
         self.motion.follow(targets)
-        self.contacts.withdraw_cleared(self._held)
+        self.contacts.withdraw_cleared(self.held)
 
     @tool
     def grasp(self, grasp_pose: Pose) -> None:
@@ -345,7 +346,7 @@ class ToolAPI:
         chosen = self.motion.move_to_approach(options, target, PRE_GRASP_DISTANCE)
         self._allow_touch_near(target.position)
         self.motion.finish_approach(chosen, target)
-        self.contacts.withdraw_cleared(self._held)
+        self.contacts.withdraw_cleared(self.held)
 
     @tool
     def parse_place_pose(
@@ -357,8 +358,8 @@ class ToolAPI:
             raise ValueError(
                 "give exactly one of receptacle_name (e.g. 'plate', 'cabinet.drawer_1') or position [x, y, z]"
             )
-        if name not in self._held:
-            held = ", ".join(self._held) or "nothing"
+        if name not in self.held:
+            held = ", ".join(self.held.names) or "nothing"
             raise ValueError(
                 f"parse_place_pose needs {name!r} in the gripper (it holds {held}): grasp it, close_gripper() and "
                 f"attach_object({name!r}) first"
@@ -371,7 +372,7 @@ class ToolAPI:
     def attach_object(self, object_name: str) -> None:
         """Makes the planning scene carry ``object_name`` with the gripper (after closing on it)."""
         name = self._name(object_name)
-        if name in self._held:
+        if name in self.held:
             return
         is_object = name in self.perception.objects()
         if not is_object and "." not in name:
@@ -381,12 +382,9 @@ class ToolAPI:
                 f"({', '.join(self.perception.objects()) or 'none'}) or a drawer or door, or its handle "
                 f"({', '.join(movable) or 'none'})"
             )
-        self._held.append(name)
-        self.contacts.allow_touch([name])  # a drawer with its handle: it moves on its joint, or with its drawer
+        self.held.take(name, is_object, self.backend.tcp_pose())
         if not is_object:
             return
-        self.motion.attach(name)
-        self.perception.carried(name, self.backend.tcp_pose())
         # Off whatever it rests on, at once if the fingers hold it: where it settles in the hand, and so what a
         # place pose asked for next must allow for, shows only once it hangs free.
         self._pending_retreat = (np.array([0.0, 0.0, 1.0]), LIFT_AFTER_GRASP, "lift")
@@ -396,16 +394,7 @@ class ToolAPI:
     @tool
     def detach_object(self, object_name: str) -> None:
         """Returns ``object_name`` to the planning scene's world (after opening the gripper)."""
-        name = self._name(object_name)
-        if name not in self._held:
-            raise ValueError(f"{name!r} is not attached; attached: {', '.join(self._held) or 'nothing'}")
-        self._held.remove(name)
-        self.perception.released(name, self.backend.tcp_pose())
-        is_object = name in self.perception.objects()
-        if is_object:
-            self.motion.detach(name)
-        self.contacts.released(name, is_object)
-        self.motion.world_changed()
+        self.held.let_go(self._name(object_name), self.backend.tcp_pose())
 
     # --- internals -------------------------------------------------------------------------------------------
 
@@ -422,7 +411,7 @@ class ToolAPI:
             return False
         if moved < distance - 1e-3:
             print(f"[retreat] backed off {moved:.3f} m of {distance:.3f} m: the rest is out of reach")
-        self.contacts.withdraw_cleared(self._held)
+        self.contacts.withdraw_cleared(self.held)
         return True
 
     def _retreat_first(self, motion: np.ndarray | None) -> tuple[np.ndarray, float, str] | None:
@@ -442,7 +431,7 @@ class ToolAPI:
             return pending
         self._leave_where_started()
         self.motion.retreat(direction, distance)
-        self.contacts.withdraw_cleared(self._held)
+        self.contacts.withdraw_cleared(self.held)
         return None
 
     def _name(self, name: object) -> str:
@@ -478,7 +467,7 @@ class ToolAPI:
         short_pull: tuple[float, Transform] | None = None
         walled: Transform | None = None
         short_approach: Transform | None = None
-        with self.contacts.touching(self.contacts.not_yet_allowed([name], self._held)):
+        with self.contacts.touching(self.contacts.not_yet_allowed([name], self.held)):
             for rank, candidate in enumerate(candidates):
                 for pose in (candidate, candidate.compose(flip)):
                     # The best-ranked grasps are worth a wider IK search before a worse grasp is taken.
@@ -551,7 +540,7 @@ class ToolAPI:
 
         Not while holding something: then the goal is a place pose, and the fingers must keep clear of the
         receptacle."""
-        if not self._held:
+        if not self.held:
             self.contacts.allow_touch(self._near(point))
 
     def _near(self, point: np.ndarray, distance: float = 0.02) -> list[str]:
@@ -567,7 +556,7 @@ class ToolAPI:
 
     def _new_touches(self, point: np.ndarray) -> list[str]:
         """Parts near ``point`` the gripper may not touch yet (for a temporary allowance)."""
-        return [] if self._held else self.contacts.not_yet_allowed(self._near(point))
+        return [] if self.held else self.contacts.not_yet_allowed(self._near(point))
 
     def _leave_where_started(self) -> None:
         """Before a motion: contacts it starts in may be left, not pushed into (:class:`ContactAllowances`)."""
