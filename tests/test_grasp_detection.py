@@ -202,3 +202,28 @@ def test_the_open_fingers_must_clear_what_stands_just_beyond_a_full_width_grasp(
     rotation = np.column_stack([[0.0, 1.0, 0.0], [1.0, 0.0, 0.0], [0.0, 0.0, -1.0]])  # closing along x
     assert collides(rotation, center, scene, GripperGeometry(0.08), width=0.074)
     assert not collides(rotation, center, np.vstack([points, table()]), GripperGeometry(0.08), width=0.074)
+
+
+def flared_cup_surface(center_xy, bottom_radius, rim_radius, height, z0=0.82, n=60, rings=24):
+    """Outer wall points and outward normals of a cup that widens upwards (no inside, no bottom)."""
+    slope = (rim_radius - bottom_radius) / height
+    points, normals = [], []
+    for h in np.linspace(0.0, height, rings):
+        r = bottom_radius + slope * h
+        for a in np.linspace(0.0, 2 * math.pi, n, endpoint=False):
+            points.append([center_xy[0] + r * math.cos(a), center_xy[1] + r * math.sin(a), z0 + h])
+            normal = np.array([math.cos(a), math.sin(a), -slope])
+            normals.append(normal / np.linalg.norm(normal))
+    return np.array(points), np.array(normals)
+
+
+def test_the_open_fingers_must_clear_a_flared_rim_they_pass_on_the_way_in():
+    # A cup 7.6 cm across low down and 8.3 cm at the rim, in the 2F-85's 8.5 cm: a grasp across its body has room
+    # where the pads close, but the fingers would pass the rim with 1 mm to spare, less than a point cloud's
+    # error at an edge. A cup 7.4 cm at the rim leaves them 5.5 mm: gripped across.
+    gripper = GripperGeometry(0.085)
+    for rim, across in ((0.0415, False), (0.037, True)):
+        points, normals = flared_cup_surface((0.0, 0.0), 0.034, rim, 0.09)
+        grasps = detect_grasps(ObjectPoints(points, normals), np.vstack([points, table()]), gripper, seed=1)
+        full_width = [g for g in grasps if g.width > 0.06]
+        assert bool(full_width) is across, rim
