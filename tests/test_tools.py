@@ -247,6 +247,11 @@ def test_a_grasped_object_is_lifted_off_its_support_and_a_released_one_left_behi
         np.testing.assert_allclose(gt.box("apple").center, placed, atol=0.005)
         tools.move_in_direction([0.0, 0.0, 1.0], 0.1)  # a program's own retreat is not doubled
         assert abs(backend.tcp_pose().position[2] - moved[2] - 0.1) < 0.005
+        # Fingers closed on nothing: attaching says so, and nothing is left held.
+        tools.close_gripper()
+        with pytest.raises(GraspError, match="'apple' is not between the fingers"):
+            tools.attach_object("apple")
+        assert not tools.held and tools.motion.scene.attached == []
 
 
 def test_a_released_handle_is_backed_out_of_before_a_planned_motion():

@@ -40,6 +40,7 @@ WIDE_BRANCH_SEARCH = 4  # the best-ranked grasp candidates whose approach is sou
 # Retreats made on the program's behalf before its next motion, unless that motion is one itself: a held object is
 # lifted off its support (up), a released one left behind (the hand backs off along its approach axis).
 LIFT_AFTER_GRASP = 0.05
+EMPTY_GRIP = 0.002  # metres: fingers closed this far hold nothing
 RETREAT_AFTER_RELEASE = 0.05
 RELEASE_RETREAT_LEAST = 0.02  # a program's own retreat after a release may stop short of its distance, not of this
 SAME_ORIENTATION = 0.05  # radians: a move_to_pose turning the hand less is a straight move, a retreat if it backs off
@@ -390,6 +391,13 @@ class ToolAPI:
         self._pending_retreat = (np.array([0.0, 0.0, 1.0]), LIFT_AFTER_GRASP, "lift")
         if self.backend.gripper_width() < self.gripper.max_width - 0.005:
             self._retreat_first(None)
+            if self.backend.gripper_width() < EMPTY_GRIP:
+                self.held.let_go(name, self.backend.tcp_pose())
+                raise GraspError(
+                    f"{name!r} is not between the fingers: they closed on nothing as the hand lifted it (the grasp "
+                    "missed, or it slipped out). Open the gripper and grasp it again: nearer its middle, or from "
+                    "above (preferred_approach_direction=[0, 0, -1])"
+                )
 
     @tool
     def detach_object(self, object_name: str) -> None:
