@@ -351,3 +351,54 @@ def test_a_grasp_no_path_reaches_gives_way_to_the_next(tools):
         np.testing.assert_allclose(kept.position_array(), best.position_array(), atol=1e-6)
     finally:
         tools.motion.connects = connects
+
+
+def test_a_place_configuration_no_path_reaches_gives_way_to_the_next():
+    """parse_place_pose screens the configuration it chooses with one planner run, as the grasp tools do (a test
+    double stands in for the planner's verdict): one no path reaches gives way to the next, and is still taken
+    where every one is walled in."""
+    backend = MujocoBackend("cluttered_2_pick_and_place", robot="panda", settle=0.5)
+    try:
+        tools = ToolAPI.for_simulation(backend)
+        tools.grasp(tools.parse_adaptive_shape_grasp_pose("plum", preferred_approach_direction=[0, 0, -1]))
+        tools.close_gripper()
+        tools.attach_object("plum")
+        _place_screened(tools)
+    finally:
+        backend.close()
+
+
+def _place_screened(tools: ToolAPI) -> None:
+    best = tools.parse_place_pose("plum", "footed_bowl")
+    connects = tools.motion.connects
+    verdicts: list[bool] = []
+
+    def walled_first(start, goal, timeout=None):  # test double: the first configuration has no path
+        verdicts.append(len(verdicts) > 0)
+        return verdicts[-1]
+
+    try:
+        tools.motion.connects = walled_first
+        other = tools.parse_place_pose("plum", "footed_bowl")
+        assert verdicts[:2] == [False, True]
+        chosen = tools.motion._preferred_for(other.to_transform())
+        assert chosen is not None
+        tools.motion.connects = lambda start, goal, timeout=None: False  # test double: every one walled in
+        kept = tools.parse_place_pose("plum", "footed_bowl")
+        np.testing.assert_allclose(kept.position_array(), best.position_array(), atol=1e-6)
+    finally:
+        tools.motion.connects = connects
+
+
+def test_a_side_grasp_of_a_flat_lying_object_ranks_behind_a_top_down_one():
+    """A banana lies 3.8 cm high: a side grasp tilted down onto it squeezes it out of the fingers."""
+    from roboscript.api.tools import LYING_SIDE_PENALTY, _side_penalty
+    from roboscript.geometry import Transform
+
+    top_down = Transform.from_rotation(np.zeros(3), np.diag([1.0, -1.0, -1.0]))
+    tilt = np.radians(38)  # the approach 38 degrees off vertical, closing along y
+    tilted = np.array([[np.cos(tilt), 0.0, np.sin(tilt)], [0.0, -1.0, 0.0], [np.sin(tilt), 0.0, -np.cos(tilt)]])
+    side = Transform.from_rotation(np.zeros(3), tilted)
+    assert _side_penalty(top_down, lying=True) == 0.0
+    assert _side_penalty(side, lying=True) == LYING_SIDE_PENALTY
+    assert _side_penalty(side, lying=False) == 0.0

@@ -29,6 +29,7 @@ from roboscript.planning.errors import IKError
 from roboscript.planning.motion import MotionPlanner
 
 DRAWER_WALL_MARGIN = 0.025
+PLACE_PATH_SCREENS = 3  # planner runs per parse_place_pose call that check a place configuration can be reached
 PLACE_IK_BUDGET = 96  # IK screens per parse_place_pose call (each costs a few milliseconds to ~0.1 s)
 PLACE_RAISE_LIMIT = 0.04  # metres a place pose is raised at most when the held object has sunk in the hand
 PLACE_RETREAT = 0.10  # metres a place pose should leave straight above it: the customary pre-place approach and retreat
@@ -95,7 +96,9 @@ class Placer:
         held = set(held)
         if not held or not error.colliding or error.position_error > 1e-3:
             return None
-        if not all(a in held or b in held for a, b in error.colliding):
+        # The pairs are those of every IK branch tried: other branches may put a link against the cabinet, so
+        # what the hand holds need only be among them; the raised pose is checked in full.
+        if not any(a in held or b in held for a, b in error.colliding):
             return None
         for lift in np.arange(0.01, PLACE_RAISE_LIMIT + 1e-9, 0.01):
             raised = Transform(target.position + np.array([0.0, 0.0, lift]), target.quaternion)
@@ -199,13 +202,17 @@ class Placer:
         the object turned as the spot allows (round, or any quarter turn at a position), and released higher up
         so the hand clears a deep container's walls; of the turns and IK branches that work at a height, the one
         nearest the arm's present configuration is taken (a hand kept facing one way can make the arm swing
-        round behind itself). Where no spot allows the retreat, the first reachable one is taken. The
-        configuration chosen becomes the motion's goal for that pose (:meth:`MotionPlanner.prefer_goal`)."""
+        round behind itself), provided one planner run finds a path to it (:data:`PLACE_PATH_SCREENS` runs at
+        most). Where no spot allows the full retreat, the one with the longest is taken. The configuration chosen
+        becomes the motion's goal for that pose (:meth:`MotionPlanner.prefer_goal`)."""
         q = self.motion.sync()
         tried: list[PlacementSpot] = []
         errors: list[str] = []
-        fallback: tuple[Transform, np.ndarray] | None = None
-        budget = PLACE_IK_BUDGET
+        # Where no spot leaves the full retreat, the one that leaves the most: a program's own retreat after the
+        # release then stops short as reach allows (ToolAPI._own_retreat) instead of not starting.
+        fallback: tuple[float, Transform, np.ndarray] | None = None
+        walled: tuple[Transform, np.ndarray] | None = None
+        budget, screens = PLACE_IK_BUDGET, PLACE_PATH_SCREENS
         for spot in spots:
             if budget <= 0:
                 break
@@ -215,17 +222,35 @@ class Placer:
             for lift in (0.0, 0.02, 0.05, 0.1):
                 reached = self._place_options(spot, lift, tcp, pivot, q, errors)
                 budget -= len(spot.turns)
-                fallback = fallback or next(((pose, goals[0]) for pose, goals in reached), None)
-                leaving = [(pose, g) for pose, goals in reached for g in goals if self._can_retreat(pose, g)]
-                if leaving:
-                    pose, goal = min(leaving, key=lambda c: float(np.sum((c[1] - q) ** 2)))
-                    self.motion.prefer_goal(pose, goal)
-                    return pose
+                options = [(self._retreat_room(pose, g), pose, g) for pose, goals in reached for g in goals]
+                for room, pose, g in options:
+                    if fallback is None or room > fallback[0] + 1e-3:
+                        fallback = (room, pose, g)
+                leaving = [(pose, g) for room, pose, g in options if room >= PLACE_RETREAT - 1e-3]
+                leaving.sort(key=lambda c: float(np.sum((c[1] - q) ** 2)))
+                for pose, goal in leaving:
+                    if screens <= 0:
+                        break
+                    screens -= 1
+                    # As a grasp's pre-grasp is screened: a configuration IK reaches may be walled in (a UR5e
+                    # branch turned back over its shoulder beside the basket), and no path reaches it.
+                    if self.motion.connects(q, goal):
+                        self.motion.prefer_goal(pose, goal)
+                        return pose
+                    walled = walled or (pose, goal)
+                if leaving and screens <= 0:
+                    walled = walled or leaving[0]
+                    break
                 if budget <= 0:
                     break
-        if fallback is not None:
-            self.motion.prefer_goal(*fallback)
-            return fallback[0]
+            if screens <= 0:
+                break
+        # The last resorts: a pose that leaves the full retreat, though no path was found to it in one planner
+        # run (the motion's own retries may find one), then the one that leaves the longest retreat.
+        last = walled or (fallback[1:] if fallback is not None else None)
+        if last is not None:
+            self.motion.prefer_goal(*last)
+            return last[0]
         raise PlacementError(
             f"no reachable, collision-free pose puts {name!r} {where} ({len(tried)} spots tried): "
             f"{errors[0] if errors else 'no spot'}"
@@ -248,14 +273,14 @@ class Placer:
                 errors.append(str(exc))
         return out
 
-    def _can_retreat(self, pose: Transform, q: np.ndarray) -> bool:
-        """Whether the arm at ``q`` (the TCP at ``pose``) can let go there, the fingers opening fully without
-        touching anything but what they held, and then move straight up by :data:`PLACE_RETREAT` (what it held
-        stays behind)."""
+    def _retreat_room(self, pose: Transform, q: np.ndarray) -> float:
+        """How far, up to :data:`PLACE_RETREAT`, the arm at ``q`` (the TCP at ``pose``) can move straight up
+        after letting go there, the fingers opened fully without touching anything but what they held (what it
+        held stays behind); 0 where the fingers cannot open."""
         up = Transform(pose.position + np.array([0.0, 0.0, PLACE_RETREAT]), pose.quaternion)
         scene = self.motion.scene
         with scene.ignoring_held(), scene.fingers_open():
-            return cartesian_path(self.motion.kinematics, scene, q, [up]).fraction >= 1.0
+            return cartesian_path(self.motion.kinematics, scene, q, [up]).fraction * PLACE_RETREAT
 
 
 def _clear_of(spots: list, points: np.ndarray, radius: float, table_top: float) -> list:
@@ -280,5 +305,3 @@ def _within(box: Box3D, receptacle: Receptacle) -> bool:
     """Whether an object's box centre lies in the receptacle's interior (in its frame)."""
     local = receptacle.frame.inverse().apply(box.center[None])[0]
     return bool(np.all(local >= receptacle.lower - 0.01) and np.all(local <= receptacle.upper + 0.01))
-
-

@@ -36,7 +36,10 @@ PRE_GRASP_DISTANCE = 0.1
 # A box grasp closes on the faces of the object's footprint, not on a pair of points checked against friction:
 # ranked with the contact quality of a middling antipodal pair.
 BOX_GRASP_QUALITY = 0.5
-WIDE_BRANCH_SEARCH = 4  # the best-ranked grasp candidates whose approach is sought on more IK branches
+# Lower than this, an object lies flat (a banana, 3.8 cm): a side grasp tilted down onto it closes on the upper
+# curve of its body and squeezes it out of the fingers, so the box side grasps rank behind the top-down ones.
+LYING_FLAT = 0.05
+LYING_SIDE_PENALTY = 1.5
 # Retreats made on the program's behalf before its next motion, unless that motion is one itself: a held object is
 # lifted off its support (up), a released one left behind (the hand backs off along its approach axis).
 LIFT_AFTER_GRASP = 0.05
@@ -217,8 +220,9 @@ class ToolAPI:
         # only off the middle (a banana half hidden from the cameras) or none within reach (an object nearly as
         # wide as the opening), the adaptive grasp is then no worse than the central or horizontal one.
         width = self.gripper.max_width - WIDTH_MARGIN
+        lying = self.perception.box(name).size[2] < LYING_FLAT
         ranked = [(c.score, c.pose) for c in detected[:12]] + [
-            (score_grasp(pose, width, BOX_GRASP_QUALITY, cloud, preferences), pose)
+            (score_grasp(pose, width, BOX_GRASP_QUALITY, cloud, preferences) - _side_penalty(pose, lying), pose)
             for pose in self._box_grasps(name, preferences)
         ]
         candidates = [pose for _, pose in sorted(ranked, key=lambda c: -c[0])]
@@ -476,12 +480,14 @@ class ToolAPI:
         walled: Transform | None = None
         short_approach: Transform | None = None
         with self.contacts.touching(self.contacts.not_yet_allowed([name], self.held)):
-            for rank, candidate in enumerate(candidates):
+            for candidate in candidates:
                 for pose in (candidate, candidate.compose(flip)):
-                    # The best-ranked grasps are worth a wider IK search before a worse grasp is taken.
-                    search = self.motion.approaches if rank < WIDE_BRANCH_SEARCH else self.motion.straight_approaches
+                    # Every grasp's IK branches are searched widely before a worse grasp is taken: next to the
+                    # base the arm is folded near its joint limits, and the nearest branches cannot follow even a
+                    # top-down line (a banana beside the Panda: a grasp at its end was taken instead, and the
+                    # banana swung out of the fingers).
                     try:
-                        goal, approach = search(
+                        goal, approach = self.motion.approaches(
                             pose, PRE_GRASP_DISTANCE, q, attempts=8, max_attempts=40, branches=3, first=True
                         )[0]
                     except IKError as exc:
@@ -601,6 +607,12 @@ def _pose(value: object, field: str) -> Transform:
             f"{field} must be a Pose (e.g. from get_gripper_pose() or a parse_* tool), got {type(value).__name__}"
         )
     return value.to_transform()
+
+
+def _side_penalty(pose: Transform, lying: bool) -> float:
+    """What a box grasp loses in rank for coming at a flat-lying object from the side (see :data:`LYING_FLAT`)."""
+    top_down = -float(pose.rotation[2, 2]) > 0.95
+    return LYING_SIDE_PENALTY if lying and not top_down else 0.0
 
 
 __all__ = ["PlanningError", "ToolAPI", "UnknownObjectError"]
