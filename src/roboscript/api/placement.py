@@ -30,6 +30,8 @@ from roboscript.planning.motion import MotionPlanner
 
 DRAWER_WALL_MARGIN = 0.025
 PLACE_PATH_SCREENS = 3  # planner runs per parse_place_pose call that check a place configuration can be reached
+PLACE_IK_QUICK = (8, 24)  # IK attempts (wanted, at most) per place pose screened
+PLACE_IK_WIDE = (24, 200)  # the same where the quick screen reached no spot
 PLACE_IK_BUDGET = 96  # IK screens per parse_place_pose call (each costs a few milliseconds to ~0.1 s)
 PLACE_RAISE_LIMIT = 0.04  # metres a place pose is raised at most when the held object has sunk in the hand
 PLACE_RETREAT = 0.10  # metres a place pose should leave straight above it: the customary pre-place approach and retreat
@@ -87,7 +89,13 @@ class Placer:
         footprint_center = self.perception.footprint(name)[0]
         pivot = np.array([footprint_center[0], footprint_center[1], self.perception.box(name).center[2]])
 
-        return self._reachable_place(name, tcp, pivot, spots, where)
+        try:
+            return self._reachable_place(name, tcp, pivot, spots, where, PLACE_IK_QUICK)
+        except PlacementError:
+            # The quick screen may miss the one IK branch that clears the furniture (a mug going into a drawer
+            # pulled 20 cm, at the edge of the Panda's reach): the spots are searched again, widely, before
+            # giving up.
+            return self._reachable_place(name, tcp, pivot, spots, where, PLACE_IK_WIDE)
 
     def raised_for_release(self, target: Transform, error: IKError, held: Collection[str]) -> Transform | None:
         """Where the TCP reaches ``target`` but only what it holds collides (an object that turned or slid down
@@ -194,7 +202,13 @@ class Placer:
         return fronts[int(np.argmin(np.linalg.norm(fronts - self.base_xy, axis=1)))]
 
     def _reachable_place(
-        self, name: str, tcp: Transform, pivot: np.ndarray, spots: list[PlacementSpot], where: str
+        self,
+        name: str,
+        tcp: Transform,
+        pivot: np.ndarray,
+        spots: list[PlacementSpot],
+        where: str,
+        search: tuple[int, int],
     ) -> Transform:
         """The first spot (in order, skipping near-repeats of spots that failed) with a collision-free IK from which
         the hand can also retreat straight up (:data:`PLACE_RETREAT`), as a place's retreat would: a hand put
@@ -220,12 +234,15 @@ class Placer:
                 continue
             tried.append(spot)
             for lift in (0.0, 0.02, 0.05, 0.1):
-                reached = self._place_options(spot, lift, tcp, pivot, q, errors)
+                reached = self._place_options(spot, lift, tcp, pivot, q, errors, search)
                 budget -= len(spot.turns)
                 options = [(self._retreat_room(pose, g), pose, g) for pose, goals in reached for g in goals]
                 for room, pose, g in options:
                     if fallback is None or room > fallback[0] + 1e-3:
                         fallback = (room, pose, g)
+                if options and search == PLACE_IK_WIDE:
+                    screens = 0  # the wide search is the last resort: the first spot it reaches is taken
+                    break
                 leaving = [(pose, g) for room, pose, g in options if room >= PLACE_RETREAT - 1e-3]
                 leaving.sort(key=lambda c: float(np.sum((c[1] - q) ** 2)))
                 for pose, goal in leaving:
@@ -257,7 +274,14 @@ class Placer:
         )
 
     def _place_options(
-        self, spot: PlacementSpot, lift: float, tcp: Transform, pivot: np.ndarray, q: np.ndarray, errors: list[str]
+        self,
+        spot: PlacementSpot,
+        lift: float,
+        tcp: Transform,
+        pivot: np.ndarray,
+        q: np.ndarray,
+        errors: list[str],
+        search: tuple[int, int],
     ) -> list[tuple[Transform, list[np.ndarray]]]:
         """The gripper poses that put the held object at ``spot`` (``lift`` higher), one per turn it allows, with
         their collision-free IK branches; the poses without any add their reason to ``errors``."""
@@ -268,7 +292,7 @@ class Placer:
             position = spot.center + [0.0, 0.0, lift] + rotation @ (tcp.position - pivot)
             pose = Transform.from_rotation(position, rotation @ tcp.rotation)
             try:
-                out.append((pose, self.motion.ik_choices(pose, q, attempts=8, max_attempts=24)))
+                out.append((pose, self.motion.ik_choices(pose, q, attempts=search[0], max_attempts=search[1])))
             except IKError as exc:
                 errors.append(str(exc))
         return out
