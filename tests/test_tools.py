@@ -327,6 +327,17 @@ def test_a_handle_met_head_on_at_the_edge_of_reach_is_grasped_and_pulled():
         assert backend.ground_truth.joint("cabinet.drawer_1").value == pytest.approx(0.2, abs=0.02)
 
 
+def _walled_first(verdicts: list[bool]):
+    """A test double for ``MotionPlanner.connects``: no path to the first configuration asked about, a path to every
+    later one; each verdict is appended to ``verdicts``."""
+
+    def connects(start, goal, timeout=None):
+        verdicts.append(len(verdicts) > 0)
+        return verdicts[-1]
+
+    return connects
+
+
 def test_a_grasp_no_path_reaches_gives_way_to_the_next(tools):
     """The grasp tools screen their best candidate with one planner run to its pre-grasp configuration (a test
     double stands in for the planner's verdict here): one no path reaches gives way to the next, and is still
@@ -334,13 +345,8 @@ def test_a_grasp_no_path_reaches_gives_way_to_the_next(tools):
     best = tools.parse_adaptive_shape_grasp_pose("plum", preferred_approach_direction=[0, 0, -1])
     connects = tools.motion.connects
     verdicts: list[bool] = []
-
-    def walled_first(start, goal, timeout=None):  # test double: the first candidate has no path
-        verdicts.append(len(verdicts) > 0)
-        return verdicts[-1]
-
     try:
-        tools.motion.connects = walled_first
+        tools.motion.connects = _walled_first(verdicts)
         other = tools.parse_adaptive_shape_grasp_pose("plum", preferred_approach_direction=[0, 0, -1])
         assert verdicts[:2] == [False, True]
         assert not np.allclose(other.position_array(), best.position_array(), atol=1e-6) or not np.allclose(
@@ -372,13 +378,8 @@ def _place_screened(tools: ToolAPI) -> None:
     best = tools.parse_place_pose("plum", "footed_bowl")
     connects = tools.motion.connects
     verdicts: list[bool] = []
-
-    def walled_first(start, goal, timeout=None):  # test double: the first configuration has no path
-        verdicts.append(len(verdicts) > 0)
-        return verdicts[-1]
-
     try:
-        tools.motion.connects = walled_first
+        tools.motion.connects = _walled_first(verdicts)
         other = tools.parse_place_pose("plum", "footed_bowl")
         assert verdicts[:2] == [False, True]
         chosen = tools.motion._preferred_for(other.to_transform())

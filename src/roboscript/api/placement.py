@@ -227,8 +227,9 @@ class Placer:
         fallback: tuple[float, Transform, np.ndarray] | None = None
         walled: tuple[Transform, np.ndarray] | None = None
         budget, screens = PLACE_IK_BUDGET, PLACE_PATH_SCREENS
+        done = False
         for spot in spots:
-            if budget <= 0:
+            if budget <= 0 or done:
                 break
             if any(np.linalg.norm(spot.center - t.center) < 0.05 and _same_turn(spot.yaw, t.yaw) for t in tried):
                 continue
@@ -240,28 +241,22 @@ class Placer:
                 for room, pose, g in options:
                     if fallback is None or room > fallback[0] + 1e-3:
                         fallback = (room, pose, g)
-                if options and search == PLACE_IK_WIDE:
-                    screens = 0  # the wide search is the last resort: the first spot it reaches is taken
+                if search == PLACE_IK_WIDE:
+                    done = bool(options)  # the wide search is the last resort: the first spot it reaches is taken
+                else:
+                    leaving = [(pose, g) for room, pose, g in options if room >= PLACE_RETREAT - 1e-3]
+                    leaving.sort(key=lambda c: float(np.sum((c[1] - q) ** 2)))
+                    for pose, goal in leaving[:screens]:
+                        screens -= 1
+                        # As a grasp's pre-grasp is screened: a configuration IK reaches may be walled in (a UR5e
+                        # branch turned back over its shoulder beside the basket), and no path reaches it.
+                        if self.motion.connects(q, goal):
+                            self.motion.prefer_goal(pose, goal)
+                            return pose
+                    walled = walled or (leaving[0] if leaving else None)
+                    done = bool(leaving) and screens <= 0
+                if done or budget <= 0:
                     break
-                leaving = [(pose, g) for room, pose, g in options if room >= PLACE_RETREAT - 1e-3]
-                leaving.sort(key=lambda c: float(np.sum((c[1] - q) ** 2)))
-                for pose, goal in leaving:
-                    if screens <= 0:
-                        break
-                    screens -= 1
-                    # As a grasp's pre-grasp is screened: a configuration IK reaches may be walled in (a UR5e
-                    # branch turned back over its shoulder beside the basket), and no path reaches it.
-                    if self.motion.connects(q, goal):
-                        self.motion.prefer_goal(pose, goal)
-                        return pose
-                    walled = walled or (pose, goal)
-                if leaving and screens <= 0:
-                    walled = walled or leaving[0]
-                    break
-                if budget <= 0:
-                    break
-            if screens <= 0:
-                break
         # The last resorts: a pose that leaves the full retreat, though no path was found to it in one planner
         # run (the motion's own retries may find one), then the one that leaves the longest retreat.
         last = walled or (fallback[1:] if fallback is not None else None)
