@@ -75,3 +75,57 @@ def test_open_a_drawer_by_its_handle(robot):
     assert opened == pytest.approx(0.2, abs=0.02)
     moved = gt.pose("box").position - box_before
     assert moved[0] == pytest.approx(opened, abs=0.02), "the box inside comes out with the drawer"
+
+
+def _peak_speed_fraction(trajectory, robot) -> float:
+    """The largest joint speed of ``trajectory`` as a fraction of that joint's limit."""
+    return float(np.max(np.abs(trajectory.velocities) / np.asarray(robot.max_velocity)))
+
+
+def test_a_held_object_is_carried_at_the_carrying_speed():
+    """Motions with an object in the hand are timed at ``carry_speed_scale`` of the arm's limits, motions without at
+    ``speed_scale`` (a spy on the backend records the trajectories it is given)."""
+    world = parse_world({"name": "carry", "objects": [{"name": "box", "type": "blue_box", "position": [0.0, -0.2]}]})
+    backend = MujocoBackend(world, robot="panda", settle=0.5)
+    motion = MotionPlanner.for_mujoco(backend)
+    assert motion.carry_speed_scale < motion.speed_scale
+    timed = []
+    execute = backend.execute_trajectory
+
+    def spy(trajectory):
+        timed.append(trajectory)
+        return execute(trajectory)
+
+    backend.execute_trajectory = spy
+    center = backend.ground_truth.box("box").center
+    motion.move_to_pose(Transform(center + np.array([0.0, 0.0, 0.2]), DOWN))
+    motion.move_in_direction([0, 0, -1], 0.2)
+    free = _peak_speed_fraction(timed[0], backend.robot)
+    assert backend.close_gripper().blocked
+    motion.attach("box")
+    motion.move_to_pose(Transform(center + np.array([0.15, 0.35, 0.2]), DOWN))
+    carried = _peak_speed_fraction(timed[-1], backend.robot)
+    assert motion.carry_speed_scale * 0.9 < carried <= motion.carry_speed_scale + 1e-6
+    assert carried < free <= motion.speed_scale + 1e-6
+
+
+def test_a_held_banana_does_not_creep_out_of_the_fingers():
+    """Held still for 6 s, a banana pinched across its body stays where the fingers hold it. MuJoCo's soft friction
+    let it creep out at 0.14 mm/s until the no-slip pass was turned on (sim.world.NOSLIP_ITERATIONS)."""
+    from roboscript.api import ToolAPI
+
+    world = parse_world({"name": "creep", "objects": [{"name": "banana", "type": "banana", "position": [0.05, -0.1]}]})
+    backend = MujocoBackend(world, robot="panda", settle=0.5)
+    tools = ToolAPI.for_simulation(backend)
+    tools.open_gripper()
+    tools.grasp(tools.parse_central_lift_grasp_pose("banana"))
+    tools.close_gripper()
+    tools.attach_object("banana")
+
+    def offset() -> np.ndarray:
+        tcp = backend.tcp_pose()
+        return tcp.rotation.T @ (backend.ground_truth.pose("banana").position - tcp.position)
+
+    before = offset()
+    backend.wait(6.0)
+    assert np.linalg.norm(offset() - before) < 3e-4, (before, offset())
