@@ -7,7 +7,13 @@ import numpy as np
 from roboscript.api.spots import Footprint, fits, gap, spot_at, spots_in_receptacle
 from roboscript.geometry import Box3D, Transform
 from roboscript.perception.base import ObjectPoints, Receptacle
-from roboscript.perception.grasp_detection import GraspPreferences, GripperGeometry, collides, detect_grasps
+from roboscript.perception.grasp_detection import (
+    GraspPreferences,
+    GripperGeometry,
+    collides,
+    detect_grasps,
+    falls_free,
+)
 
 
 def box_surface(center, half, spacing=0.004, skip_bottom=True):
@@ -227,3 +233,19 @@ def test_the_open_fingers_must_clear_a_flared_rim_they_pass_on_the_way_in():
         grasps = detect_grasps(ObjectPoints(points, normals), np.vstack([points, table()]), gripper, seed=1)
         full_width = [g for g in grasps if g.width > 0.06]
         assert bool(full_width) is across, rim
+
+
+def test_a_flared_cup_let_go_from_the_side_must_fall_free_of_the_open_fingers():
+    # A cup 6 cm across at its foot and 8.8 cm at its rim, 9 cm tall, held from the side across its body in the
+    # Panda's 8 cm: 5.3 cm up, it is 7.7 cm across, and falling 1.2 cm when let go brings 8.1 cm to the pads.
+    # Held 2 cm up, the fingers' top edge 3 cm up, it falls free; so does a straight 7.4 cm cylinder, which
+    # the way-in rule (2.5 mm) lets through too.
+    gripper = GripperGeometry(0.08)
+    flared, _ = flared_cup_surface((0.0, 0.0), 0.03, 0.044, 0.09)
+    straight, _ = flared_cup_surface((0.0, 0.0), 0.037, 0.037, 0.09)
+    side = np.column_stack([[0.0, 0.0, -1.0], [0.0, 1.0, 0.0], [1.0, 0.0, 0.0]])  # approach +x, closing along y
+    high, low = np.array([0.0, 0.0, 0.82 + 0.053]), np.array([0.0, 0.0, 0.82 + 0.02])
+    assert not falls_free(side, high, flared, gripper, drop=0.012)
+    assert falls_free(side, high, flared, gripper, drop=0.0)
+    assert falls_free(side, low, flared, gripper, drop=0.012)
+    assert falls_free(side, high, straight, gripper, drop=0.012)

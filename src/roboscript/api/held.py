@@ -44,6 +44,11 @@ class Held:
     def names(self) -> list[str]:
         return list(self._names)
 
+    @property
+    def objects(self) -> list[str]:
+        """The held names that are free objects (not a drawer, door or handle)."""
+        return [name for name in self._names if self._objects[name]]
+
     def __contains__(self, name: object) -> bool:
         return name in self._names
 

@@ -15,15 +15,18 @@ from roboscript.api.held import Held, PerceptionFollower, PlanningFollower
 from roboscript.api.placement import Placer
 from roboscript.api.pose import Pose, _real
 from roboscript.api.signature import tool
+from roboscript.api.spots import DROP
 from roboscript.backends.base import Backend
 from roboscript.geometry import Transform, rotation_angle_between
 from roboscript.names import is_part, kind_of
-from roboscript.perception.base import Perception, UnknownObjectError
+from roboscript.perception.base import ObjectPoints, Perception, UnknownObjectError
 from roboscript.perception.grasp_detection import (
+    UNCLEAN_RELEASE_PENALTY,
     WIDTH_MARGIN,
     GraspPreferences,
     GripperGeometry,
     detect_grasps,
+    falls_free,
     score_grasp,
 )
 from roboscript.perception.grasp_heuristics import GraspError, central_lift_grasps, horizontal_grasps
@@ -45,6 +48,7 @@ LYING_SIDE_PENALTY = 1.5
 LIFT_AFTER_GRASP = 0.05
 EMPTY_GRIP = 0.002  # metres: fingers closed this far hold nothing
 RETREAT_AFTER_RELEASE = 0.05
+RELEASE_CLEARANCE = 0.01  # beyond what was let go, where the fingertips end the release retreat if that is further
 RELEASE_RETREAT_LEAST = 0.02  # a program's own retreat after a release may stop short of its distance, not of this
 SAME_ORIENTATION = 0.05  # radians: a move_to_pose turning the hand less is a straight move, a retreat if it backs off
 OWN_RETREAT = 0.5  # cosine (60 deg) above which a program's motion is its own retreat; wider than PREFERENCE_CONE
@@ -215,14 +219,19 @@ class ToolAPI:
             raise GraspError(
                 f"{name!r} is hardly visible to the cameras ({len(cloud.points)} points): no grasp detected"
             )
-        detected = detect_grasps(cloud, self.perception.scene_points(), self.gripper, preferences, seed=self.seed)
+        detected = detect_grasps(
+            cloud, self.perception.scene_points(), self.gripper, preferences, seed=self.seed, release_drop=DROP
+        )
         # The box grasps that fit the object compete too, ranked by the same score: where sampling finds pairs
         # only off the middle (a banana half hidden from the cameras) or none within reach (an object nearly as
         # wide as the opening), the adaptive grasp is then no worse than the central or horizontal one.
         width = self.gripper.max_width - WIDTH_MARGIN
         lying = self.perception.box(name).size[2] < LYING_FLAT
         ranked = [(c.score, c.pose) for c in detected[:12]] + [
-            (score_grasp(pose, width, BOX_GRASP_QUALITY, cloud, preferences) - _side_penalty(pose, lying), pose)
+            (
+                score_grasp(pose, width, BOX_GRASP_QUALITY, cloud, preferences) - self._penalties(pose, cloud, lying),
+                pose,
+            )
             for pose in self._box_grasps(name, preferences)
         ]
         candidates = [pose for _, pose in sorted(ranked, key=lambda c: -c[0])]
@@ -233,6 +242,12 @@ class ToolAPI:
                 "central lift or horizontal grasp fits either"
             )
         return Pose.from_transform(self._first_reachable(name, candidates, "adaptive"))
+
+    def _penalties(self, pose: Transform, cloud: ObjectPoints, lying: bool) -> float:
+        """What a box grasp loses in rank: a side grasp of a flat-lying object, and one the object would not fall
+        free of when let go (as :func:`detect_grasps` ranks its own)."""
+        unclean = not falls_free(pose.rotation, pose.position, cloud.points, self.gripper, DROP)
+        return _side_penalty(pose, lying) + (UNCLEAN_RELEASE_PENALTY if unclean else 0.0)
 
     def _box_grasps(self, name: str, preferences: GraspPreferences) -> list[Transform]:
         """The central lift and horizontal grasps that fit ``name``, in the order the preferred approach suggests
@@ -258,7 +273,8 @@ class ToolAPI:
         """Opens the gripper fully."""
         self.backend.open_gripper()
         if self.held:  # what was let go stays behind
-            self._pending_retreat = (-self.backend.tcp_pose().rotation[:, 2], RETREAT_AFTER_RELEASE, "release")
+            back = -self.backend.tcp_pose().rotation[:, 2]
+            self._pending_retreat = (back, self._release_retreat(back), "release")
 
     @tool
     def close_gripper(self) -> None:
@@ -425,6 +441,18 @@ class ToolAPI:
             print(f"[retreat] backed off {moved:.3f} m of {distance:.3f} m: the rest is out of reach")
         self.contacts.withdraw_cleared(self.held)
         return True
+
+    def _release_retreat(self, back: np.ndarray) -> float:
+        """How far the hand backs out along ``back`` after letting go: :data:`RETREAT_AFTER_RELEASE`, or until the
+        fingertips have passed what was let go by :data:`RELEASE_CLEARANCE`. A cup let go from the side reaches
+        6 cm back from the TCP: fingertips stopped at its near wall caught its flared rim as the hand rose."""
+        tcp = self.backend.tcp_pose().position
+        reach = 0.0
+        for name in self.held.objects:
+            points = self.perception.points(name).points
+            if len(points):
+                reach = max(reach, float(np.max((points - tcp) @ back)))
+        return max(RETREAT_AFTER_RELEASE, reach + self.gripper.tip_length + RELEASE_CLEARANCE)
 
     def _retreat_first(self, motion: np.ndarray | None) -> tuple[np.ndarray, float, str] | None:
         """Makes the retreat owed since the last grasp or release, unless ``motion`` (the program's next straight
