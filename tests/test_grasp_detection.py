@@ -13,6 +13,7 @@ from roboscript.perception.grasp_detection import (
     collides,
     detect_grasps,
     falls_free,
+    object_middle,
 )
 
 
@@ -249,3 +250,15 @@ def test_a_flared_cup_let_go_from_the_side_must_fall_free_of_the_open_fingers():
     assert falls_free(side, high, flared, gripper, drop=0.0)
     assert falls_free(side, low, flared, gripper, drop=0.012)
     assert falls_free(side, high, straight, gripper, drop=0.012)
+
+
+def test_the_middle_of_a_box_seen_from_one_side_is_the_middle_of_its_top():
+    # A 9.5 x 6 x 5 cm box whose +x side alone is seen (the cameras stand on that side): that face's points pull
+    # the median of all points towards it, the top face's do not.
+    center = np.array([0.0, 0.0, 0.82 + 0.025])
+    points, normals = box_surface(center, np.array([0.0475, 0.03, 0.025]))
+    seen = (normals[:, 2] > 0.5) | (normals[:, 0] > 0.5)
+    cloud = ObjectPoints(points[seen], normals[seen])
+    assert abs(float(np.median(cloud.points[:, 0]))) > 0.01  # what the median of every point gives
+    middle, _ = object_middle(cloud)
+    assert np.linalg.norm(middle[:2] - center[:2]) < 0.003, middle
