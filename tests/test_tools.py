@@ -7,6 +7,7 @@ from roboscript.api import Pose, ToolAPI
 from roboscript.api.placement import PlacementError, ReceptacleFullError
 from roboscript.api.signature import ToolCallError
 from roboscript.backends.mujoco_backend import MujocoBackend
+from roboscript.geometry import Transform
 from roboscript.perception.base import UnknownObjectError
 from roboscript.perception.grasp_heuristics import GraspError
 from roboscript.perception.ground_truth import GroundTruthPerception
@@ -394,7 +395,6 @@ def _place_screened(tools: ToolAPI) -> None:
 def test_a_side_grasp_of_a_flat_lying_object_ranks_behind_a_top_down_one():
     """A banana lies 3.8 cm high: a side grasp tilted down onto it squeezes it out of the fingers."""
     from roboscript.api.tools import LYING_SIDE_PENALTY, _side_penalty
-    from roboscript.geometry import Transform
 
     top_down = Transform.from_rotation(np.zeros(3), np.diag([1.0, -1.0, -1.0]))
     tilt = np.radians(38)  # the approach 38 degrees off vertical, closing along y

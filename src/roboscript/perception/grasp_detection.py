@@ -139,11 +139,20 @@ def collides(
     # point cloud sees an edge a little inside where it is, and a cup's flared rim wider than the part held
     # (1 to 1.5 mm inside the 2F-85's open fingers, as seen) caught a finger; a 7.6 cm apple in the Panda's 8 cm
     # narrows above its middle and clears them by 3 mm or more.
-    face = gripper.max_width / 2
-    passed = in_finger_x & (z < -SWEEP_ABOVE) & (z > -gripper.finger_length)
-    passed &= (np.abs(y) > face - SWEEP_CLEARANCE) & (np.abs(y) < outer)
+    passed = _near_open_fingers(local, gripper, outer, -gripper.finger_length, -SWEEP_ABOVE)
     hand = np.all((local > np.asarray(gripper.hand_lower)) & (local < np.asarray(gripper.hand_upper)), axis=1)
     return bool(fingers.any() or passed.any() or hand.any())
+
+
+def _near_open_fingers(
+    local: np.ndarray, gripper: GripperGeometry, outer: float, z_low: float, z_high: float
+) -> np.ndarray:
+    """Which points (in the TCP frame) come within :data:`SWEEP_CLEARANCE` of the open fingers' inner faces, or
+    into the fingers (out to ``outer``), between ``z_low`` and ``z_high`` along the approach."""
+    x, y, z = local[:, 0], local[:, 1], local[:, 2]
+    face = gripper.max_width / 2
+    near = (np.abs(x) < gripper.finger_breadth / 2) & (z > z_low) & (z < z_high)
+    return near & (np.abs(y) > face - SWEEP_CLEARANCE) & (np.abs(y) < outer)
 
 
 def falls_free(
@@ -155,14 +164,10 @@ def falls_free(
     which carried it off as the hand left."""
     if drop <= 0.0:
         return True
-    face = gripper.max_width / 2
-    outer = face + gripper.finger_thickness
+    outer = gripper.max_width / 2 + gripper.finger_thickness
     for fall in (drop / 2, drop):
         local = (points - np.array([0.0, 0.0, fall]) - tcp) @ rotation
-        x, y, z = local[:, 0], local[:, 1], local[:, 2]
-        caught = (np.abs(x) < gripper.finger_breadth / 2) & (z > -gripper.finger_length) & (z < gripper.tip_length)
-        caught &= (np.abs(y) > face - SWEEP_CLEARANCE) & (np.abs(y) < outer)
-        if caught.any():
+        if _near_open_fingers(local, gripper, outer, -gripper.finger_length, gripper.tip_length).any():
             return False
     return True
 
