@@ -347,3 +347,45 @@ def test_a_planner_that_runs_out_of_time_retries_with_twice_the_time_and_the_nex
         motion.plan(start, goals, timeout=0.5)
     assert [limit for _, limit in calls] == [0.5, 1.0, 2.0]
     backend.close()
+
+
+def test_a_path_that_fails_the_dense_validation_is_planned_again_and_screens_the_goal_out():
+    """A planner run whose paths all graze something between the planner's coarse checks (a narrow passage)
+    is retried like one that ran out of time; to ``connects``, a screen of goals, such a goal does not connect.
+    A test double stands in for the OMPL planner."""
+    from roboscript.planning.errors import PathInCollisionError
+    from roboscript.planning.planner import JointPath
+
+    backend, motion = planner_for(objects_world(), "panda")
+    start = backend.joint_positions()
+    calls: list[float] = []
+
+    class GrazesOnce:
+        def plan(self, start, goal, planner, timeout):
+            calls.append(timeout)
+            if len(calls) < 2:
+                raise PathInCollisionError(942, 1049, [("mug", "cabinet.drawer_1")])
+            return JointPath(np.array([start, goal]), planner)
+
+    motion._planner = GrazesOnce()
+    assert motion.plan(start, [start + 0.1], timeout=0.5).attempts == 2
+    calls.clear()
+    assert not motion.connects(start, start + 0.1, timeout=0.5)
+    assert motion.connects(start, start + 0.1, timeout=0.5)
+    backend.close()
+
+
+def test_ik_tries_the_given_seeds_before_random_ones(table_world):
+    """A configuration chosen for a pose nearby seeds the IK: with one attempt allowed, the only solutions found
+    are those the reference and the seed lead to."""
+    backend, motion = table_world
+    home = backend.joint_positions()
+    target = Transform(np.array([0.0, -0.3, TABLE + 0.1]), DOWN)
+    branches = ik_solutions(motion.kinematics, target, home, motion.scene, wanted_solutions=4)
+    far = branches[-1]  # the branch farthest from home: not the one IK from home converges to
+    alone = ik_solutions(motion.kinematics, target, home, motion.scene, attempts=1, max_attempts=1, wanted_solutions=4)
+    assert not any(np.allclose(q, far, atol=1e-2) for q in alone)
+    seeded = ik_solutions(
+        motion.kinematics, target, home, motion.scene, attempts=1, max_attempts=1, wanted_solutions=4, seeds=[far]
+    )
+    assert any(np.allclose(q, far, atol=1e-2) for q in seeded)

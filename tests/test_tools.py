@@ -392,6 +392,46 @@ def _place_screened(tools: ToolAPI) -> None:
         tools.motion.connects = connects
 
 
+def test_where_no_upright_pose_reaches_a_spot_the_hand_leans_toward_the_open_side():
+    """An arm that reaches no spot with the hand upright (a test double for IK refuses every pose with the hand
+    as it holds the plum now, turned about the vertical or not) places it leaning 20 degrees, the top of the
+    hand toward the robot, the plum raised so that nothing of it comes nearer the bowl than upright."""
+    from roboscript.api.placement import PLACE_LEANS
+    from roboscript.planning.errors import IKError
+
+    backend = MujocoBackend("cluttered_2_pick_and_place", robot="panda", settle=0.5)
+    try:
+        tools = ToolAPI.for_simulation(backend)
+        tools.grasp(tools.parse_adaptive_shape_grasp_pose("plum", preferred_approach_direction=[0, 0, -1]))
+        tools.close_gripper()
+        tools.attach_object("plum")
+        held = backend.tcp_pose()
+        corners = held.inverse().apply(tools.perception.box("plum").corners())
+        upright = tools.parse_place_pose("plum", "footed_bowl").to_transform()
+
+        def off_vertical(pose: Transform) -> float:
+            return float(np.degrees(np.arccos(-pose.rotation[2, 2])))
+
+        ik_choices = tools.motion.ik_choices
+
+        def refuses_upright(pose, reference, attempts=16, max_attempts=150):
+            if abs(off_vertical(pose) - off_vertical(held)) < 5:
+                raise IKError(pose.position, 0.05, 0.0, "test double: no upright pose is reachable")
+            return ik_choices(pose, reference, attempts, max_attempts)
+
+        tools.motion.ik_choices = refuses_upright
+        leaning = tools.parse_place_pose("plum", "footed_bowl").to_transform()
+        tilt = np.degrees(np.arccos(np.clip(leaning.rotation[:, 2] @ held.rotation[:, 2], -1, 1)))
+        assert tilt == pytest.approx(PLACE_LEANS[0], abs=1.0)
+        back = -leaning.rotation[:, 2]  # from the TCP up the hand
+        to_base = tools.placer.base_xy - leaning.position[:2]
+        assert back[:2] @ to_base > 0, "the top of the hand leans toward the robot"
+        lowest = [float(pose.apply(corners)[:, 2].min()) for pose in (upright, leaning)]
+        assert lowest[1] >= lowest[0] - 1e-3
+    finally:
+        backend.close()
+
+
 def test_a_side_grasp_of_a_flat_lying_object_ranks_behind_a_top_down_one():
     """A banana lies 3.8 cm high: a side grasp tilted down onto it squeezes it out of the fingers."""
     from roboscript.api.tools import LYING_SIDE_PENALTY, _side_penalty

@@ -150,6 +150,11 @@ class Box3D:
     def as_array(self) -> np.ndarray:
         return np.concatenate([self.lower, self.upper])
 
+    def corners(self) -> np.ndarray:
+        """The eight corners, shape (8, 3)."""
+        bounds = np.stack([self.lower, self.upper])
+        return np.array([[bounds[i, 0], bounds[j, 1], bounds[k, 2]] for i in (0, 1) for j in (0, 1) for k in (0, 1)])
+
     def intersection(self, other: Box3D) -> Box3D:
         return Box3D(np.maximum(self.lower, other.lower), np.minimum(self.upper, other.upper))
 

@@ -7,6 +7,7 @@ planner what the arm can reach.
 
 from __future__ import annotations
 
+import dataclasses
 import math
 from collections.abc import Collection
 
@@ -21,7 +22,7 @@ from roboscript.api.spots import (
     spots_in_receptacle,
 )
 from roboscript.errors import FailureError
-from roboscript.geometry import Box3D, Transform, quat_from_yaw, quat_to_matrix
+from roboscript.geometry import Box3D, Transform, quat_from_axis_angle, quat_from_yaw, quat_to_matrix
 from roboscript.names import TABLE, kind_of
 from roboscript.perception.base import Perception, Receptacle, UnknownObjectError
 from roboscript.planning.cartesian import cartesian_path
@@ -35,6 +36,10 @@ PLACE_IK_WIDE = (24, 200)  # the same where the quick screen reached no spot
 PLACE_IK_BUDGET = 96  # IK screens per parse_place_pose call (each costs a few milliseconds to ~0.1 s)
 PLACE_RAISE_LIMIT = 0.04  # metres a place pose is raised at most when the held object has sunk in the hand
 PLACE_RETREAT = 0.10  # metres a place pose should leave straight above it: the customary pre-place approach and retreat
+# Where no upright pose reaches any spot (a drawer beneath another, at the edge of the arm's reach), the hand leans
+# this far (degrees) toward the spot's open side, the held object with it, and lets go of it there: an object
+# released a few degrees off upright lands on its lower edge and settles back onto its base.
+PLACE_LEANS = (20.0, 35.0)
 # Where things may be put down on the table, from the robot's base: in front of it, clear of it, within reach.
 TABLE_REACH = (np.array([0.15, -0.45]), np.array([0.73, 0.45]))
 
@@ -45,6 +50,34 @@ class PlacementError(FailureError, RuntimeError):
 
 class ReceptacleFullError(PlacementError):
     """The receptacle has no free spot large enough for the object."""
+
+
+@dataclasses.dataclass(frozen=True)
+class _Carried:
+    """The held object as the hand carries it now: the TCP, the middle the object is turned about, and its box's
+    corners about that middle."""
+
+    name: str
+    tcp: Transform
+    pivot: np.ndarray
+    corners: np.ndarray
+
+    def sink(self, rotation: np.ndarray) -> float:
+        """How much lower than now the object's lowest corner reaches once turned by ``rotation`` about the
+        pivot (0 for a turn about the vertical)."""
+        return float(self.corners[:, 2].min() - (self.corners @ rotation.T)[:, 2].min())
+
+
+@dataclasses.dataclass
+class _Search:
+    """What one pass over the spots found: a pose (with its configuration) that leaves the full retreat, the one
+    that leaves the longest (``room`` metres), how many spots were tried, and why poses were out of reach."""
+
+    leaving: tuple[Transform, np.ndarray] | None = None
+    longest: tuple[Transform, np.ndarray] | None = None
+    room: float = 0.0
+    tried: int = 0
+    errors: list[str] = dataclasses.field(default_factory=list)
 
 
 class Placer:
@@ -83,19 +116,41 @@ class Placer:
 
     def reachable(self, name: str, tcp: Transform, spots: list[PlacementSpot], where: str) -> Transform:
         """The gripper pose, from the hand at ``tcp`` holding ``name``, for the first of ``spots`` the arm can
-        reach and leave (see :meth:`_reachable_place`)."""
+        reach and leave; the configuration chosen becomes the motion's goal for that pose
+        (:meth:`MotionPlanner.prefer_goal`).
+
+        In order of preference: an upright pose that leaves the full retreat (:data:`PLACE_RETREAT`) and that
+        one planner run reaches (see :meth:`_search`), or failing a path, one that leaves the retreat; the same
+        with the hand leaning toward the spot's open side (:data:`PLACE_LEANS`); an upright pose that leaves the
+        longest retreat; an upright pose found by a wider IK search; a leaning pose that leaves the longest
+        retreat."""
         # Spots are where the middle of the object's footprint goes (for a curved banana lying turned, not the
         # middle of its world-aligned box): the hand turns about that.
         footprint_center = self.perception.footprint(name)[0]
-        pivot = np.array([footprint_center[0], footprint_center[1], self.perception.box(name).center[2]])
-
-        try:
-            return self._reachable_place(name, tcp, pivot, spots, where, PLACE_IK_QUICK)
-        except PlacementError:
+        box = self.perception.box(name)
+        pivot = np.array([footprint_center[0], footprint_center[1], box.center[2]])
+        carried = _Carried(name, tcp, pivot, box.corners() - pivot)
+        upright = self._search(carried, spots, PLACE_IK_QUICK, (0.0,))
+        best = upright.leaving
+        leaning: _Search | None = None
+        if best is None:
+            # A pose the hand cannot back out of straight up would leave a program's own approach from above
+            # (or its retreat) no room: leaning out from under what stands over the spot is better.
+            leaning = self._search(carried, spots, PLACE_IK_QUICK, PLACE_LEANS)
+            best = leaning.leaving or upright.longest
+        if best is None:
             # The quick screen may miss the one IK branch that clears the furniture (a mug going into a drawer
-            # pulled 20 cm, at the edge of the Panda's reach): the spots are searched again, widely, before
-            # giving up.
-            return self._reachable_place(name, tcp, pivot, spots, where, PLACE_IK_WIDE)
+            # pulled 20 cm, at the edge of the Panda's reach): the spots are searched again, widely.
+            best = self._search(carried, spots, PLACE_IK_WIDE, (0.0,)).longest
+        if best is None and leaning is not None:
+            best = leaning.longest
+        if best is None:
+            raise PlacementError(
+                f"no reachable, collision-free pose puts {name!r} {where} ({upright.tried} spots tried): "
+                f"{upright.errors[0] if upright.errors else 'no spot'}"
+            )
+        self.motion.prefer_goal(*best)
+        return best[0]
 
     def raised_for_release(self, target: Transform, error: IKError, held: Collection[str]) -> Transform | None:
         """Where the TCP reaches ``target`` but only what it holds collides (an object that turned or slid down
@@ -145,7 +200,12 @@ class Placer:
         wall_margin = DRAWER_WALL_MARGIN if kind_of(receptacle.name) == "drawer" else MARGIN
         height = self.perception.box(name).size[2]
         corner = self._fill_corner(receptacle)
-        return spots_in_receptacle(receptacle, half, yaw, height, inside, corner, wall_margin=wall_margin)
+        spots = spots_in_receptacle(receptacle, half, yaw, height, inside, corner, wall_margin=wall_margin)
+        if kind_of(receptacle.name) == "drawer":
+            # Open, a drawer is clear above only on its pulled-out side (its front faces its frame's +x).
+            out = receptacle.frame.rotation[:, 0]
+            spots = [dataclasses.replace(s, open_side=out) for s in spots]
+        return spots
 
     def _holds_things(self, name: str) -> bool:
         """Whether ``name`` is a receptacle, for an error message: False where perception cannot tell."""
@@ -201,31 +261,21 @@ class Placer:
         fronts = receptacle.frame.apply(np.array([[upper[0], lower[1], 0.0], [upper[0], upper[1], 0.0]]))[:, :2]
         return fronts[int(np.argmin(np.linalg.norm(fronts - self.base_xy, axis=1)))]
 
-    def _reachable_place(
-        self,
-        name: str,
-        tcp: Transform,
-        pivot: np.ndarray,
-        spots: list[PlacementSpot],
-        where: str,
-        search: tuple[int, int],
-    ) -> Transform:
-        """The first spot (in order, skipping near-repeats of spots that failed) with a collision-free IK from which
-        the hand can also retreat straight up (:data:`PLACE_RETREAT`), as a place's retreat would: a hand put
-        down with a link against the cabinet has no way out but through what it let go. Each spot is tried with
-        the object turned as the spot allows (round, or any quarter turn at a position), and released higher up
-        so the hand clears a deep container's walls; of the turns and IK branches that work at a height, the one
-        nearest the arm's present configuration is taken (a hand kept facing one way can make the arm swing
-        round behind itself), provided one planner run finds a path to it (:data:`PLACE_PATH_SCREENS` runs at
-        most). Where no spot allows the full retreat, the one with the longest is taken. The configuration chosen
-        becomes the motion's goal for that pose (:meth:`MotionPlanner.prefer_goal`)."""
+    def _search(
+        self, carried: _Carried, spots: list[PlacementSpot], search: tuple[int, int], leans: tuple[float, ...]
+    ) -> _Search:
+        """Spots in order (skipping near-repeats of spots that failed), for a collision-free IK from which the
+        hand can also retreat straight up (:data:`PLACE_RETREAT`), as a place's retreat would: a hand put down
+        with a link against the cabinet has no way out but through what it let go. Each spot is tried with the
+        object turned as the spot allows (round, or any quarter turn at a position), and released higher up so
+        the hand clears a deep container's walls; ``leans``: the angles (degrees) the hand may lean toward the
+        spot's open side, in order, at each height. Of the turns and IK branches that work at a height, the one
+        nearest the arm's present configuration is taken (a hand kept facing one way can make the arm swing round
+        behind itself), provided one planner run finds a path to it (:data:`PLACE_PATH_SCREENS` runs at most).
+        The wide ``search`` (:data:`PLACE_IK_WIDE`) is a last resort and stops at the first spot it reaches."""
         q = self.motion.sync()
+        found = _Search()
         tried: list[PlacementSpot] = []
-        errors: list[str] = []
-        # Where no spot leaves the full retreat, the one that leaves the most: a program's own retreat after the
-        # release then stops short as reach allows (ToolAPI._own_retreat) instead of not starting.
-        fallback: tuple[float, Transform, np.ndarray] | None = None
-        walled: tuple[Transform, np.ndarray] | None = None
         budget, screens = PLACE_IK_BUDGET, PLACE_PATH_SCREENS
         done = False
         for spot in spots:
@@ -234,15 +284,16 @@ class Placer:
             if any(np.linalg.norm(spot.center - t.center) < 0.05 and _same_turn(spot.yaw, t.yaw) for t in tried):
                 continue
             tried.append(spot)
-            for lift in (0.0, 0.02, 0.05, 0.1):
-                reached = self._place_options(spot, lift, tcp, pivot, q, errors, search)
+            found.tried += 1
+            for lift, lean in [(lift, lean) for lift in (0.0, 0.02, 0.05, 0.1) for lean in leans]:
+                reached = self._place_options(carried, spot, lift, lean, q, found.errors, search)
                 budget -= len(spot.turns)
                 options = [(self._retreat_room(pose, g), pose, g) for pose, goals in reached for g in goals]
                 for room, pose, g in options:
-                    if fallback is None or room > fallback[0] + 1e-3:
-                        fallback = (room, pose, g)
+                    if found.longest is None or room > found.room + 1e-3:
+                        found.room, found.longest = room, (pose, g)
                 if search == PLACE_IK_WIDE:
-                    done = bool(options)  # the wide search is the last resort: the first spot it reaches is taken
+                    done = bool(options)
                 else:
                     leaving = [(pose, g) for room, pose, g in options if room >= PLACE_RETREAT - 1e-3]
                     leaving.sort(key=lambda c: float(np.sum((c[1] - q) ** 2)))
@@ -251,46 +302,53 @@ class Placer:
                         # As a grasp's pre-grasp is screened: a configuration IK reaches may be walled in (a UR5e
                         # branch turned back over its shoulder beside the basket), and no path reaches it.
                         if self.motion.connects(q, goal):
-                            self.motion.prefer_goal(pose, goal)
-                            return pose
-                    walled = walled or (leaving[0] if leaving else None)
+                            found.leaving = (pose, goal)
+                            return found
+                    # Leaving the full retreat though no path was found to it in one planner run: the motion's
+                    # own retries may find one.
+                    found.leaving = found.leaving or (leaving[0] if leaving else None)
                     done = bool(leaving) and screens <= 0
                 if done or budget <= 0:
                     break
-        # The last resorts: a pose that leaves the full retreat, though no path was found to it in one planner
-        # run (the motion's own retries may find one), then the one that leaves the longest retreat.
-        last = walled or (fallback[1:] if fallback is not None else None)
-        if last is not None:
-            self.motion.prefer_goal(*last)
-            return last[0]
-        raise PlacementError(
-            f"no reachable, collision-free pose puts {name!r} {where} ({len(tried)} spots tried): "
-            f"{errors[0] if errors else 'no spot'}"
-        )
+        return found
 
     def _place_options(
         self,
+        carried: _Carried,
         spot: PlacementSpot,
         lift: float,
-        tcp: Transform,
-        pivot: np.ndarray,
+        lean: float,
         q: np.ndarray,
         errors: list[str],
         search: tuple[int, int],
     ) -> list[tuple[Transform, list[np.ndarray]]]:
-        """The gripper poses that put the held object at ``spot`` (``lift`` higher), one per turn it allows, with
-        their collision-free IK branches; the poses without any add their reason to ``errors``."""
+        """The gripper poses that put the held object at ``spot`` (``lift`` higher, leaning ``lean`` degrees
+        toward the spot's open side), one per turn it allows, with their collision-free IK branches; the poses
+        without any add their reason to ``errors``."""
         out = []
+        tilt = self._lean_rotation(spot, lean)
         for turn in spot.turns:
-            rotation = quat_to_matrix(quat_from_yaw(spot.yaw + turn))
-            # Turning the held object about world z around its middle turns the gripper with it.
-            position = spot.center + [0.0, 0.0, lift] + rotation @ (tcp.position - pivot)
-            pose = Transform.from_rotation(position, rotation @ tcp.rotation)
+            rotation = tilt @ quat_to_matrix(quat_from_yaw(spot.yaw + turn))
+            # Turning the held object about its middle turns the gripper with it; a leaning object is raised so
+            # that its lowest corner is as high above the support as an upright one's base would be.
+            raised = np.array([0.0, 0.0, lift + carried.sink(rotation)])
+            position = spot.center + raised + rotation @ (carried.tcp.position - carried.pivot)
+            pose = Transform.from_rotation(position, rotation @ carried.tcp.rotation)
             try:
                 out.append((pose, self.motion.ik_choices(pose, q, attempts=search[0], max_attempts=search[1])))
             except IKError as exc:
                 errors.append(str(exc))
         return out
+
+    def _lean_rotation(self, spot: PlacementSpot, lean: float) -> np.ndarray:
+        """The rotation that tips the top of the hand ``lean`` degrees toward the spot's open side (toward the
+        robot where the spot names none)."""
+        if lean == 0.0:
+            return np.eye(3)
+        side = spot.open_side if spot.open_side is not None else np.append(self.base_xy - spot.center[:2], 0.0)
+        side = np.array([side[0], side[1], 0.0]) / max(float(np.linalg.norm(side[:2])), 1e-9)
+        # Rotating about (z x side) carries the vertical toward ``side``: the hand's top leans that way.
+        return quat_to_matrix(quat_from_axis_angle(np.cross([0.0, 0.0, 1.0], side), math.radians(lean)))
 
     def _retreat_room(self, pose: Transform, q: np.ndarray) -> float:
         """How far, up to :data:`PLACE_RETREAT`, the arm at ``q`` (the TCP at ``pose``) can move straight up

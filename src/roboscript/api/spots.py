@@ -58,12 +58,15 @@ class PlacementSpot:
     """Where the middle of the object's footprint goes (its box's middle in height), and the yaw turn (radians)
     about world z from its present pose; ``score`` orders spots (higher first). ``turns``: further turns about z
     the object may be given there (a spot at a position does not care how the object faces; one squared to a
-    receptacle may only be turned round)."""
+    receptacle may only be turned round). ``open_side``: the horizontal direction in which nothing stands over
+    the spot (out of a drawer, beneath the one above it), where the hand may lean if it cannot reach the spot
+    upright; None: toward the robot."""
 
     center: np.ndarray
     yaw: float
     score: float
     turns: tuple[float, ...] = (0.0, math.pi)
+    open_side: np.ndarray | None = None
 
 
 def spots_in_receptacle(

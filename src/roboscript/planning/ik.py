@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+from collections.abc import Sequence
+
 import numpy as np
 
 from roboscript.geometry import Transform
@@ -40,17 +42,26 @@ def ik_solutions(
     max_attempts: int = 150,
     wanted_solutions: int = 3,
     seed: int = 0,
+    seeds: Sequence[np.ndarray] = (),
 ) -> list[np.ndarray]:
-    """Up to ``wanted_solutions`` collision-free solutions, nearest ``reference`` first; see :func:`solve_ik`."""
+    """Up to ``wanted_solutions`` collision-free solutions, nearest ``reference`` first; see :func:`solve_ik`.
+    ``seeds``: configurations tried right after ``reference``, before the random ones (near the edge of the
+    arm's reach, random seeds may all miss a pose that a configuration chosen for a pose nearby reaches)."""
     reference = np.asarray(reference, dtype=float)
     rng = np.random.default_rng(seed)
+    starts = [np.asarray(q, dtype=float) for q in seeds]
     solutions: list[np.ndarray] = []
     colliding: list[tuple[str, str]] = []
     best_position, best_angle = np.inf, np.inf
-    for attempt in range(max(attempts, max_attempts)):
-        if attempt >= attempts and solutions:
+    for attempt in range(max(attempts, max_attempts) + len(starts)):
+        if attempt >= attempts + len(starts) and solutions:
             break
-        start = reference if attempt == 0 else rng.uniform(kinematics.lower, kinematics.upper)
+        if attempt == 0:
+            start = reference
+        elif attempt <= len(starts):
+            start = starts[attempt - 1]
+        else:
+            start = rng.uniform(kinematics.lower, kinematics.upper)
         result = kinematics.solve(target, start)
         if result.position_error + 0.1 * result.angle_error < best_position + 0.1 * best_angle:
             best_position, best_angle = result.position_error, result.angle_error

@@ -17,6 +17,7 @@ from roboscript.planning.cartesian import CartesianResult, arc_poses, cartesian_
 from roboscript.planning.errors import (
     CartesianPathIncompleteError,
     IKError,
+    PathInCollisionError,
     PlannerTimeoutError,
     PlanningError,
     TrackingError,
@@ -180,8 +181,10 @@ class MotionPlanner:
         """A path from ``start`` to the first of ``goals``. A planner that runs out of time tries again with
         twice the time, up to :data:`PLANNING_ATTEMPTS` runs, taking the next goal where there are several (another
         IK branch of the same pose), as MoveIt's planning attempts do: a path that exists is then found on a busy
-        machine too (``JointPath.attempts`` says how many runs it took). While the gripper holds something, the
-        path is a transfer (:mod:`roboscript.planning.transfer`) where one can be found."""
+        machine too (``JointPath.attempts`` says how many runs it took). A run whose every path failed the dense
+        validation (a narrow passage the planner's coarser checks slipped through) is retried the same way. While
+        the gripper holds something, the path is a transfer (:mod:`roboscript.planning.transfer`) where one can be
+        found."""
         name, budget = planner or self.default_planner, timeout or self.planning_timeout
         transfer = bool(self.scene.attached)  # carried clear of everything where that can be done
         for attempt in range(PLANNING_ATTEMPTS):
@@ -190,23 +193,24 @@ class MotionPlanner:
                 try:
                     path = plan_transfer(self.planner, self.kinematics, start, goal, name, limit)
                     return dataclasses.replace(path, attempts=attempt + 1)
-                except PlannerTimeoutError:
+                except (PlannerTimeoutError, PathInCollisionError):
                     pass
                 except PlanningError:  # no room to come clear at one end: an ordinary path, from now on
                     transfer = False
             try:
                 return dataclasses.replace(self.planner.plan(start, goal, name, limit), attempts=attempt + 1)
-            except PlannerTimeoutError as exc:
+            except (PlannerTimeoutError, PathInCollisionError) as exc:
                 last = exc
         raise last
 
     def connects(self, start: np.ndarray, goal: np.ndarray, timeout: float | None = None) -> bool:
         """Whether one planner run finds a collision-free path from ``start`` to ``goal`` within ``timeout``
         (default: the planning timeout): a screen for goals that IK reaches but a path cannot (a configuration
-        walled in by the table), not a verdict, since a busy machine may need the retries of :meth:`plan`."""
+        walled in by the table, or reached only through a passage too narrow for the dense validation), not a
+        verdict, since a busy machine may need the retries of :meth:`plan`."""
         try:
             self.planner.plan(start, goal, self.default_planner, timeout or self.planning_timeout)
-        except PlannerTimeoutError:
+        except (PlannerTimeoutError, PathInCollisionError):
             return False
         return True
 
@@ -354,11 +358,15 @@ class MotionPlanner:
 
     def plan_to_pose(self, pose: Transform, planner: str | None = None, timeout: float | None = None) -> JointPath:
         """A planned path to ``pose``: to the configuration preferred for it, if one is (tried twice), then to
-        other IK branches."""
+        other IK branches. The configurations preferred for other poses seed the IK (the program's own pose above
+        a chosen place pose, at the edge of the reach, is found from the place's configuration)."""
         start = self.sync()
         preferred = self._preferred_for(pose)
+        seeds = [q for _, q in self._preferred]
         try:
-            goals = ik_solutions(self.kinematics, pose, start, self.scene, wanted_solutions=PLANNING_ATTEMPTS)
+            goals = ik_solutions(
+                self.kinematics, pose, start, self.scene, wanted_solutions=PLANNING_ATTEMPTS, seeds=seeds
+            )
         except IKError:
             if preferred is None:
                 raise
