@@ -1,5 +1,8 @@
 """The tool API in ground-truth mode: aliases, results, and a clear error per tool for bad input."""
 
+import contextlib
+from collections.abc import Iterator
+
 import numpy as np
 import pytest
 
@@ -364,13 +367,20 @@ def test_a_place_configuration_no_path_reaches_gives_way_to_the_next():
     """parse_place_pose screens the configuration it chooses with one planner run, as the grasp tools do (a test
     double stands in for the planner's verdict): one no path reaches gives way to the next, and is still taken
     where every one is walled in."""
+    with _holding_the_plum() as (_, tools):
+        _place_screened(tools)
+
+
+@contextlib.contextmanager
+def _holding_the_plum() -> Iterator[tuple[MujocoBackend, ToolAPI]]:
+    """The Panda with the plum of cluttered_2_pick_and_place grasped from above and attached."""
     backend = MujocoBackend("cluttered_2_pick_and_place", robot="panda", settle=0.5)
     try:
         tools = ToolAPI.for_simulation(backend)
         tools.grasp(tools.parse_adaptive_shape_grasp_pose("plum", preferred_approach_direction=[0, 0, -1]))
         tools.close_gripper()
         tools.attach_object("plum")
-        _place_screened(tools)
+        yield backend, tools
     finally:
         backend.close()
 
@@ -399,12 +409,7 @@ def test_where_no_upright_pose_reaches_a_spot_the_hand_leans_toward_the_open_sid
     from roboscript.api.placement import PLACE_LEANS
     from roboscript.planning.errors import IKError
 
-    backend = MujocoBackend("cluttered_2_pick_and_place", robot="panda", settle=0.5)
-    try:
-        tools = ToolAPI.for_simulation(backend)
-        tools.grasp(tools.parse_adaptive_shape_grasp_pose("plum", preferred_approach_direction=[0, 0, -1]))
-        tools.close_gripper()
-        tools.attach_object("plum")
+    with _holding_the_plum() as (backend, tools):
         held = backend.tcp_pose()
         corners = held.inverse().apply(tools.perception.box("plum").corners())
         upright = tools.parse_place_pose("plum", "footed_bowl").to_transform()
@@ -428,8 +433,6 @@ def test_where_no_upright_pose_reaches_a_spot_the_hand_leans_toward_the_open_sid
         assert back[:2] @ to_base > 0, "the top of the hand leans toward the robot"
         lowest = [float(pose.apply(corners)[:, 2].min()) for pose in (upright, leaning)]
         assert lowest[1] >= lowest[0] - 1e-3
-    finally:
-        backend.close()
 
 
 def test_a_side_grasp_of_a_flat_lying_object_ranks_behind_a_top_down_one():

@@ -57,7 +57,6 @@ class _Carried:
     """The held object as the hand carries it now: the TCP, the middle the object is turned about, and its box's
     corners about that middle."""
 
-    name: str
     tcp: Transform
     pivot: np.ndarray
     corners: np.ndarray
@@ -129,7 +128,7 @@ class Placer:
         footprint_center = self.perception.footprint(name)[0]
         box = self.perception.box(name)
         pivot = np.array([footprint_center[0], footprint_center[1], box.center[2]])
-        carried = _Carried(name, tcp, pivot, box.corners() - pivot)
+        carried = _Carried(tcp, pivot, box.corners() - pivot)
         upright = self._search(carried, spots, PLACE_IK_QUICK, (0.0,))
         best = upright.leaving
         leaning: _Search | None = None
@@ -196,12 +195,13 @@ class Placer:
         """Free spots for the held object in a container or a drawer, clear of what is already in it."""
         _, yaw, half = self.perception.footprint(name)
         inside = [self._footprint(o) for o in others if _within(self.perception.box(o), receptacle)]
+        drawer = kind_of(receptacle.name) == "drawer"
         # A drawer's front and walls stand high around a held object that may swing a little.
-        wall_margin = DRAWER_WALL_MARGIN if kind_of(receptacle.name) == "drawer" else MARGIN
+        wall_margin = DRAWER_WALL_MARGIN if drawer else MARGIN
         height = self.perception.box(name).size[2]
         corner = self._fill_corner(receptacle)
         spots = spots_in_receptacle(receptacle, half, yaw, height, inside, corner, wall_margin=wall_margin)
-        if kind_of(receptacle.name) == "drawer":
+        if drawer:
             # Open, a drawer is clear above only on its pulled-out side (its front faces its frame's +x).
             out = receptacle.frame.rotation[:, 0]
             spots = [dataclasses.replace(s, open_side=out) for s in spots]

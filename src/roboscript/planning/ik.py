@@ -49,19 +49,15 @@ def ik_solutions(
     arm's reach, random seeds may all miss a pose that a configuration chosen for a pose nearby reaches)."""
     reference = np.asarray(reference, dtype=float)
     rng = np.random.default_rng(seed)
-    starts = [np.asarray(q, dtype=float) for q in seeds]
+    starts = [reference, *(np.asarray(q, dtype=float) for q in seeds)]
     solutions: list[np.ndarray] = []
     colliding: list[tuple[str, str]] = []
     best_position, best_angle = np.inf, np.inf
-    for attempt in range(max(attempts, max_attempts) + len(starts)):
-        if attempt >= attempts + len(starts) and solutions:
+    extra = len(starts) - 1  # the reference counts among the attempts, the seeds do not
+    for attempt in range(max(attempts, max_attempts) + extra):
+        if attempt >= attempts + extra and solutions:
             break
-        if attempt == 0:
-            start = reference
-        elif attempt <= len(starts):
-            start = starts[attempt - 1]
-        else:
-            start = rng.uniform(kinematics.lower, kinematics.upper)
+        start = starts[attempt] if attempt < len(starts) else rng.uniform(kinematics.lower, kinematics.upper)
         result = kinematics.solve(target, start)
         if result.position_error + 0.1 * result.angle_error < best_position + 0.1 * best_angle:
             best_position, best_angle = result.position_error, result.angle_error
