@@ -18,18 +18,18 @@ import time
 
 import numpy as np
 
-from roboscript.api.tools import ToolAPI
+from roboscript.assembly import build_tools
 from roboscript.backends.mujoco_backend import MujocoBackend
 from roboscript.perception.modes import parse_mode
-from roboscript.planning.scene import PlanningScene
+from roboscript.planning.ground_truth_scene import ground_truth_scene
 from roboscript.sim.world_catalog import world_names
 
 
 def measure(world: str, robot: str, mode: str, samples: int, repeats: int) -> dict:
     backend = MujocoBackend(world, robot=robot)
     try:
-        exact = PlanningScene.from_sim_world(backend.sim_world)
-        motion = ToolAPI.for_simulation(backend, perception=mode).motion
+        exact = ground_truth_scene(backend.sim_world)
+        motion = build_tools(backend, perception=mode).motion
         scene = motion.scene
         scene.update(motion.scene_source.state())
         rng = np.random.default_rng(0)

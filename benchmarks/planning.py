@@ -29,8 +29,9 @@ import numpy as np
 
 from roboscript.backends.mujoco_backend import MujocoBackend
 from roboscript.geometry import Transform, matrix_to_quat
-from roboscript.planning import MotionPlanner, PlanningError, PlanningScene, planner_names
+from roboscript.planning import PlanningError, planner_names
 from roboscript.planning.errors import PathInCollisionError
+from roboscript.planning.ground_truth_scene import ground_truth_motion, ground_truth_scene
 from roboscript.planning.planner import JointPlanner
 
 WORLDS = ("world_1_table_sort", "world_5_mug_to_cabinet")
@@ -62,7 +63,7 @@ def make_queries(robot: str, count: int, seed: int) -> list[Query]:
     per_world = int(np.ceil(count / len(WORLDS)))
     for world in WORLDS:
         backend = MujocoBackend(world, robot=robot, settle=0.5)
-        motion = MotionPlanner.for_mujoco(backend)
+        motion = ground_truth_motion(backend)
         handles = [n for n in backend.ground_truth.names() if ".handle_" in n]
         start = backend.joint_positions()
         made = 0
@@ -96,8 +97,8 @@ def run(robot: str, planners: list[str], count: int, others: int, timeout: float
             if not world_queries:
                 continue
             backend = MujocoBackend(world, robot=robot, settle=0.5)
-            motion = MotionPlanner.for_mujoco(backend)
-            exact = JointPlanner(PlanningScene.from_sim_world(backend.sim_world, padding=0.0), validation_step=0.001)
+            motion = ground_truth_motion(backend)
+            exact = JointPlanner(ground_truth_scene(backend.sim_world, padding=0.0), validation_step=0.001)
             for index, query in enumerate(world_queries):
                 record = {"robot": robot, "planner": planner, "world": world, "query": index, "kind": query.kind}
                 try:

@@ -19,8 +19,8 @@ import time
 import numpy as np
 
 from roboscript.backends.mujoco_backend import MujocoBackend
-from roboscript.sim.trajectory import JointTrajectory
 from roboscript.sim.world_catalog import world_names
+from roboscript.trajectory import JointTrajectory
 
 
 def sinusoid_about_home(home: np.ndarray, seconds: float, amplitude: float = 0.25) -> JointTrajectory:

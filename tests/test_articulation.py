@@ -7,9 +7,9 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
+from roboscript.assembly import build_perception
 from roboscript.backends.mujoco_backend import MujocoBackend
 from roboscript.perception.articulation import door_joint, drawer_joint, front_plane
-from roboscript.perception.modes import make_perception
 from roboscript.perception.points import entity_points
 
 
@@ -17,7 +17,7 @@ from roboscript.perception.points import entity_points
 def cabinet():
     backend = MujocoBackend("cluttered_5_mug_to_cabinet", robot="panda")
     frames = [backend.capture(c) for c in backend.camera_names()]
-    truth = make_perception("gt", backend)
+    truth = build_perception(backend, "gt")
     yield backend, frames, truth
     backend.close()
 
@@ -57,7 +57,7 @@ def test_the_camera_pipeline_estimates_every_cabinet_joint(cabinet):
     """With ground-truth 2D boxes (no segmentation masks), fronts and handles are cut from the fused views as any
     object is, and the joints estimated from them."""
     backend, _, truth = cabinet
-    seen = make_perception("gt-2d", backend)
+    seen = build_perception(backend, "gt-2d")
     expected, found = truth.joints("cabinet"), seen.joints("cabinet")
     assert [j.part for j in found] == [j.part for j in expected] and len(found) == 4
     for e, f in zip(expected, found, strict=True):
@@ -70,7 +70,7 @@ def test_the_camera_pipeline_estimates_every_cabinet_joint(cabinet):
 
 def test_a_part_no_view_saw_cannot_have_its_joint_estimated(cabinet):
     backend, _, _ = cabinet
-    seen = make_perception("gt-2d", backend)
+    seen = build_perception(backend, "gt-2d")
     seen.detect(["mug"])
     del seen.parts_seen["cabinet.drawer_2"]
     with pytest.raises(KeyError, match=r"'cabinet.drawer_2' was not found: its front was not seen well enough"):
@@ -81,14 +81,14 @@ def test_an_open_drawers_axis_is_still_its_fronts_normal():
     """Open, a drawer shows the cameras above it more bottom than front: the front is the upright plane."""
     backend = MujocoBackend("cluttered_5_mug_to_cabinet", robot="panda")
     try:
-        truth = make_perception("gt", backend)
+        truth = build_perception(backend, "gt")
         (closed,) = truth.joints("cabinet.drawer_1")
         world = backend.sim_world
         body = world.entity("cabinet.drawer_1").bodies[0]
         world.data.qpos[world.model.jnt_qposadr[world.model.body_jntadr[body]]] = 0.2  # pulled out 20 cm
         backend.wait(0.2)
         assert truth.joints("cabinet.drawer_1")[0].value > 0.15
-        seen = make_perception("gt-2d", backend)
+        seen = build_perception(backend, "gt-2d")
         (found,) = seen.joints("cabinet.drawer_1")
         assert np.degrees(np.arccos(np.clip(found.axis @ closed.axis, -1, 1))) < 2.0
     finally:
@@ -99,7 +99,7 @@ def test_furniture_parts_are_measured_from_their_points(cabinet):
     """With ground-truth 2D boxes, the handles' boxes (the points standing out of their fronts) against the
     simulator's, the fronts' normals, and a part no camera saw, which is "not found" rather than answered."""
     backend, _, truth = cabinet
-    seen = make_perception("gt-2d", backend)
+    seen = build_perception(backend, "gt-2d")
     seen.detect(["mug"])
     for handle in ("cabinet.handle_0", "cabinet.handle_1", "cabinet.handle_2", "cabinet.handle_3"):
         assert np.linalg.norm(seen.box(handle).center - truth.box(handle).center) < 0.006, handle
@@ -121,7 +121,7 @@ def test_a_front_and_a_handle_from_different_looks_give_no_joint(cabinet):
     from a front and a handle one look saw together; it does not look again by itself (it is asked for every part
     near the gripper)."""
     backend, _, _ = cabinet
-    seen = make_perception("gt-2d", backend)
+    seen = build_perception(backend, "gt-2d")
     seen.detect(["mug"])
     seen.detect(["mug"])
     seen._part_look["cabinet.handle_1"] = seen.looks - 1

@@ -7,8 +7,8 @@ import pytest
 from helpers import tcp_ik
 from roboscript.backends import BackendError
 from roboscript.backends.mujoco_backend import MujocoBackend
-from roboscript.sim.trajectory import JointTrajectory, min_jerk_through
 from roboscript.sim.world_file import parse_world
+from roboscript.trajectory import JointTrajectory, min_jerk_through
 
 ROBOTS = ("panda", "ur5e")
 TABLE = 0.82

@@ -11,10 +11,10 @@ import sys
 
 import pytest
 
-from roboscript.api.tools import ToolAPI
+from roboscript.assembly import build_perception, build_tools
 from roboscript.backends.mujoco_backend import MujocoBackend
 from roboscript.perception.detectors import DetectorError, OpenVocabularyDetector, _iou, closest_phrase
-from roboscript.perception.modes import DETECTOR_ENV, make_perception
+from roboscript.perception.modes import DETECTOR_ENV, DetectorSpec, perception_mode
 from roboscript.perception.observation import observe
 
 PHRASES = ["apple", "footed bowl", "lemon"]
@@ -157,12 +157,18 @@ def test_bad_detector_input_says_what_is_wrong(tmp_path, models):
     assert closest_phrase("table", PHRASES) is None
 
 
-def test_full_perception_takes_the_detector_the_environment_names(models, monkeypatch):
+def test_full_perception_takes_the_detector_the_command_line_resolves(models, monkeypatch):
+    mode = perception_mode("full", f"owlv2:{models['owlv2']}")
+    assert mode.detector == DetectorSpec("owlv2", models["owlv2"])
+    # Below the command line nothing reads the environment: a mode made without a detector has none.
     monkeypatch.setenv(DETECTOR_ENV, f"owlv2:{models['owlv2']}")
     backend = MujocoBackend("world_2_pick_and_place", robot="panda", settle=0)
     try:
-        assert isinstance(make_perception("gt-scene", backend).grounder, OpenVocabularyDetector)
-        api = ToolAPI.for_simulation(backend, perception="full")
+        with pytest.raises(DetectorError, match="perception full needs a detector"):
+            build_perception(backend, "full")
+        gt_scene = perception_mode("gt-scene", f"owlv2:{models['owlv2']}")
+        assert isinstance(build_perception(backend, gt_scene).grounder, OpenVocabularyDetector)
+        api = build_tools(backend, perception=mode)
         assert isinstance(api.perception.grounder, OpenVocabularyDetector)
         api.detect_objects(["apple"])  # a random model finds what it finds; the look must go through
         assert api.perception.looks == 1
@@ -174,4 +180,6 @@ def test_full_perception_takes_the_detector_the_environment_names(models, monkey
     env = {k: v for k, v in os.environ.items() if k != DETECTOR_ENV}
     command = [sys.executable, "-m", "roboscript.cli", "exec", "x.py", "--task", "simple_0", "--perception", "full"]
     run = subprocess.run(command, capture_output=True, text=True, timeout=120, env=env)
-    assert run.returncode == 2 and "perception full needs a detector: set ROBOSCRIPT_DETECTOR=KIND:DIR" in run.stderr
+    assert run.returncode == 2 and "perception full needs a detector: pass --detector KIND:DIR or set " in run.stderr
+    run = subprocess.run([*command, "--detector", "owlv2:/nowhere"], capture_output=True, text=True, timeout=120)
+    assert run.returncode == 2 and "no owlv2 model in '/nowhere'" in run.stderr

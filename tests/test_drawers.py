@@ -6,10 +6,10 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
+from roboscript.assembly import build_perception
 from roboscript.backends.mujoco_backend import MujocoBackend
 from roboscript.perception.base import DRAWER_FRONT_CLEARANCE, ArticulationJoint
 from roboscript.perception.drawers import carcass_front, closed_drawer, drawer_receptacle, opening_frame
-from roboscript.perception.modes import make_perception
 
 RNG = np.random.default_rng(3)
 
@@ -108,14 +108,14 @@ def test_the_seen_inside_of_the_simulated_drawer_matches_its_tray():
     again, and the inside from points matches the simulator's tray (less the part in the carcass)."""
     backend = MujocoBackend("cluttered_5_mug_to_cabinet", robot="panda")
     try:
-        seen = make_perception("gt-2d", backend)
+        seen = build_perception(backend, "gt-2d")
         closed = seen.receptacle("cabinet.drawer_1")
         assert closed.upper[0] - closed.lower[0] < 0.04
         world = backend.sim_world
         body = world.entity("cabinet.drawer_1").bodies[0]
         world.data.qpos[world.model.jnt_qposadr[world.model.body_jntadr[body]]] = 0.22
         backend.wait(0.2)
-        truth = make_perception("gt", backend)
+        truth = build_perception(backend, "gt")
         looks = seen.looks
         seen.released("cabinet.drawer_1", backend.tcp_pose())
         expected, found = truth.receptacle("cabinet.drawer_1"), seen.receptacle("cabinet.drawer_1")

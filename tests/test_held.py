@@ -4,6 +4,7 @@ import numpy as np
 import pytest
 
 from roboscript.api.held import Held
+from roboscript.assembly import build_tools
 from roboscript.backends.mujoco_backend import MujocoBackend
 from roboscript.geometry import Transform
 
@@ -44,10 +45,9 @@ def test_followers_hear_taking_in_order_and_letting_go_in_reverse():
 
 
 def test_the_tools_planning_scene_follows_what_is_held():
-    from roboscript.api import ToolAPI
 
     with MujocoBackend("cluttered_2_pick_and_place", robot="panda", settle=0.5) as backend:
-        tools = ToolAPI.for_simulation(backend)
+        tools = build_tools(backend)
         tools.attach_object("plum")
         assert tools.held.names == ["plum"] and tools.motion.scene.attached == ["plum"]
         tools.detach_object("plum")

@@ -6,7 +6,7 @@ import numpy as np
 
 from roboscript.geometry import Transform, quat_from_yaw
 from roboscript.perception.memory import remembered
-from roboscript.sim.cameras import CameraFrame
+from roboscript.robot_io import CameraFrame
 
 
 def _frame() -> CameraFrame:

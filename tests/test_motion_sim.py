@@ -4,9 +4,10 @@ import numpy as np
 import pytest
 
 from helpers import DOWN_QUAT as DOWN
+from roboscript.assembly import build_tools
 from roboscript.backends.mujoco_backend import MujocoBackend
 from roboscript.geometry import Transform, matrix_to_quat
-from roboscript.planning import MotionPlanner
+from roboscript.planning.ground_truth_scene import ground_truth_motion
 from roboscript.sim.world_file import parse_world
 
 ROBOTS = ("panda", "ur5e")
@@ -24,7 +25,7 @@ def test_pick_a_box_and_place_it_into_a_bowl(robot):
         }
     )
     backend = MujocoBackend(world, robot=robot, settle=0.5)
-    motion = MotionPlanner.for_mujoco(backend)
+    motion = ground_truth_motion(backend)
     gt = backend.ground_truth
     center = gt.box("box").center
     motion.move_to_pose(Transform(center + np.array([0.0, 0.0, 0.125]), DOWN))
@@ -55,7 +56,7 @@ def test_open_a_drawer_by_its_handle(robot):
         }
     )
     backend = MujocoBackend(world, robot=robot, settle=0.5)
-    motion = MotionPlanner.for_mujoco(backend)
+    motion = ground_truth_motion(backend)
     gt = backend.ground_truth
     handle = gt.box("cabinet.handle_1").center
     box_before = gt.pose("box").position
@@ -87,7 +88,7 @@ def test_a_held_object_is_carried_at_the_carrying_speed():
     ``speed_scale`` (a spy on the backend records the trajectories it is given)."""
     world = parse_world({"name": "carry", "objects": [{"name": "box", "type": "blue_box", "position": [0.0, -0.2]}]})
     backend = MujocoBackend(world, robot="panda", settle=0.5)
-    motion = MotionPlanner.for_mujoco(backend)
+    motion = ground_truth_motion(backend)
     assert motion.carry_speed_scale < motion.speed_scale
     timed = []
     execute = backend.execute_trajectory
@@ -112,11 +113,10 @@ def test_a_held_object_is_carried_at_the_carrying_speed():
 def test_a_held_banana_does_not_creep_out_of_the_fingers():
     """Held still for 6 s, a banana pinched across its body stays where the fingers hold it. MuJoCo's soft friction
     let it creep out at 0.14 mm/s until the no-slip pass was turned on (sim.world.NOSLIP_ITERATIONS)."""
-    from roboscript.api import ToolAPI
 
     world = parse_world({"name": "creep", "objects": [{"name": "banana", "type": "banana", "position": [0.05, -0.1]}]})
     backend = MujocoBackend(world, robot="panda", settle=0.5)
-    tools = ToolAPI.for_simulation(backend)
+    tools = build_tools(backend)
     tools.open_gripper()
     tools.grasp(tools.parse_central_lift_grasp_pose("banana"))
     tools.close_gripper()

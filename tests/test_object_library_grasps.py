@@ -8,10 +8,10 @@ so that no face is square to the fingers.
 import numpy as np
 import pytest
 
-from roboscript.api import ToolAPI
+from roboscript.assembly import build_tools
 from roboscript.backends.mujoco_backend import MujocoBackend
+from roboscript.objects import object_types
 from roboscript.perception.grasp_heuristics import GraspError
-from roboscript.sim.objects import object_types
 from roboscript.sim.world_file import parse_world
 
 # Receptacles are what things are put in or on; no tool grasps them (a rim pinch is not among the grasps), and no
@@ -63,7 +63,7 @@ def test_the_adaptive_grasp_lifts_and_holds_every_pickable_shape(type_name, robo
     world = parse_world({"name": "grasp_" + type_name, "objects": [placed]})
     backend = MujocoBackend(world, robot=robot, settle=0.5)
     try:
-        tools = ToolAPI.for_simulation(backend)
+        tools = build_tools(backend)
         if type_name in UNGRASPABLE[robot]:
             with pytest.raises(GraspError, match="wider than the gripper"):
                 tools.parse_adaptive_shape_grasp_pose("obj")

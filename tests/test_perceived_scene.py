@@ -6,12 +6,13 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
-from roboscript.api.tools import ToolAPI
+from roboscript.assembly import build_tools
 from roboscript.backends.mujoco_backend import MujocoBackend
 from roboscript.geometry import Box3D
 from roboscript.perception.modes import parse_mode
+from roboscript.planning.ground_truth_scene import ground_truth_scene
 from roboscript.planning.perceived_scene import UNKNOWN, sort_points
-from roboscript.planning.scene import PlanningScene
+from roboscript.robots import ROBOT_PREFIX
 from roboscript.sim.world import robot_joint_readings
 
 
@@ -23,16 +24,17 @@ def world():
 
 
 def test_the_perceived_scene_agrees_with_the_simulators_geometry(world):
-    truth = PlanningScene.from_sim_world(world.sim_world)
-    api = ToolAPI.for_simulation(world, perception="gt-2d")
+    truth = ground_truth_scene(world.sim_world)
+    api = build_tools(world, perception="gt-2d")
     scene = api.motion.scene
     assert {"apple", "footed_bowl", UNKNOWN} <= set(scene.body_labels)
     assert "table" not in scene.body_labels  # nothing named from the simulator's geometry: the table is seen
     state = api.motion.scene_source.state()
-    readings = robot_joint_readings(world.sim_world)()
+    readings = world.joint_states()  # by the names in the robot's own model, as a robot's driver reports them
     assert any("finger" in name for name in readings)  # the gripper's joints too: open fingers are wider
+    assert set(readings) == {n.removeprefix(ROBOT_PREFIX) for n in robot_joint_readings(world.sim_world)()}
     for name, value in readings.items():
-        assert state[scene.model.joint(name).qposadr[0]] == value
+        assert state[scene.model.joint(ROBOT_PREFIX + name).qposadr[0]] == value
     scene.update(state)
     rng = np.random.default_rng(1)
     samples = [rng.uniform(truth.joint_lower, truth.joint_upper) for _ in range(300)]
@@ -44,7 +46,7 @@ def test_the_perceived_scene_agrees_with_the_simulators_geometry(world):
 
 
 def test_a_rebuilt_scene_keeps_what_was_allowed_and_what_is_held(world):
-    api = ToolAPI.for_simulation(world, perception="gt-2d")
+    api = build_tools(world, perception="gt-2d")
     motion = api.motion
     first = motion.scene
     first.allow("gripper", "footed_bowl")

@@ -10,14 +10,13 @@ import mujoco
 import numpy as np
 import pytest
 
-from roboscript.api import ToolAPI
+from roboscript.assembly import build_perception, build_tools
 from roboscript.backends.mujoco_backend import MujocoBackend
 from roboscript.bench.compare import compare_runs
 from roboscript.bench.runner import run_isolated
 from roboscript.bench.tasks import get_task
 from roboscript.bench.trial import TrialSpec
 from roboscript.perception.evaluation import box_iou
-from roboscript.perception.modes import make_perception
 from roboscript.perception.pipeline import ObjectNotFoundError, footprint_of
 from roboscript.sim.world_file import parse_world
 
@@ -25,7 +24,7 @@ from roboscript.sim.world_file import parse_world
 @pytest.fixture(scope="module")
 def table_world():
     backend = MujocoBackend("cluttered_1_table_sort", robot="panda")
-    yield backend, make_perception("gt", backend), make_perception("gt-2d", backend)
+    yield backend, build_perception(backend, "gt"), build_perception(backend, "gt-2d")
     backend.close()
 
 
@@ -81,7 +80,7 @@ def test_the_rectangle_around_points_finds_their_turn():
 def test_what_the_robot_let_go_is_looked_at_again_and_keeps_its_name():
     backend = MujocoBackend("world_2_pick_and_place", robot="panda")
     try:
-        tools = ToolAPI.for_simulation(backend, perception="gt-2d")
+        tools = build_tools(backend, perception="gt-2d")
         perception = tools.perception
         namespace = tools.namespace()
         namespace["detect_objects"](["apple"])
@@ -130,7 +129,7 @@ def test_runs_are_compared_side_by_side(tmp_path):
 def test_putting_aside_keeps_clear_of_what_the_cameras_see_but_perception_was_not_asked_about():
     backend = MujocoBackend("cluttered_1_table_sort", robot="panda", seed=8, randomize=True)
     try:
-        tools = ToolAPI.for_simulation(backend, seed=8, perception="gt-2d")
+        tools = build_tools(backend, seed=8, perception="gt-2d")
         ns = tools.namespace()
         ns["detect_objects"](["apple", "banana"])  # the plate next to the apple is not asked about
         assert "white_plate" not in tools.perception.objects()

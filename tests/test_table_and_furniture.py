@@ -4,7 +4,8 @@ original benchmark's queries list ``table`` and ``cabinet`` among the objects)."
 import numpy as np
 import pytest
 
-from roboscript.api import Pose, ToolAPI
+from roboscript.api import Pose
+from roboscript.assembly import build_tools
 from roboscript.backends.mujoco_backend import MujocoBackend
 
 MODES = ["gt", "gt-2d"]
@@ -15,7 +16,7 @@ TABLE_TOP = 0.82
 def tools(request):
     """world_5: a white and yellow mug beside a cabinet of three drawers above a door."""
     backend = MujocoBackend("world_5_mug_to_cabinet", robot="panda", settle=0.5)
-    yield ToolAPI.for_simulation(backend, perception=request.param)
+    yield build_tools(backend, perception=request.param)
     backend.close()
 
 

@@ -9,13 +9,14 @@ import pytest
 from roboscript.api import Pose, ToolAPI
 from roboscript.api.placement import PlacementError, ReceptacleFullError
 from roboscript.api.signature import ToolCallError
+from roboscript.assembly import build_tools
 from roboscript.backends.mujoco_backend import MujocoBackend
 from roboscript.geometry import Transform
 from roboscript.perception.base import UnknownObjectError
 from roboscript.perception.grasp_heuristics import GraspError
 from roboscript.perception.ground_truth import GroundTruthPerception
-from roboscript.planning import MotionPlanner
 from roboscript.planning.errors import PlanningError
+from roboscript.planning.ground_truth_scene import ground_truth_motion
 from roboscript.sim.world_file import parse_world
 
 
@@ -23,7 +24,7 @@ from roboscript.sim.world_file import parse_world
 def tools():
     """cluttered_2: apple, footed bowl, blue bowl, plum, baseball, lemon (tests here do not move the arm)."""
     backend = MujocoBackend("cluttered_2_pick_and_place", robot="panda", settle=0.5)
-    yield ToolAPI.for_simulation(backend)
+    yield build_tools(backend)
     backend.close()
 
 
@@ -42,7 +43,7 @@ def cabinet_tools():
         }
     )
     backend = MujocoBackend(world, robot="panda", settle=0.5)
-    yield ToolAPI.for_simulation(backend)
+    yield build_tools(backend)
     backend.close()
 
 
@@ -215,9 +216,9 @@ def test_a_motion_may_leave_a_contact_it_starts_in_but_not_make_new_ones():
     low = Pose()
     low.position.x, low.position.z = 0.3, 0.845
     low.orientation.x, low.orientation.w = 1.0, 0.0
-    ToolAPI.for_simulation(backend).move_to_pose(low)
+    build_tools(backend).move_to_pose(low)
     # A planner with a 3 cm padding sees the arm's own links 5 and 7 in collision in this configuration.
-    padded = ToolAPI(backend, GroundTruthPerception(backend), MotionPlanner.for_mujoco(backend, padding=0.03))
+    padded = ToolAPI(backend, GroundTruthPerception(backend), ground_truth_motion(backend, padding=0.03))
     start = padded.motion.sync()
     assert padded.motion.scene.collisions(start) == [("robot/link5", "robot/link7")]
     padded.move_in_direction([0, 0, 1], 0.1)
@@ -232,7 +233,7 @@ def test_a_grasped_object_is_lifted_off_its_support_and_a_released_one_left_behi
     and after a release the next motion starts by backing off along the approach axis unless it is itself one."""
     world = parse_world({"name": "retreats", "objects": [{"name": "apple", "type": "apple", "position": [0.0, -0.1]}]})
     with MujocoBackend(world, robot="panda", settle=0.5) as backend:
-        tools = ToolAPI.for_simulation(backend)
+        tools = build_tools(backend)
         gt = backend.ground_truth
         resting = gt.box("apple").center.copy()
         tools.open_gripper()
@@ -266,7 +267,7 @@ def test_a_released_handle_is_backed_out_of_before_a_planned_motion():
 
     task = get_task("moderate_0", "paper")
     with MujocoBackend(task.world, robot="panda", seed=1, randomize=True) as backend:
-        tools = ToolAPI.for_simulation(backend, seed=1)
+        tools = build_tools(backend, seed=1)
         tools.open_gripper()
         tools.grasp(tools.parse_horizontal_grasp_pose("cabinet.handle_1"))
         tools.close_gripper()
@@ -303,7 +304,7 @@ def test_a_handle_met_head_on_at_the_edge_of_reach_is_grasped_and_pulled():
 
     task = get_task("moderate_0", "paper")
     with MujocoBackend(task.world, robot="ur5e", seed=0, randomize=True) as backend:
-        tools = ToolAPI.for_simulation(backend, seed=0)
+        tools = build_tools(backend, seed=0)
         handle = tools.get_object_center_position("cabinet.handle_1")
         normal = np.asarray(tools.get_plane_normal("cabinet.drawer_1", handle))
         found = []
@@ -376,7 +377,7 @@ def _holding_the_plum() -> Iterator[tuple[MujocoBackend, ToolAPI]]:
     """The Panda with the plum of cluttered_2_pick_and_place grasped from above and attached."""
     backend = MujocoBackend("cluttered_2_pick_and_place", robot="panda", settle=0.5)
     try:
-        tools = ToolAPI.for_simulation(backend)
+        tools = build_tools(backend)
         tools.grasp(tools.parse_adaptive_shape_grasp_pose("plum", preferred_approach_direction=[0, 0, -1]))
         tools.close_gripper()
         tools.attach_object("plum")

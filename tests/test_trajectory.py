@@ -1,7 +1,7 @@
 import numpy as np
 import pytest
 
-from roboscript.sim.trajectory import JointTrajectory, min_jerk_through
+from roboscript.trajectory import JointTrajectory, min_jerk_through
 
 
 def test_min_jerk_respects_limits_and_passes_through_waypoints():

@@ -4,18 +4,10 @@ from __future__ import annotations
 
 import argparse
 import json
+import os
 import sys
 import time
 from pathlib import Path
-
-import numpy as np
-
-
-def _palette(n: int) -> np.ndarray:
-    """Distinct colours for segmentation images; index -1 (background) maps to black."""
-    rng = np.random.default_rng(7)
-    colors = rng.integers(60, 256, size=(max(n, 1), 3), dtype=np.uint8)
-    return np.vstack([colors, np.zeros((1, 3), dtype=np.uint8)])
 
 
 def cmd_worlds(args: argparse.Namespace) -> int:
@@ -33,7 +25,7 @@ def cmd_worlds(args: argparse.Namespace) -> int:
 
 
 def cmd_objects(args: argparse.Namespace) -> int:
-    from roboscript.sim.objects import object_types
+    from roboscript.objects import object_types
 
     print(f"{'type':26s} {'category':12s} {'colour':12s} size (cm)")
     for name, obj in sorted(object_types().items()):
@@ -57,49 +49,18 @@ def cmd_assets(args: argparse.Namespace) -> int:
 
 
 def cmd_render(args: argparse.Namespace) -> int:
-    import mujoco
-    from PIL import Image
-
     from roboscript.backends.mujoco_backend import MujocoBackend
+    from roboscript.backends.mujoco_snapshot import write_snapshot
 
-    out = Path(args.out)
-    out.mkdir(parents=True, exist_ok=True)
     started = time.perf_counter()
-    backend = MujocoBackend(args.world, robot=args.robot, seed=args.seed, randomize=args.randomize, settle=args.settle)
-    world = backend.sim_world
-    palette = _palette(len(world.entities))
-    meta = {
-        "world": world.spec.name,
-        "robot": backend.robot.name,
-        "cameras": {},
-        "segmentation_ids": {e.index: e.name for e in world.entities},
-    }
-    for camera in backend.camera_names():
-        frame = backend.capture(camera)
-        Image.fromarray(frame.rgb).save(out / f"{camera}_rgb.png")
-        depth_mm = np.clip(frame.depth * 1000.0, 0, 65535).astype(np.uint16)
-        Image.fromarray(depth_mm).save(out / f"{camera}_depth.png")
-        Image.fromarray(palette[frame.segmentation]).save(out / f"{camera}_seg.png")
-        np.save(out / f"{camera}_seg.npy", frame.segmentation)
-        meta["cameras"][camera] = {
-            "width": int(frame.rgb.shape[1]),
-            "height": int(frame.rgb.shape[0]),
-            "intrinsics": frame.intrinsics.tolist(),
-            "camera_to_world": frame.extrinsics.matrix().tolist(),
-            "convention": "OpenCV (x right, y down, z forward); depth PNG in millimetres",
-        }
-    renderer = backend.renderer(1280, 960)
-    top = mujoco.MjvCamera()
-    top.lookat[:] = [0.0, 0.0, world.spec.table.height]
-    top.distance, top.azimuth, top.elevation = 2.6, 180.0, -89.9
-    Image.fromarray(renderer.rgb(world.data, top)).save(out / "top_view.png")
-    Image.fromarray(renderer.rgb(world.data, "overview")).save(out / "overview.png")
-    (out / "cameras.json").write_text(json.dumps(meta, indent=2))
-    backend.close()
-    print(
-        f"wrote {len(backend.camera_names()) * 3 + 2} images of {world.spec.name} ({backend.robot.name}) to {out} "
-        f"in {time.perf_counter() - started:.1f} s"
-    )
+    with MujocoBackend(
+        args.world, robot=args.robot, seed=args.seed, randomize=args.randomize, settle=args.settle
+    ) as backend:
+        written = write_snapshot(backend, Path(args.out))
+        print(
+            f"wrote {len(written)} images of {backend.sim_world.spec.name} ({backend.robot.name}) to {args.out} "
+            f"in {time.perf_counter() - started:.1f} s"
+        )
     return 0
 
 
@@ -337,15 +298,30 @@ def _add_perception_option(parser: argparse.ArgumentParser) -> None:
     modes = "; ".join(f"{m}: {what}" for m, what in PERCEPTION_MODES.items())
     modes += "; gt-2d, gt-3d and gt-scene combine with '+' (gt-2d+gt-scene)"
     parser.add_argument("--perception", type=_perception_mode, default="gt", metavar="MODE", help=modes)
+    parser.add_argument(
+        "--detector",
+        default=None,
+        metavar="KIND:DIR",
+        help="the open-vocabulary detector of modes without ground-truth 2D boxes (owlv2:DIR or grounding-dino:DIR, "
+        "DIR written by save_pretrained); default: $ROBOSCRIPT_DETECTOR",
+    )
 
 
-def _perception_mode(text: str) -> str:
-    from roboscript.perception.modes import check_mode
+def _perception_mode(text: str):
+    from roboscript.perception.modes import parse_mode
 
     try:
-        return check_mode(text)
+        return parse_mode(text)
     except ValueError as exc:
         raise argparse.ArgumentTypeError(str(exc)) from None
+
+
+def _resolve_perception(args: argparse.Namespace) -> None:
+    """The perception mode with its detector, from --detector or the environment: the one place either is read.
+    A missing detector fails here, before any world is built."""
+    from roboscript.perception.modes import DETECTOR_ENV, perception_mode
+
+    args.perception = perception_mode(args.perception, args.detector or os.environ.get(DETECTOR_ENV))
 
 
 def build_parser() -> argparse.ArgumentParser:
@@ -443,9 +419,7 @@ def main(argv: list[str] | None = None) -> int:
 
     try:
         if hasattr(args, "perception"):
-            from roboscript.perception.modes import require_ready
-
-            require_ready(args.perception)  # a missing detector fails here, before any world is built
+            _resolve_perception(args)
         return args.func(args)
     except (RoboScriptError, KeyError, ValueError) as exc:  # the builtins: argument checks in the commands
         print(f"roboscript: error: {error_message(exc)}", file=sys.stderr)

@@ -14,6 +14,7 @@ from roboscript.bench.runner import run_isolated
 from roboscript.bench.tasks import DEFAULT_SUITE, get_task
 from roboscript.bench.trial import TrialRecord, TrialSpec
 from roboscript.llm.openai_compatible import MODEL_ENV
+from roboscript.perception.modes import GROUND_TRUTH, PerceptionMode
 
 DEMO_TASK = "simple_0"
 
@@ -39,7 +40,11 @@ class DemoPlan:
 
 
 def run_demo(
-    plan: DemoPlan, seed: int = 0, timeout: float = 300.0, repair_rounds: int = 0, perception: str = "gt"
+    plan: DemoPlan,
+    seed: int = 0,
+    timeout: float = 300.0,
+    repair_rounds: int = 0,
+    perception: PerceptionMode | str = GROUND_TRUTH,
 ) -> TrialRecord:
     """Runs the task once in a child process; writes ``<task>.mp4``, ``report.md`` and ``report.json`` in
     ``plan.out``."""
@@ -71,7 +76,7 @@ def run_demo(
         "query": task.query,
         "robot": plan.robot,
         "seed": seed,
-        "perception": perception,
+        "perception": str(perception),
         "program_source": plan.source,
         "video": str(video) if video.is_file() else None,
         "record": record.to_dict(),

@@ -76,25 +76,6 @@ class ToolAPI:
         # Owed before the next motion: (direction, distance, "lift" after a grasp or "release" after letting go).
         self._pending_retreat: tuple[np.ndarray, float, str] | None = None
 
-    @classmethod
-    def for_simulation(cls, backend, seed: int = 0, perception: str = "gt") -> ToolAPI:
-        """The tools on a simulated ``backend``, with perception and the planning scene as the mode
-        ``perception`` says (see :mod:`roboscript.perception.modes`): ground truth by default."""
-        from roboscript.perception.ground_truth import GroundTruthPerception
-        from roboscript.perception.modes import make_perception, parse_mode
-
-        seen = make_perception(perception, backend, seed)
-        if isinstance(seen, GroundTruthPerception):
-            # One look before anything moves, as a tracker that has watched the scene from the start would have
-            # had: a program that pulls a drawer before it asks about a mug would otherwise see the mug first with
-            # the arm in front of it. (The camera pipeline looks at everything at the first question anyway.)
-            seen.detect(None)
-        if parse_mode(perception).observed_scene:
-            motion = MotionPlanner.perceived_in_mujoco(backend, seen, seed=seed)
-        else:
-            motion = MotionPlanner.for_mujoco(backend, seed=seed)
-        return cls(backend, seen, motion, seed)
-
     # --- the program's view ----------------------------------------------------------------------------------
 
     TOOL_NAMES = (

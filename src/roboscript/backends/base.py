@@ -10,16 +10,21 @@ Ground truth exists only in simulation: :attr:`Backend.ground_truth` is ``None``
 from __future__ import annotations
 
 from abc import ABC, abstractmethod
+from collections.abc import Callable
+from typing import TYPE_CHECKING
 
 import numpy as np
 
 from roboscript.errors import RoboScriptError
 from roboscript.geometry import Transform
+from roboscript.robot_io import CameraFrame, ExecutionReport, GripperReport
 from roboscript.robots import RobotDescription
-from roboscript.sim.cameras import CameraFrame
-from roboscript.sim.ground_truth import GroundTruth
-from roboscript.sim.simulator import ExecutionReport, GripperReport
-from roboscript.sim.trajectory import JointTrajectory
+from roboscript.trajectory import JointTrajectory
+
+if TYPE_CHECKING:  # ground truth is the simulation's; the interface only names its type
+    from roboscript.sim.ground_truth import GroundTruth
+
+ClockListener = Callable[[float], None]
 
 
 class BackendError(RoboScriptError, RuntimeError):
@@ -39,6 +44,15 @@ class Backend(ABC):
     @abstractmethod
     def joint_positions(self) -> np.ndarray:
         """Arm joint positions, radians, in the description's joint order."""
+
+    @abstractmethod
+    def joint_states(self) -> dict[str, float]:
+        """Every joint of the arm and the gripper by its name in the robot's model (unprefixed), as the encoders
+        read it: radians or metres."""
+
+    @abstractmethod
+    def base_pose(self) -> Transform:
+        """World pose of the robot's base frame, where its model is mounted."""
 
     @abstractmethod
     def tcp_pose(self) -> Transform:
@@ -81,6 +95,36 @@ class Backend(ABC):
     @abstractmethod
     def capture(self, camera: str) -> CameraFrame:
         """One RGB-D frame with calibration; segmentation only where the backend can provide it."""
+
+    def segmentation_labels(self) -> dict[int, str]:
+        """What the segmentation images of :meth:`capture` label: index -> name (``robot`` for the robot's own
+        pixels); empty where frames carry no segmentation."""
+        return {}
+
+    # --- for people watching ---
+
+    def render(self, camera: str, width: int, height: int) -> np.ndarray:
+        """An RGB image (height, width, 3) of what ``camera`` sees, for videos; by default its captured frame,
+        resized by nearest neighbour."""
+        rgb = self.capture(camera).rgb
+        rows = np.arange(height) * rgb.shape[0] // height
+        cols = np.arange(width) * rgb.shape[1] // width
+        return np.ascontiguousarray(rgb[rows][:, cols])
+
+    def add_clock_listener(self, listener: ClockListener) -> None:
+        """Calls ``listener(time)`` as the backend's clock advances: every physics step in simulation, every joint
+        state received on a robot."""
+        self.__dict__.setdefault("_clock_listeners", []).append(listener)
+
+    def remove_clock_listener(self, listener: ClockListener) -> None:
+        listeners = self.__dict__.get("_clock_listeners", [])
+        if listener in listeners:
+            listeners.remove(listener)
+
+    def _clock_advanced(self, time: float) -> None:
+        """Implementations call this as their clock advances."""
+        for listener in list(self.__dict__.get("_clock_listeners", ())):
+            listener(time)
 
     # --- simulation only ---
 

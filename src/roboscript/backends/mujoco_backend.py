@@ -4,16 +4,17 @@ from __future__ import annotations
 
 import numpy as np
 
-from roboscript.backends.base import Backend, BackendError
+from roboscript.backends.base import Backend, BackendError, ClockListener
 from roboscript.geometry import Transform, matrix_to_quat
-from roboscript.robots import RobotDescription
-from roboscript.sim.cameras import CameraFrame, Renderer
+from roboscript.robot_io import CameraFrame, ExecutionReport, GripperReport
+from roboscript.robots import ROBOT_PREFIX, RobotDescription
+from roboscript.sim.cameras import Renderer
 from roboscript.sim.ground_truth import GroundTruth
-from roboscript.sim.simulator import ExecutionReport, GripperReport, Simulator
-from roboscript.sim.trajectory import JointTrajectory
-from roboscript.sim.world import SimWorld, build_world
+from roboscript.sim.simulator import Simulator
+from roboscript.sim.world import SimWorld, build_world, robot_joint_readings, robot_mount
 from roboscript.sim.world_catalog import load_world
 from roboscript.sim.world_file import WorldSpec
+from roboscript.trajectory import JointTrajectory
 
 
 class MujocoBackend(Backend):
@@ -43,6 +44,9 @@ class MujocoBackend(Backend):
         self._ground_truth = GroundTruth(self.sim_world)
         self._renderers: dict[tuple[int, int], Renderer] = {}
         self._cameras = {c.name: c for c in spec.cameras}
+        self._read_joints = robot_joint_readings(self.sim_world)
+        self._base_pose = robot_mount(spec, self.sim_world.robot.description)
+        self._listening = False
         if settle > 0:
             self.simulator.settle(settle)
 
@@ -52,6 +56,12 @@ class MujocoBackend(Backend):
 
     def joint_positions(self) -> np.ndarray:
         return self.simulator.joint_positions()
+
+    def joint_states(self) -> dict[str, float]:
+        return {name.removeprefix(ROBOT_PREFIX): value for name, value in self._read_joints().items()}
+
+    def base_pose(self) -> Transform:
+        return self._base_pose
 
     def tcp_pose(self) -> Transform:
         return Transform(self.simulator.tcp_position(), matrix_to_quat(self.simulator.tcp_rotation()))
@@ -89,6 +99,32 @@ class MujocoBackend(Backend):
             raise BackendError(f"no camera named {camera!r}; cameras: {', '.join(self._cameras)}")
         spec = self._cameras[camera]
         return self.renderer(spec.width, spec.height).capture(self.sim_world.data, camera, spec)
+
+    def segmentation_labels(self) -> dict[int, str]:
+        return {e.index: e.name for e in self.sim_world.entities}
+
+    def render(self, camera: str, width: int, height: int) -> np.ndarray:
+        """Renders any camera of the model (the rig's, and ``overview``) at the size asked for."""
+        model = self.sim_world.model
+        names = [model.cam(i).name for i in range(model.ncam)]
+        if camera not in names:
+            raise BackendError(f"no camera named {camera!r} to render; cameras: {', '.join(names)}")
+        return self.renderer(width, height).rgb(self.sim_world.data, camera)
+
+    def add_clock_listener(self, listener: ClockListener) -> None:
+        super().add_clock_listener(listener)
+        if not self._listening:  # a step callback costs every control tick: only while someone listens
+            self.simulator.add_step_callback(self._on_step)
+            self._listening = True
+
+    def remove_clock_listener(self, listener: ClockListener) -> None:
+        super().remove_clock_listener(listener)
+        if self._listening and not self.__dict__.get("_clock_listeners"):
+            self.simulator.remove_step_callback(self._on_step)
+            self._listening = False
+
+    def _on_step(self, simulator: Simulator) -> None:
+        self._clock_advanced(simulator.time)
 
     @property
     def ground_truth(self) -> GroundTruth:

@@ -15,6 +15,7 @@ from roboscript.bench.stored_programs import PREFIX as PROGRAMS_PREFIX
 from roboscript.bench.stored_programs import StoredProgram, load_program_store
 from roboscript.bench.tasks import DEFAULT_SUITE, get_task, load_suite
 from roboscript.bench.trial import TrialRecord, TrialSpec
+from roboscript.perception.modes import GROUND_TRUTH, PerceptionMode
 
 POLICIES = ("reference", "llm:SPEC", "programs:PATH")
 
@@ -50,10 +51,12 @@ def run_label(policy: str, repair_rounds: int = 0) -> str:
     return f"{policy}+repair{repair_rounds}" if repair_rounds else policy
 
 
-def default_out(policy: str, robot: str, perception: str = "gt", suite: str = DEFAULT_SUITE) -> str:
+def default_out(
+    policy: str, robot: str, perception: PerceptionMode | str = GROUND_TRUTH, suite: str = DEFAULT_SUITE
+) -> str:
     """``out/bench/<policy>_<robot>``, with the suite and the perception mode where they are not the defaults
     (``<policy>_<suite>_<perception>_<robot>``), the policy made safe for a directory name."""
-    mode = "" if perception == "gt" else f"_{perception}"
+    mode = "" if str(perception) == "gt" else f"_{perception}"
     label = "" if suite == DEFAULT_SUITE else "_" + Path(suite).stem
     return f"out/bench/{re.sub(r'[^A-Za-z0-9._-]+', '_', policy)}{label}{mode}_{robot}"
 
@@ -70,7 +73,7 @@ def trial_specs(
     instruction: str | None = None,
     repair_rounds: int = 0,
     world: str | None = None,
-    perception: str = "gt",
+    perception: PerceptionMode | str = GROUND_TRUTH,
     suite: str = DEFAULT_SUITE,
 ) -> list[TrialSpec]:
     """Trial ``i`` uses seed ``seed + i``; with several trials, videos get a ``_trial<i>`` suffix."""
@@ -134,7 +137,7 @@ def run_benchmark(
     timeout: float = 300.0,
     progress: bool = True,
     repair_rounds: int = 0,
-    perception: str = "gt",
+    perception: PerceptionMode | str = GROUND_TRUTH,
     suite: str = DEFAULT_SUITE,
 ) -> dict:
     """Runs (or resumes) the benchmark of ``suite`` in ``out``; returns ``{"tasks": {id: exec object},
@@ -147,7 +150,7 @@ def run_benchmark(
     texts = {t: p.program for t, p in programs.items()}
     run = RunDirectory(
         out,
-        provenance(run_label(policy, repair_rounds), robot, trials, seed, texts, perception, repair_rounds, suite),
+        provenance(run_label(policy, repair_rounds), robot, trials, seed, texts, str(perception), repair_rounds, suite),
     )
     done = run.done()
     specs = [

@@ -16,6 +16,7 @@ from roboscript.codegen.checker import check_program
 from roboscript.codegen.outcomes import Outcome
 from roboscript.codegen.program_process import run_program
 from roboscript.codegen.sandbox import ExecutionResult, Limits
+from roboscript.perception.modes import GROUND_TRUTH, PerceptionMode, perception_mode
 
 MAX_OUTPUT = 4000  # characters of a program's printed output kept in its record
 
@@ -41,7 +42,8 @@ class TrialSpec:
     instruction: str | None = None  # asked of the LLM instead of the task's own instruction
     repair_rounds: int = 0  # rounds of feeding errors (checker, runtime, planning) back to the LLM
     world: str | None = None  # a world name or file to run in without a task (no checks); ``task`` is then a label
-    perception: str = "gt"  # where the tools' knowledge comes from (roboscript.perception.modes)
+    # Where the tools' knowledge comes from (roboscript.perception.modes); a name is parsed into a mode at once.
+    perception: PerceptionMode | str = GROUND_TRUTH
     suite: str = DEFAULT_SUITE  # the suite ``task`` is of: a packaged suite's name or a suite file's path
     program_source: str | None = None  # where a stored program came from (a file, an entry of one)
 
@@ -50,9 +52,7 @@ class TrialSpec:
             raise ValueError(f"repair rounds must be 0 or more, got {self.repair_rounds}")
         if self.timeout <= 0:
             raise ValueError(f"the time limit must be positive, got {self.timeout} s")
-        from roboscript.perception.modes import check_mode
-
-        check_mode(self.perception)
+        object.__setattr__(self, "perception", perception_mode(self.perception))
 
     def attempts(self) -> int:
         """How many times the program may run: once, and once more after each repair round."""
@@ -176,7 +176,7 @@ class _TrialWorld:
         self.spec, self.task = spec, task
 
     def __enter__(self) -> _TrialWorld:
-        from roboscript.api import ToolAPI
+        from roboscript.assembly import build_tools
         from roboscript.backends.mujoco_backend import MujocoBackend
 
         spec = self.spec
@@ -185,7 +185,7 @@ class _TrialWorld:
         try:
             self.ground_truth = self.backend.ground_truth
             self.checks = self.task.build_checks(self.ground_truth)
-            tools = ToolAPI.for_simulation(self.backend, seed=spec.seed, perception=spec.perception)
+            tools = build_tools(self.backend, spec.perception, seed=spec.seed)
             self.namespace = tools.namespace()
             if spec.video:
                 from roboscript.bench.video import VideoRecorder

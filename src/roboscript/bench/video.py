@@ -1,6 +1,7 @@
 """Records what a camera sees during a trial into an MP4 file, so a person can watch it.
 
-Frames are rendered every ``1 / fps`` seconds of simulated time from a step callback, and piped to ffmpeg (the
+Frames are rendered every ``1 / fps`` seconds of the backend's time (simulated time in simulation) as its clock
+advances (:meth:`Backend.add_clock_listener`), and piped to ffmpeg (the
 binary shipped with ``imageio-ffmpeg``, the ``video`` extra).
 """
 
@@ -10,12 +11,20 @@ from pathlib import Path
 
 import numpy as np
 
+from roboscript.backends.base import Backend
+
 
 class VideoRecorder:
     """Renders ``camera`` at ``fps`` (simulated time) into ``path`` while it is open."""
 
     def __init__(
-        self, backend, path: str | Path, camera: str = "camera_left", fps: int = 15, width: int = 480, height: int = 360
+        self,
+        backend: Backend,
+        path: str | Path,
+        camera: str = "camera_left",
+        fps: int = 15,
+        width: int = 480,
+        height: int = 360,
     ):
         try:
             import imageio_ffmpeg
@@ -24,9 +33,9 @@ class VideoRecorder:
         if camera not in backend.camera_names():
             raise ValueError(f"no camera {camera!r} to record; cameras: {', '.join(backend.camera_names())}")
         self.backend, self.camera, self.fps = backend, camera, fps
+        self.width, self.height = width, height
         self.path = Path(path)
         self.path.parent.mkdir(parents=True, exist_ok=True)
-        self._renderer = backend.renderer(width, height)
         self._writer = imageio_ffmpeg.write_frames(
             str(self.path),
             (width, height),
@@ -39,23 +48,23 @@ class VideoRecorder:
         self._writer.send(None)
         self._next = backend.time()
         self.frames = 0
-        backend.simulator.add_step_callback(self._on_step)
+        backend.add_clock_listener(self._on_tick)
         self._capture()
 
     def _capture(self) -> None:
-        rgb = self._renderer.rgb(self.backend.sim_world.data, self.camera)
+        rgb = self.backend.render(self.camera, self.width, self.height)
         self._writer.send(np.ascontiguousarray(rgb).tobytes())
         self.frames += 1
         self._next += 1.0 / self.fps
 
-    def _on_step(self, simulator) -> None:
-        if simulator.time >= self._next:
+    def _on_tick(self, time: float) -> None:
+        if time >= self._next:
             self._capture()
 
     def close(self) -> None:
         if self._writer is None:
             return
-        self.backend.simulator.remove_step_callback(self._on_step)
+        self.backend.remove_clock_listener(self._on_tick)
         self._capture()
         self._writer.close()
         self._writer = None

@@ -14,7 +14,7 @@ import numpy as np
 
 from roboscript.errors import RoboScriptError
 from roboscript.perception.grounding import Detection2D, Grounder, normalize_phrase
-from roboscript.sim.cameras import CameraFrame
+from roboscript.robot_io import CameraFrame
 
 DETECTOR_KINDS = ("owlv2", "grounding-dino")
 # The model's configuration, and the processor's (older transformers write preprocessor_config.json).

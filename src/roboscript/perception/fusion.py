@@ -12,7 +12,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from roboscript.sim.cameras import CameraFrame
+from roboscript.robot_io import CameraFrame
 
 
 @dataclass(frozen=True)

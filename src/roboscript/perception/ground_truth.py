@@ -27,7 +27,7 @@ from roboscript.perception.base import (
 )
 from roboscript.perception.footprints import footprint_of
 from roboscript.perception.points import entities_points, entity_points, robot_masks, surface_points
-from roboscript.sim.cameras import CameraFrame
+from roboscript.robot_io import CameraFrame
 from roboscript.sim.furniture import drawer_interior
 
 

@@ -11,11 +11,11 @@ from __future__ import annotations
 from abc import ABC, abstractmethod
 from collections.abc import Sequence
 from dataclasses import dataclass
+from typing import Protocol
 
 import numpy as np
 
-from roboscript.sim.cameras import CameraFrame
-from roboscript.sim.world import Entity
+from roboscript.robot_io import CameraFrame
 
 
 @dataclass(frozen=True)
@@ -48,7 +48,7 @@ def normalize_phrase(phrase: str) -> str:
     return " ".join(phrase.replace("_", " ").lower().split())
 
 
-def entity_phrases(entity: Entity) -> set[str]:
+def entity_phrases(entity: SegmentLabel) -> set[str]:
     """What a person may call an object: its name, its category, and its colour with the category."""
     phrases = {normalize_phrase(entity.name)}
     if entity.category:
@@ -56,6 +56,26 @@ def entity_phrases(entity: Entity) -> set[str]:
         if entity.color:
             phrases.add(normalize_phrase(f"{entity.color} {entity.category}"))
     return phrases
+
+
+class SegmentLabel(Protocol):
+    """What a segmentation label stands for: the world's entities in simulation, a segmentation node's labels on a
+    robot. ``kind``: ``object``, ``furniture``, ``part`` (and ``table``, ``robot``, which no phrase names)."""
+
+    @property
+    def index(self) -> int: ...
+
+    @property
+    def name(self) -> str: ...
+
+    @property
+    def kind(self) -> str: ...
+
+    @property
+    def category(self) -> str: ...
+
+    @property
+    def color(self) -> str: ...
 
 
 @dataclass(frozen=True)
@@ -76,15 +96,16 @@ class GroundingNoise:
 
 
 class SegmentationGrounder(Grounder):
-    """Boxes around the pixels the simulator's segmentation gives each object that a phrase names.
+    """Boxes around the pixels a segmentation image gives each object that a phrase names (the simulator's, or a
+    segmentation node's on a robot).
 
-    ``entities``: the world's objects; ``min_pixels``: smaller glimpses are not reported (a detector would miss
-    them too).
+    ``entities``: what the segmentation's labels stand for; ``min_pixels``: smaller glimpses are not reported (a
+    detector would miss them too).
     """
 
     def __init__(
         self,
-        entities: Sequence[Entity],
+        entities: Sequence[SegmentLabel],
         min_pixels: int = 40,
         noise: GroundingNoise | None = None,
         seed: int = 0,

@@ -13,7 +13,7 @@ from collections.abc import Sequence
 import numpy as np
 
 from roboscript.perception.matching import VISIBILITY_TOLERANCE, project
-from roboscript.sim.cameras import CameraFrame
+from roboscript.robot_io import CameraFrame
 
 
 def remembered(

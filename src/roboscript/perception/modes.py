@@ -6,25 +6,23 @@ observed surfaces as occupancy boxes). ``full`` takes none from ground truth, ``
 ``gt-scene`` each take one, and can be combined with ``+`` (``gt-2d+gt-scene``) to isolate the rest.
 
 Without ground-truth 2D boxes, the boxes come from an open-vocabulary detector whose weights the user provides
-(``$ROBOSCRIPT_DETECTOR=owlv2:DIR`` or ``grounding-dino:DIR``). Where objects are observed, furniture is too:
-its boxes, points, joints (:mod:`roboscript.perception.articulation`) and drawers' insides
-(:mod:`roboscript.perception.drawers`) come from the points of the carcass, fronts and handles; only the labels
-(what parts there are, which part a handle moves, sliding or turning) come from the furniture's description.
+(``--detector owlv2:DIR`` or ``grounding-dino:DIR``, or ``$ROBOSCRIPT_DETECTOR``, read by the command line only).
+Where objects are observed, furniture is too: its boxes, points, joints (:mod:`roboscript.perception.articulation`)
+and drawers' insides (:mod:`roboscript.perception.drawers`) come from the points of the carcass, fronts and
+handles; only the labels (what parts there are, which part a handle moves, sliding or turning) come from the
+furniture's description. :mod:`roboscript.assembly` builds the perception a mode asks for.
 """
 
 from __future__ import annotations
 
-import os
-from dataclasses import dataclass
-
-from roboscript.backends.base import Backend
-from roboscript.perception.base import Perception
+from dataclasses import dataclass, replace
 
 STAGES = ("2d", "3d", "scene")
 PERCEPTION_MODES = {
     "gt": "ground truth everywhere",
-    "full": "nothing from ground truth: 2D boxes from an open-vocabulary detector ($ROBOSCRIPT_DETECTOR="
-    "owlv2:DIR or grounding-dino:DIR), objects from fused RGB-D views, the planning scene from observed surfaces",
+    "full": "nothing from ground truth: 2D boxes from an open-vocabulary detector (--detector or "
+    "$ROBOSCRIPT_DETECTOR: owlv2:DIR or grounding-dino:DIR), objects from fused RGB-D views, the planning scene "
+    "from observed surfaces",
     "gt-2d": "as full, with ground-truth 2D boxes (the simulator's segmentation)",
     "gt-3d": "as full, with objects' 3D boxes, poses and points from ground truth (the planning scene observed)",
     "gt-scene": "as full, with the ground-truth planning scene (the simulator's geometry)",
@@ -34,11 +32,28 @@ ALIASES = {"det-2d": "gt-scene"}  # the earlier name of detector boxes with the 
 
 
 @dataclass(frozen=True)
+class DetectorSpec:
+    """An open-vocabulary detector's kind (``owlv2``, ``grounding-dino``) and the directory of its weights."""
+
+    kind: str
+    directory: str
+
+    def __str__(self) -> str:
+        return f"{self.kind}:{self.directory}"
+
+
+@dataclass(frozen=True)
 class PerceptionMode:
-    """The stages a mode takes from ground truth."""
+    """The stages a mode takes from ground truth, and the detector it uses where it takes no 2D boxes from it.
+
+    Made once, where a run is configured (:func:`perception_mode`); everything below takes this value."""
 
     name: str
     from_truth: frozenset[str]
+    detector: DetectorSpec | None = None
+
+    def __str__(self) -> str:
+        return self.name
 
     @property
     def needs_detector(self) -> bool:
@@ -52,10 +67,24 @@ class PerceptionMode:
     def observed_scene(self) -> bool:
         return "scene" not in self.from_truth
 
+    @property
+    def needs_ground_truth(self) -> bool:
+        return bool(self.from_truth)
+
+
+def perception_mode(mode: str | PerceptionMode, detector: str | None = None) -> PerceptionMode:
+    """The mode ``mode`` names, with the detector ``detector`` names (``KIND:DIR``) where the mode needs one,
+    checked (its directory exists and holds weights) but not loaded. Raises ``ValueError`` for an unknown mode and
+    :class:`~roboscript.perception.detectors.DetectorError` for a missing or bad detector."""
+    parsed = mode if isinstance(mode, PerceptionMode) else parse_mode(mode)
+    if not parsed.needs_detector or parsed.detector is not None:
+        return parsed
+    return replace(parsed, detector=parse_detector(detector or "", parsed.name))
+
 
 def parse_mode(mode: str) -> PerceptionMode:
-    """The :class:`PerceptionMode` named by ``mode``: one of :data:`PERCEPTION_MODES`, or ``gt-...`` modes joined
-    by ``+``."""
+    """The :class:`PerceptionMode` named by ``mode`` (no detector yet): one of :data:`PERCEPTION_MODES`, or
+    ``gt-...`` modes joined by ``+``."""
     if not isinstance(mode, str):
         raise TypeError(f"a perception mode is a string such as 'gt-2d', got {type(mode).__name__} {mode!r}")
     if mode in ALIASES:
@@ -77,57 +106,24 @@ def parse_mode(mode: str) -> PerceptionMode:
     return PerceptionMode(mode, frozenset(stages))
 
 
-def check_mode(mode: str) -> str:
-    parse_mode(mode)
-    return mode
+GROUND_TRUTH = parse_mode("gt")
 
 
-def make_perception(mode: str, backend: Backend, seed: int = 0) -> Perception:
-    """The perception of ``mode`` for a simulated ``backend``."""
-    from roboscript.perception.ground_truth import GroundTruthPerception
-
-    parsed = parse_mode(mode)
-    truth = GroundTruthPerception(backend)
-    if not parsed.observed_objects:
-        return truth
-    from roboscript.perception.grounding import SegmentationGrounder
-    from roboscript.perception.pipeline import PipelinePerception
-
-    world = backend.ground_truth.world
-    grounder = detector_from_env() if parsed.needs_detector else SegmentationGrounder(world.entities, seed=seed)
-    vocabulary = world.entity_names(("object",))
-    return PipelinePerception(backend, grounder, vocabulary, truth, robot_index=world.entity("robot").index)
-
-
-def detector_spec(mode: str = "full") -> tuple[str, str]:
-    """``(kind, directory)`` of the detector ``$ROBOSCRIPT_DETECTOR`` names (``KIND:DIR``), checked, not loaded."""
+def parse_detector(spec: str, mode: str = "full") -> DetectorSpec:
+    """The detector ``spec`` (``KIND:DIR``) names, checked, not loaded; ``mode`` is named in the error."""
     from roboscript.perception.detectors import DETECTOR_KINDS, DetectorError, check_model_dir
 
-    spec = os.environ.get(DETECTOR_ENV, "")
     kind, sep, path = spec.partition(":")
     if not sep or not path:
         raise DetectorError(
-            f"perception {mode} needs a detector: set {DETECTOR_ENV}=KIND:DIR with KIND one of "
-            f"{', '.join(DETECTOR_KINDS)} and DIR a model saved with save_pretrained (got {spec!r}), or take the "
-            f"2D boxes from ground truth with {_with_truth_2d(mode)}"
+            f"perception {mode} needs a detector: pass --detector KIND:DIR or set {DETECTOR_ENV}=KIND:DIR with KIND "
+            f"one of {', '.join(DETECTOR_KINDS)} and DIR a model saved with save_pretrained (got {spec!r}), or take "
+            f"the 2D boxes from ground truth with {_with_truth_2d(mode)}"
         )
-    return kind, check_model_dir(kind, path)
+    return DetectorSpec(kind, check_model_dir(kind, path))
 
 
 def _with_truth_2d(mode: str) -> str:
     """``mode`` with ground-truth 2D boxes added: ``full`` -> ``gt-2d``, ``gt-scene`` -> ``gt-2d+gt-scene``."""
     stages = ["2d", *(s for s in STAGES if s in parse_mode(mode).from_truth)]
     return "+".join(f"gt-{s}" for s in stages)
-
-
-def require_ready(mode: str) -> None:
-    """Fails now, clearly, if ``mode`` cannot work (unknown, or its detector missing), before worlds are built."""
-    if parse_mode(mode).needs_detector:
-        detector_spec(mode)
-
-
-def detector_from_env():
-    """The detector ``$ROBOSCRIPT_DETECTOR`` names, loaded."""
-    from roboscript.perception.detectors import OpenVocabularyDetector
-
-    return OpenVocabularyDetector(*detector_spec())

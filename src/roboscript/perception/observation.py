@@ -19,7 +19,7 @@ from roboscript.perception.instances import (
 )
 from roboscript.perception.matching import MatchedObject, Projection, match_views, membership, project
 from roboscript.perception.points import normal_map, point_map
-from roboscript.sim.cameras import CameraFrame
+from roboscript.robot_io import CameraFrame
 
 
 @dataclass

@@ -30,6 +30,7 @@ import numpy as np
 from roboscript.backends.base import Backend
 from roboscript.geometry import Box3D, Transform, quat_from_yaw
 from roboscript.names import kind_of
+from roboscript.objects import ObjectType, object_types
 from roboscript.perception.articulation import DRAWER_TRAVEL, door_joint, drawer_joint, front_plane
 from roboscript.perception.base import (
     OCCUPANCY_MARGIN,
@@ -48,7 +49,6 @@ from roboscript.perception.grounding import Grounder, normalize_phrase
 from roboscript.perception.instances import Instance3D, fit_box, footprint_points, object_box, table_surface
 from roboscript.perception.observation import Observation, observe
 from roboscript.perception.points import robot_masks, surface_points
-from roboscript.sim.objects import ObjectType, object_types
 
 SETTLE_TIME = 0.5  # seconds given to what was let go to come to rest before looking again
 SHALLOW = 0.035  # metres: containers lower than this (plates, saucers) hold things on top, not inside

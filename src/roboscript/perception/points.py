@@ -6,7 +6,7 @@ from collections.abc import Sequence
 
 import numpy as np
 
-from roboscript.sim.cameras import CameraFrame
+from roboscript.robot_io import CameraFrame
 
 
 def point_map(frame: CameraFrame, hidden: np.ndarray | None = None) -> np.ndarray:

@@ -14,7 +14,7 @@ import numpy as np
 
 from roboscript.geometry import Transform, quat_to_matrix
 from roboscript.robots import ROBOT_PREFIX, RobotDescription
-from roboscript.sim.world import attach_robot, configure_options
+from roboscript.robots.mujoco_model import attach_robot, configure_options
 
 
 @dataclass(frozen=True)

@@ -28,7 +28,7 @@ from roboscript.planning.planner import JointPath, JointPlanner, seed_sampling
 from roboscript.planning.scene import PlanningScene
 from roboscript.planning.timing import time_parameterize
 from roboscript.planning.transfer import plan_transfer
-from roboscript.sim.simulator import ExecutionReport
+from roboscript.robot_io import ExecutionReport
 
 WIDE_APPROACH_SEARCH = {"attempts": 8, "max_attempts": 80, "branches": 8}  # see MotionPlanner.approaches
 PLANNING_ATTEMPTS = 3  # tries of a planner that runs out of time, each with twice the time of the one before
@@ -86,33 +86,6 @@ class MotionPlanner:
         self.default_planner = "RRTConnect"
         self.planning_timeout = 2.0
         self._preferred: list[tuple[Transform, np.ndarray]] = []  # configurations chosen for poses ahead of time
-
-    @classmethod
-    def for_mujoco(cls, backend, padding: float = 0.005, **kwargs) -> MotionPlanner:
-        """A planner whose scene is the simulated world's exact geometry (ground-truth mode)."""
-        from roboscript.sim.world import robot_mount
-
-        world = backend.sim_world
-        description = world.robot.description
-        scene = PlanningScene.from_sim_world(world, padding=padding)
-        kinematics = ArmKinematics(description, robot_mount(world.spec, description))
-        return cls(backend, scene, kinematics, lambda: world.data.qpos.copy(), **kwargs)
-
-    @classmethod
-    def perceived_in_mujoco(cls, backend, perception, padding: float = 0.005, **kwargs) -> MotionPlanner:
-        """A planner whose scene is built from what ``perception`` saw in the simulated world; only the robot's
-        joint readings are taken from the simulator."""
-        from roboscript.planning.perceived_scene import PerceivedSceneSource
-        from roboscript.sim.world import robot_joint_readings, robot_mount
-
-        world = backend.sim_world
-        description = world.robot.description
-        mount = robot_mount(world.spec, description)
-        robot = world.entity("robot").index
-        source = PerceivedSceneSource(perception, description, mount, robot_joint_readings(world), padding, robot)
-        kinematics = ArmKinematics(description, mount)
-        # The scene is built at the first motion: by then the program has said what to look for.
-        return cls(backend, None, kinematics, source.state, scene_source=source, **kwargs)
 
     @property
     def scene(self) -> PlanningScene:

@@ -22,7 +22,7 @@ from roboscript.perception.points import robot_masks
 from roboscript.planning.occupancy import VOXEL, occupied_boxes
 from roboscript.planning.scene import PlanningScene
 from roboscript.robots.description import RobotDescription
-from roboscript.sim.world import RobotBinding, attach_robot, configure_options
+from roboscript.robots.mujoco_model import RobotBinding, attach_robot, configure_options
 
 OBJECT_VOXEL = 0.01  # metres: objects are small and are reached into, so their boxes are finer
 UNKNOWN = "scene"  # the name of observed surfaces that belong to no known object or part
@@ -144,9 +144,10 @@ def within_reach(points: np.ndarray, mount: Transform) -> np.ndarray:
 class PerceivedSceneSource:
     """Keeps a planning scene built from ``perception`` up to date.
 
-    ``robot_state`` gives the robot's joint readings by joint name (the arm's and the gripper's: proprioception,
-    which a real robot has too). Surfaces seen in earlier looks that the robot's body (segmentation index
-    ``robot_index``) now hides are remembered (:mod:`roboscript.perception.memory`). :meth:`current` rebuilds
+    ``robot_state`` gives the robot's joint readings by the joint's name in the robot's model (the arm's and the
+    gripper's: proprioception, as :meth:`Backend.joint_states` reads it). Surfaces seen in earlier looks that the
+    robot's body (segmentation index ``robot_index``) now hides are remembered
+    (:mod:`roboscript.perception.memory`). :meth:`current` rebuilds
     the scene when :meth:`mark_stale` was called or perception has looked again since the last build.
     """
 
@@ -205,6 +206,6 @@ class PerceivedSceneSource:
         qpos = scene.model.qpos0.copy()
         readings = self.robot_state()
         for name, value in readings.items():
-            joint = scene.model.joint(name)
+            joint = scene.model.joint(self.description.qualified(name))
             qpos[joint.qposadr[0]] = value
         return qpos

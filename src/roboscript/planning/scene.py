@@ -5,14 +5,13 @@ pairs that involve the robot (or an object it holds) are tested: MuJoCo's contyp
 robot geoms collide with everything, and the rest of the world does not collide with itself (objects resting on
 the table are not a planning problem). Contacts closer than ``padding`` count as collisions.
 
-:meth:`PlanningScene.from_sim_world` copies the simulated geometry (ground truth) and :meth:`update` copies its
-state; :mod:`roboscript.planning.perceived_scene` builds a model of the same form from observed surfaces.
+:mod:`roboscript.planning.ground_truth_scene` copies the simulated geometry (ground truth) and :meth:`update` copies
+its state; :mod:`roboscript.planning.perceived_scene` builds a model of the same form from observed surfaces.
 """
 
 from __future__ import annotations
 
 import contextlib
-import copy
 import functools
 import itertools
 from collections.abc import Iterable, Iterator
@@ -23,7 +22,7 @@ import numpy as np
 
 from roboscript.geometry import Transform
 from roboscript.robots.description import RobotDescription
-from roboscript.sim.world import RobotBinding, SimWorld, is_descendant
+from roboscript.robots.mujoco_model import RobotBinding, is_descendant
 
 REGRASP_LIMIT = 0.05  # metres a held object may have shifted in the hand and still be where the scene holds it
 LEAVING_TOLERANCE = 0.002  # metres a contact being left may go deeper than it started (or than touching)
@@ -103,21 +102,6 @@ class PlanningScene:
         self._attached_allowed: dict[str, set[int]] = {}
         self._lower, self._upper = robot.joint_lower - 1e-9, robot.joint_upper + 1e-9
         self._finger_qpos, self._finger_open = _open_finger_positions(model, robot, self._gripper_bodies)
-
-    @classmethod
-    def from_sim_world(cls, world: SimWorld, padding: float = 0.005) -> PlanningScene:
-        """A scene with the world's exact geometry (ground truth), in the world's current state."""
-        model = copy.copy(world.model)
-        labels = [model.body(b).name for b in range(model.nbody)]
-        for entity in sorted(world.entities, key=lambda e: e.kind == "part"):  # parts override their furniture
-            if entity.kind == "robot":
-                continue
-            for body in entity.bodies:
-                labels[body] = entity.name
-        objects = {e.name: e.bodies[0] for e in world.entities if e.kind == "object"}
-        scene = cls(model, world.robot, labels, objects, padding)
-        scene.update(world.data.qpos)
-        return scene
 
     # --- state -----------------------------------------------------------------------------------------------
 

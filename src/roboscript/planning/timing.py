@@ -13,7 +13,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from roboscript.sim.trajectory import JointTrajectory, scaled_limits
+from roboscript.trajectory import JointTrajectory, scaled_limits
 
 _SHARP_TURN = 2 * np.sin(np.radians(10) / 2)  # chord between unit tangents 10 degrees apart
 

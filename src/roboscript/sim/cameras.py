@@ -15,6 +15,7 @@ import mujoco
 import numpy as np
 
 from roboscript.geometry import Transform, matrix_to_quat, quat_to_mujoco
+from roboscript.robot_io import CameraFrame
 
 
 @dataclass(frozen=True)
@@ -71,18 +72,6 @@ def camera_pose_opencv(model: mujoco.MjModel, data: mujoco.MjData, name: str) ->
     out[:3, :3] = rotation
     out[:3, 3] = cam.xpos
     return Transform.from_matrix(out)
-
-
-@dataclass
-class CameraFrame:
-    """One RGB-D(-S) capture: images plus the calibration that perception needs."""
-
-    name: str
-    rgb: np.ndarray  # (H, W, 3) uint8
-    depth: np.ndarray  # (H, W) float32, metres; 0 where nothing was hit
-    segmentation: np.ndarray | None  # (H, W) int32 entity index, -1 for background and unnamed things
-    intrinsics: np.ndarray  # (3, 3)
-    extrinsics: Transform  # camera-to-world, OpenCV convention
 
 
 class Renderer:

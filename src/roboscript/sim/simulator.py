@@ -9,35 +9,13 @@ robot is gravity-compensated, so tracking error stays in the millimetres.
 from __future__ import annotations
 
 from collections.abc import Callable
-from dataclasses import dataclass
 
 import mujoco
 import numpy as np
 
-from roboscript.sim.trajectory import JointTrajectory
+from roboscript.robot_io import ExecutionReport, GripperReport
 from roboscript.sim.world import SimWorld
-
-
-@dataclass(frozen=True)
-class ExecutionReport:
-    """How well a trajectory was tracked. Errors are maxima over the run; TCP errors in metres."""
-
-    duration: float
-    max_joint_error: float
-    max_tcp_error: float
-    final_joint_error: float
-    final_tcp_error: float
-
-
-@dataclass(frozen=True)
-class GripperReport:
-    """Gripper state after a command: opening width in metres, and whether the fingers stopped on something."""
-
-    width: float
-    command: float  # 0 = open, 1 = closed
-    blocked: bool
-    duration: float
-
+from roboscript.trajectory import JointTrajectory
 
 StepCallback = Callable[["Simulator"], None]
 

@@ -29,9 +29,9 @@ import numpy as np
 
 from roboscript.datafile import DataFileError, Reader, read_data_file
 from roboscript.names import TABLE, kind_of
+from roboscript.objects import ObjectType, object_types
 from roboscript.sim.cameras import CameraSpec, default_camera_rig
 from roboscript.sim.furniture import CabinetRow, CabinetSpec, TableSpec
-from roboscript.sim.objects import ObjectType, object_types
 
 TABLE_NAME = TABLE
 ROBOT_BASE_XY = (-0.45, 0.0)

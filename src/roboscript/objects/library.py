@@ -11,9 +11,9 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from roboscript.sim import object_shapes as shapes
-from roboscript.sim.object_shapes import COLORS
-from roboscript.sim.shapes import RGBA, Part, parts_bounds
+from roboscript.objects import designs as shapes
+from roboscript.objects.designs import COLORS
+from roboscript.objects.shapes import RGBA, Part, parts_bounds
 
 
 @dataclass(frozen=True)

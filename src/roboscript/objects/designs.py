@@ -7,7 +7,7 @@ import math
 
 import numpy as np
 
-from roboscript.sim.shapes import RGBA, Part, arc_of_capsules, disk, open_box, parts_bounds, ring_wall
+from roboscript.objects.shapes import RGBA, Part, arc_of_capsules, disk, open_box, parts_bounds, ring_wall
 
 COLORS: dict[str, RGBA] = {
     "red": (0.78, 0.08, 0.08, 1.0),

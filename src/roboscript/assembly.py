@@ -1,0 +1,106 @@
+"""Assembly: the tool API for a backend, with perception and the planning scene as a perception mode says.
+
+The one place that decides, for a given backend, where the tools' knowledge comes from: the simulator's state
+(ground truth, for the ablations) or the backend's sensors (cameras, segmentation images, joint states). The layers
+below it speak only to the :class:`~roboscript.backends.base.Backend` interface; this module and the ground-truth
+modules are the only ones above the backends that know of the simulator.
+"""
+
+from __future__ import annotations
+
+from roboscript.api.tools import ToolAPI
+from roboscript.backends.base import Backend, BackendError
+from roboscript.perception.base import Perception
+from roboscript.perception.modes import GROUND_TRUTH, PerceptionMode, perception_mode
+from roboscript.planning.motion import MotionPlanner
+
+SCENE_PADDING = 0.005  # metres: contacts closer than this count as collisions in the planning scene
+
+
+def build_tools(backend: Backend, perception: PerceptionMode | str = GROUND_TRUTH, seed: int = 0) -> ToolAPI:
+    """The tools on ``backend``, with perception and the planning scene as the mode ``perception`` says (ground
+    truth by default; a string is parsed with :func:`~roboscript.perception.modes.perception_mode`)."""
+    mode = perception_mode(perception)
+    _check_truth(backend, mode)
+    seen = build_perception(backend, mode, seed)
+    motion = build_motion(backend, seen, mode, seed)
+    return ToolAPI(backend, seen, motion, seed)
+
+
+def build_perception(backend: Backend, mode: PerceptionMode | str = GROUND_TRUTH, seed: int = 0) -> Perception:
+    """The perception ``mode`` asks for on ``backend``."""
+    from roboscript.perception.ground_truth import GroundTruthPerception
+
+    mode = perception_mode(mode)
+    _check_truth(backend, mode)
+    if backend.ground_truth is None:
+        raise BackendError(
+            f"perception {mode} on {type(backend).__name__}: perception from a robot's own cameras needs the labels of "
+            "its furniture (what parts there are, what each handle moves), which only a simulation gives yet"
+        )
+    truth = GroundTruthPerception(backend)
+    if not mode.observed_objects:
+        # One look before anything moves, as a tracker that has watched the scene from the start would have had: a
+        # program that pulls a drawer before it asks about a mug would otherwise see the mug first with the arm in
+        # front of it. (The camera pipeline looks at everything at the first question anyway.)
+        truth.detect(None)
+        return truth
+    from roboscript.perception.grounding import SegmentationGrounder
+    from roboscript.perception.pipeline import PipelinePerception
+
+    world = backend.ground_truth.world
+    grounder = _detector(mode) if mode.needs_detector else SegmentationGrounder(world.entities, seed=seed)
+    return PipelinePerception(
+        backend, grounder, world.entity_names(("object",)), truth, robot_index=_robot_label(backend)
+    )
+
+
+def build_motion(
+    backend: Backend, perception: Perception, mode: PerceptionMode | str = GROUND_TRUTH, seed: int = 0, **kwargs
+) -> MotionPlanner:
+    """The motion planner for ``backend``: its scene the simulator's geometry where ``mode`` takes the scene from
+    ground truth, else built from what ``perception`` saw; ``kwargs`` go to :class:`MotionPlanner`."""
+    mode = perception_mode(mode)
+    if not mode.observed_scene:
+        from roboscript.planning.ground_truth_scene import ground_truth_motion
+
+        _check_truth(backend, mode)
+        return ground_truth_motion(backend, padding=SCENE_PADDING, seed=seed, **kwargs)
+    return perceived_motion(backend, perception, seed=seed, **kwargs)
+
+
+def perceived_motion(
+    backend: Backend, perception: Perception, padding: float = SCENE_PADDING, **kwargs
+) -> MotionPlanner:
+    """A planner whose scene is built from what ``perception`` saw; only the robot's joint states are read."""
+    from roboscript.planning.kinematics import ArmKinematics
+    from roboscript.planning.perceived_scene import PerceivedSceneSource
+
+    description, mount = backend.robot, backend.base_pose()
+    source = PerceivedSceneSource(perception, description, mount, backend.joint_states, padding, _robot_label(backend))
+    # The scene is built at the first motion: by then the program has said what to look for.
+    return MotionPlanner(backend, None, ArmKinematics(description, mount), source.state, scene_source=source, **kwargs)
+
+
+def _robot_label(backend: Backend) -> int | None:
+    """The segmentation label of the robot's own pixels, if the backend's segmentation has one."""
+    return next((index for index, name in backend.segmentation_labels().items() if name == "robot"), None)
+
+
+def _check_truth(backend: Backend, mode: PerceptionMode) -> None:
+    if mode.needs_ground_truth and backend.ground_truth is None:
+        raise BackendError(
+            f"perception {mode} takes {', '.join(sorted(mode.from_truth))} from ground truth, which only a simulation "
+            f"has; on {type(backend).__name__} use --perception full"
+        )
+
+
+def _detector(mode: PerceptionMode):
+    from roboscript.perception.detectors import DetectorError, OpenVocabularyDetector
+
+    if mode.detector is None:
+        raise DetectorError(
+            f"perception {mode} needs a detector: make the mode with perception_mode({mode.name!r}, 'KIND:DIR') "
+            "(the command line's --detector or $ROBOSCRIPT_DETECTOR)"
+        )
+    return OpenVocabularyDetector(mode.detector.kind, mode.detector.directory)
