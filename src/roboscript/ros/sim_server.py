@@ -1,0 +1,458 @@
+"""The simulation as a ROS robot (``roboscript ros-sim``): the MuJoCo world served through the interfaces a real arm's
+driver offers, under the names of a robot configuration (franka_ros's for the Panda, ur_robot_driver's for the
+UR5e), so that the ROS backend cannot tell it from the robot.
+
+Served: joint states (``state_rate`` Hz of simulated time) and ``/clock`` (``/use_sim_time`` is set), the
+``FollowJointTrajectory`` action with feedback, preemption and result codes, the gripper's action
+(``control_msgs/GripperCommand``, or franka_gripper's ``move`` and ``grasp``), RGB-D images with camera info and a
+labelled segmentation image per camera at ``camera_rate`` Hz of simulated time while anyone listens, the labels
+on a latched topic, and TF (the robot's base and each camera's optical frame in the world frame).
+
+One thread owns the simulation: it steps the physics paced to ``real_time_factor`` times the wall clock, and runs
+the goals the action servers' threads hand it. Cameras render in a thread of their own from a copy of the state.
+"""
+
+from __future__ import annotations
+
+import json
+import queue
+import threading
+import time
+from dataclasses import dataclass, field
+
+import mujoco
+import numpy as np
+
+from roboscript.backends.mujoco_backend import MujocoBackend
+from roboscript.robot_config import RobotConfig
+from roboscript.ros.messages import action_types
+from roboscript.sim.cameras import Renderer, camera_pose_opencv, pinhole_intrinsics
+from roboscript.trajectory import JointTrajectory
+
+FEEDBACK_RATE = 20.0  # Hz of simulated time: trajectory feedback
+OPTICAL_FRAME = "{camera}_color_optical_frame"
+
+
+class _Preempted(Exception):
+    """Raised inside the simulation's step to stop a goal that was cancelled."""
+
+
+@dataclass
+class _Job:
+    kind: str  # "trajectory", "gripper", "move", "grasp"
+    handle: object  # the actionlib ServerGoalHandle
+    cancelled: threading.Event = field(default_factory=threading.Event)
+
+
+class RosSimServer:
+    """Serves ``backend``'s simulation as the robot ``config`` describes (see the module's docstring)."""
+
+    def __init__(
+        self,
+        backend: MujocoBackend,
+        config: RobotConfig,
+        real_time_factor: float = 1.0,
+        state_rate: float = 100.0,
+        camera_rate: float = 1.0,
+        labels_topic: str = "/roboscript/segmentation_labels",
+    ):
+        import actionlib
+        import rospy
+        from rosgraph_msgs.msg import Clock
+        from sensor_msgs.msg import CameraInfo, Image, JointState
+
+        if real_time_factor <= 0 or state_rate <= 0 or camera_rate <= 0:
+            raise ValueError(
+                f"rates must be positive: real-time factor {real_time_factor}, state {state_rate} Hz, "
+                f"camera {camera_rate} Hz"
+            )
+        self.backend, self.config = backend, config
+        self.simulator = backend.simulator
+        self.rtf, self.state_period, self.camera_period = real_time_factor, 1.0 / state_rate, 1.0 / camera_rate
+        self._rospy = rospy
+        self._jobs: queue.Queue[_Job] = queue.Queue()
+        self._current: _Job | None = None
+        self._state_pub = rospy.Publisher(config.joint_states, JointState, queue_size=10)
+        self._clock_pub = rospy.Publisher("/clock", Clock, queue_size=10)
+        self._joint_names = self._published_joints()
+        self._next_state = 0.0
+        self._next_feedback = 0.0
+        self._wall_start, self._sim_start = time.monotonic(), self.simulator.time
+        self._stop = threading.Event()
+
+        trajectory = action_types("control_msgs/FollowJointTrajectory")
+        self._trajectory_types = trajectory
+        self._servers = [
+            actionlib.ActionServer(
+                config.trajectory_action, trajectory.action, self._on_goal("trajectory"), self._on_cancel, False
+            )
+        ]
+        gripper = config.gripper
+        if gripper.kind == "franka":
+            self._move_types = action_types("franka_gripper/Move")
+            self._grasp_types = action_types("franka_gripper/Grasp")
+            self._servers += [
+                actionlib.ActionServer(
+                    f"{gripper.action}/move", self._move_types.action, self._on_goal("move"), self._on_cancel, False
+                ),
+                actionlib.ActionServer(
+                    f"{gripper.action}/grasp", self._grasp_types.action, self._on_goal("grasp"), self._on_cancel, False
+                ),
+            ]
+        else:
+            self._gripper_types = action_types("control_msgs/GripperCommand")
+            self._servers.append(
+                actionlib.ActionServer(
+                    gripper.action, self._gripper_types.action, self._on_goal("gripper"), self._on_cancel, False
+                )
+            )
+
+        self._cameras = _CameraPublisher(backend, config, Image, CameraInfo, labels_topic, self._stop)
+        self._next_camera = 0.0
+        self._publish_static_frames()
+        self.simulator.add_step_callback(self._on_tick)
+
+    # --- names ---
+
+    def _published_joints(self) -> list[tuple[str, str]]:
+        """(published name, model name) of every arm and gripper joint, the arm's first."""
+        model_names = list(self.backend.joint_states())
+        return [(self.config.driver_joint(name), name) for name in model_names]
+
+    # --- the action servers' threads ---
+
+    def _on_goal(self, kind: str):
+        def accept(handle) -> None:
+            self._jobs.put(_Job(kind, handle))
+
+        return accept
+
+    def _on_cancel(self, handle) -> None:
+        current = self._current
+        if current is not None and current.handle.get_goal_id().id == handle.get_goal_id().id:
+            current.cancelled.set()
+
+    # --- the simulation's thread ---
+
+    def start(self) -> None:
+        for server in self._servers:
+            server.start()
+        self._cameras.start()
+
+    def spin(self, until: float | None = None) -> None:
+        """Steps the simulation, running goals as they come, until ROS shuts down (or ``until`` simulated seconds)."""
+        self.start()
+        tick = self.simulator.model.opt.timestep * self.simulator.control_stride
+        while not self._rospy.is_shutdown() and not self._stop.is_set():
+            if until is not None and self.simulator.time >= until:
+                break
+            try:
+                job = self._jobs.get_nowait()
+            except queue.Empty:
+                self.simulator.step(tick)
+                continue
+            self._run(job)
+        self.close()
+
+    def close(self) -> None:
+        self._stop.set()
+        if self._on_tick in self.simulator._callbacks:
+            self.simulator.remove_step_callback(self._on_tick)
+
+    def _run(self, job: _Job) -> None:
+        self._current = job
+        try:
+            if job.kind == "trajectory":
+                self._run_trajectory(job)
+            elif job.kind == "gripper":
+                self._run_gripper_command(job)
+            else:
+                self._run_franka(job)
+        finally:
+            self._current = None
+
+    def _run_trajectory(self, job: _Job) -> None:
+        types, handle = self._trajectory_types, job.handle
+        goal = handle.get_goal().trajectory
+        result = types.result()
+        arm = self.config.arm_driver_joints()
+        if sorted(goal.joint_names) != sorted(arm) or not goal.points:
+            result.error_code = types.result.INVALID_JOINTS if goal.points else types.result.INVALID_GOAL
+            result.error_string = (
+                f"joints {list(goal.joint_names)} are not this controller's {arm}"
+                if goal.points
+                else "the trajectory has no points"
+            )
+            handle.set_rejected(result, result.error_string)
+            return
+        order = [list(goal.joint_names).index(name) for name in arm]
+        times = np.array([p.time_from_start.to_sec() for p in goal.points])
+        positions = np.array([[p.positions[i] for i in order] for p in goal.points])
+        velocities = np.array(
+            [[p.velocities[i] for i in order] if len(p.velocities) else np.zeros(len(arm)) for p in goal.points]
+        )
+        if times[0] > 0:  # the controller starts from where the arm is, as ros_control's does
+            current = self.simulator.joint_positions()
+            times = np.insert(times, 0, 0.0)
+            positions = np.vstack([current, positions])
+            velocities = np.vstack([np.zeros(len(arm)), velocities])
+        try:
+            trajectory = JointTrajectory(times, positions, velocities)
+        except ValueError as exc:
+            result.error_code = types.result.INVALID_GOAL
+            result.error_string = str(exc)
+            handle.set_rejected(result, str(exc))
+            return
+        handle.set_accepted()
+        self._trajectory_goal = (trajectory, arm, self.simulator.time)
+        try:
+            self.simulator.execute(trajectory, settle=0.0)
+        except _Preempted:
+            self.simulator.hold(self.simulator.joint_positions())
+            handle.set_canceled(result, "cancelled")
+            return
+        except ValueError as exc:  # the start or the joint limits: what a controller would refuse
+            self.simulator.hold(self.simulator.joint_positions())
+            result.error_code = types.result.INVALID_GOAL
+            result.error_string = str(exc)
+            handle.set_aborted(result, str(exc))
+            return
+        finally:
+            self._trajectory_goal = None
+        result.error_code = types.result.SUCCESSFUL
+        handle.set_succeeded(result)
+
+    def _closed_fraction(self, position: float) -> float:
+        gripper = self.config.gripper
+        span = gripper.closed_position - gripper.open_position
+        return float(np.clip((position - gripper.open_position) / span, 0.0, 1.0)) if span else 1.0
+
+    def _run_gripper_command(self, job: _Job) -> None:
+        types, handle = self._gripper_types, job.handle
+        closed = self._closed_fraction(handle.get_goal().command.position)
+        handle.set_accepted()
+        result = types.result()
+        try:
+            report = self.simulator.set_gripper(closed)
+        except _Preempted:
+            handle.set_canceled(result, "cancelled")
+            return
+        gripper = self.config.gripper
+        fraction = 1.0 - report.width / self.config.robot.gripper.max_width
+        result.position = gripper.open_position + fraction * (gripper.closed_position - gripper.open_position)
+        result.stalled, result.reached_goal = report.blocked, not report.blocked
+        handle.set_succeeded(result)
+
+    def _run_franka(self, job: _Job) -> None:
+        handle = job.handle
+        goal = handle.get_goal()
+        types = self._move_types if job.kind == "move" else self._grasp_types
+        handle.set_accepted()
+        result = types.result()
+        max_width = self.config.robot.gripper.max_width
+        closed = 1.0 if job.kind == "grasp" else float(np.clip(1.0 - goal.width / max_width, 0.0, 1.0))
+        try:
+            report = self.simulator.set_gripper(closed)
+        except _Preempted:
+            handle.set_canceled(result, "cancelled")
+            return
+        if job.kind == "grasp":
+            inner, outer = goal.epsilon.inner, goal.epsilon.outer
+            result.success = bool(goal.width - inner <= report.width <= goal.width + outer)
+            result.error = "" if result.success else f"grasped at {report.width:.4f} m, not {goal.width:.4f} m"
+        else:
+            result.success, result.error = True, ""
+        handle.set_succeeded(result)
+
+    # --- every control tick ---
+
+    def _on_tick(self, simulator) -> None:
+        now = simulator.time
+        if now >= self._next_state:
+            self._publish_state(now)
+            self._next_state = now + self.state_period
+        if now >= self._next_camera:
+            self._cameras.offer(simulator, now)
+            self._next_camera = now + self.camera_period
+        goal = getattr(self, "_trajectory_goal", None)
+        if goal is not None and now >= self._next_feedback:
+            self._publish_feedback(goal, now)
+            self._next_feedback = now + 1.0 / FEEDBACK_RATE
+        current = self._current
+        if current is not None and current.cancelled.is_set():
+            raise _Preempted()
+        ahead = (now - self._sim_start) / self.rtf - (time.monotonic() - self._wall_start)
+        if ahead > 0:
+            time.sleep(ahead)
+
+    def _stamp(self, now: float):
+        return self._rospy.Time.from_sec(now)
+
+    def _publish_state(self, now: float) -> None:
+        from rosgraph_msgs.msg import Clock
+        from sensor_msgs.msg import JointState
+
+        self._clock_pub.publish(Clock(clock=self._stamp(now)))
+        states = self.backend.joint_states()
+        message = JointState()
+        message.header.stamp = self._stamp(now)
+        message.name = [published for published, _ in self._joint_names]
+        message.position = [states[model] for _, model in self._joint_names]
+        self._state_pub.publish(message)
+
+    def _publish_feedback(self, goal, now: float) -> None:
+        from trajectory_msgs.msg import JointTrajectoryPoint
+
+        trajectory, arm, started = goal
+        feedback = self._trajectory_types.feedback()
+        feedback.header.stamp = self._stamp(now)
+        feedback.joint_names = arm
+        desired = trajectory.sample(now - started)[0]
+        actual = self.simulator.joint_positions()
+        feedback.desired = JointTrajectoryPoint(positions=list(desired))
+        feedback.actual = JointTrajectoryPoint(positions=list(actual))
+        feedback.error = JointTrajectoryPoint(positions=list(desired - actual))
+        current = self._current
+        if current is not None:
+            current.handle.publish_feedback(feedback)
+
+    def _publish_static_frames(self) -> None:
+        import rospy
+        from geometry_msgs.msg import TransformStamped
+        from tf2_msgs.msg import TFMessage
+
+        frames = {self.config.base_frame: self.backend.base_pose()}
+        world = self.backend.sim_world
+        for camera in self.backend.camera_names():
+            frames[OPTICAL_FRAME.format(camera=camera)] = camera_pose_opencv(world.model, world.data, camera)
+        message = TFMessage()
+        for child, pose in frames.items():
+            t = TransformStamped()
+            t.header.frame_id, t.child_frame_id = self.config.world_frame, child
+            t.header.stamp = self._stamp(self.simulator.time)
+            t.transform.translation.x, t.transform.translation.y, t.transform.translation.z = map(float, pose.position)
+            qx, qy, qz, qw = map(float, pose.quaternion)
+            t.transform.rotation.x, t.transform.rotation.y, t.transform.rotation.z, t.transform.rotation.w = (
+                qx,
+                qy,
+                qz,
+                qw,
+            )
+            message.transforms.append(t)
+        self._tf_static = rospy.Publisher("/tf_static", TFMessage, queue_size=1, latch=True)
+        self._tf_static.publish(message)
+
+
+class _CameraPublisher(threading.Thread):
+    """Renders and publishes the cameras from a copy of the simulation's state, in a thread of its own (a renderer's
+    GL context belongs to the thread that made it)."""
+
+    def __init__(self, backend: MujocoBackend, config: RobotConfig, image_type, info_type, labels_topic, stop):
+        import rospy
+        from std_msgs.msg import String
+
+        super().__init__(daemon=True, name="ros-sim cameras")
+        self.backend, self.config, self._stop = backend, config, stop
+        self._image, self._info = image_type, info_type
+        model = backend.sim_world.model
+        self._snapshot = mujoco.MjData(model)
+        self._lock = threading.Lock()
+        self._fresh = threading.Event()
+        self._stamp = 0.0
+        self._specs = {c.name: c for c in backend.sim_world.spec.cameras}
+        self._publishers = {}
+        for camera in config.cameras:
+            if camera.name not in self._specs:
+                continue  # the configuration names a camera this world lacks: it is simply not served
+            self._publishers[camera.name] = (
+                rospy.Publisher(camera.rgb, image_type, queue_size=2),
+                rospy.Publisher(camera.depth, image_type, queue_size=2),
+                rospy.Publisher(camera.info, info_type, queue_size=2),
+                rospy.Publisher(camera.segmentation, image_type, queue_size=2) if camera.segmentation else None,
+            )
+        labels = json.dumps({str(k): v for k, v in backend.segmentation_labels().items()})
+        self._labels = rospy.Publisher(config.segmentation_labels or labels_topic, String, queue_size=1, latch=True)
+        self._labels.publish(String(data=labels))
+
+    def _wanted(self) -> bool:
+        return any(p.get_num_connections() for pubs in self._publishers.values() for p in pubs if p is not None)
+
+    def offer(self, simulator, now: float) -> None:
+        """Called on the simulation's thread: takes a copy of the state to render, if anyone listens."""
+        if not self._publishers or self._fresh.is_set() or not self._wanted():
+            return
+        with self._lock:
+            mujoco.mj_copyData(self._snapshot, simulator.model, simulator.data)
+            self._stamp = now
+        self._fresh.set()
+
+    def run(self) -> None:
+        import rospy
+
+        world = self.backend.sim_world
+        renderers: dict[tuple[int, int], Renderer] = {}
+        while not self._stop.is_set() and not rospy.is_shutdown():
+            if not self._fresh.wait(timeout=0.1):
+                continue
+            with self._lock:
+                data = mujoco.MjData(world.model)
+                mujoco.mj_copyData(data, world.model, self._snapshot)
+                stamp = rospy.Time.from_sec(self._stamp)
+            self._fresh.clear()
+            for name, (rgb_pub, depth_pub, info_pub, seg_pub) in self._publishers.items():
+                spec = self._specs[name]
+                key = (spec.width, spec.height)
+                if key not in renderers:
+                    renderers[key] = Renderer(world.model, world.geom_entity, spec.width, spec.height)
+                frame = renderers[key].capture(data, name, spec, segmentation=seg_pub is not None)
+                frame_id = OPTICAL_FRAME.format(camera=name)
+                rgb_pub.publish(self._picture(frame.rgb, "rgb8", 3, stamp, frame_id))
+                depth_pub.publish(self._picture(frame.depth.astype(np.float32), "32FC1", 4, stamp, frame_id))
+                if seg_pub is not None:
+                    seg_pub.publish(self._picture(frame.segmentation.astype(np.int32), "32SC1", 4, stamp, frame_id))
+                info_pub.publish(self._camera_info(spec, stamp, frame_id))
+        for renderer in renderers.values():
+            renderer.close()
+
+    def _picture(self, array: np.ndarray, encoding: str, pixel_bytes: int, stamp, frame_id: str):
+        image = self._image()
+        image.header.stamp, image.header.frame_id = stamp, frame_id
+        image.height, image.width = array.shape[:2]
+        image.encoding, image.is_bigendian = encoding, 0
+        image.step = image.width * pixel_bytes
+        image.data = np.ascontiguousarray(array).tobytes()
+        return image
+
+    def _camera_info(self, spec, stamp, frame_id: str):
+        info = self._info()
+        info.header.stamp, info.header.frame_id = stamp, frame_id
+        info.height, info.width = spec.height, spec.width
+        k = pinhole_intrinsics(spec.fovy, spec.width, spec.height)
+        info.distortion_model = "plumb_bob"
+        info.D = [0.0] * 5
+        info.K = [float(v) for v in k.flatten()]
+        info.R = [1.0, 0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 1.0]
+        info.P = [k[0, 0], 0.0, k[0, 2], 0.0, 0.0, k[1, 1], k[1, 2], 0.0, 0.0, 0.0, 1.0, 0.0]
+        return info
+
+
+def serve(
+    world: str,
+    robot: str,
+    config: RobotConfig,
+    real_time_factor: float = 1.0,
+    camera_rate: float = 1.0,
+    seed: int = 0,
+    randomize: bool = False,
+    node_name: str = "roboscript_sim",
+) -> None:
+    """Runs ``roboscript ros-sim``: the world served as a ROS robot until ROS shuts down or the process is killed."""
+    import rospy
+
+    rospy.set_param("/use_sim_time", True)  # before any node of ours reads it: clients follow /clock
+    rospy.init_node(node_name, disable_signals=False)
+    with MujocoBackend(world, robot=robot, seed=seed, randomize=randomize) as backend:
+        server = RosSimServer(backend, config, real_time_factor=real_time_factor, camera_rate=camera_rate)
+        rospy.loginfo("ros-sim: %s with the %s served as %s", world, robot, config.name)
+        print(f"ros-sim: serving {world} ({robot}) as {config.name}; Ctrl-C stops", flush=True)
+        server.spin()

@@ -1,0 +1,251 @@
+"""The ROS backend against `roboscript ros-sim`: a real rosmaster on a loopback port, the simulation served as a
+ROS robot in a subprocess, and the backend in this process, as it would drive a real arm. Nothing in the backend
+knows it talks to a simulation: it reads joint states, sends FollowJointTrajectory goals, commands the gripper and
+reads camera topics and TF.
+
+Fault tests: a trajectory that would leave the workspace is refused before anything moves; a goal the server rejects;
+Ctrl-C during a motion cancels the goal; a robot that stops publishing (paused, then killed) mid-trajectory ends the
+motion with an error saying what was lost. (How fast each error comes is printed, not asserted.)
+"""
+
+from __future__ import annotations
+
+import _thread
+import os
+import signal
+import socket
+import subprocess
+import sys
+import threading
+import time
+
+import numpy as np
+import pytest
+
+pytest.importorskip("rospy", reason="ROS 1 is not installed here (scripts/setup.sh installs it on Debian)")
+
+from roboscript.backends.driven import MotionRefused
+from roboscript.backends.ros import ros_backend
+from roboscript.drivers.base import DriverError
+from roboscript.sim.world_catalog import load_world
+from roboscript.trajectory import JointTrajectory, min_jerk_through
+
+WORLD = "world_2_pick_and_place"
+REAL_TIME_FACTOR = 2.0
+
+
+def _free_port() -> int:
+    with socket.socket() as s:
+        s.bind(("127.0.0.1", 0))
+        return s.getsockname()[1]
+
+
+@pytest.fixture(scope="module")
+def ros_master(tmp_path_factory):
+    """A rosmaster on a free loopback port; this process's ROS node (started once) stays on the first one."""
+    uri = os.environ.get("ROBOSCRIPT_TEST_ROS_MASTER")
+    process = None
+    if uri is None:
+        port = _free_port()
+        uri = f"http://127.0.0.1:{port}"
+        env = {**os.environ, "ROS_HOME": str(tmp_path_factory.mktemp("ros_home"))}
+        process = subprocess.Popen(
+            ["rosmaster", "--core", "-p", str(port)], env=env, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL
+        )
+        os.environ["ROBOSCRIPT_TEST_ROS_MASTER"] = uri
+    os.environ.update(ROS_MASTER_URI=uri, ROS_IP="127.0.0.1", ROS_HOME=str(tmp_path_factory.mktemp("ros_node")))
+    import rosgraph
+
+    deadline = time.monotonic() + 20
+    while not rosgraph.Master("/roboscript_test").is_online():
+        assert time.monotonic() < deadline, "rosmaster did not come up"
+        time.sleep(0.1)
+    yield uri
+    if process is not None:
+        process.terminate()
+        process.wait(timeout=10)
+        del os.environ["ROBOSCRIPT_TEST_ROS_MASTER"]
+
+
+class RosSim:
+    """`roboscript ros-sim` in a subprocess."""
+
+    def __init__(self, robot: str, world: str = WORLD):
+        command = [sys.executable, "-m", "roboscript.cli", "ros-sim", world, "--robot", robot]
+        command += ["--real-time-factor", str(REAL_TIME_FACTOR)]
+        self.process = subprocess.Popen(command, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
+        self.output: list[str] = []
+        ready = threading.Event()
+
+        def read() -> None:
+            for line in self.process.stdout:
+                self.output.append(line)
+                if "serving" in line:
+                    ready.set()
+
+        threading.Thread(target=read, daemon=True).start()
+        if not ready.wait(timeout=120):
+            self.stop()
+            raise AssertionError("ros-sim did not start:\n" + "".join(self.output))
+
+    def stop(self) -> None:
+        if self.process.poll() is None:
+            self.process.terminate()
+            try:
+                self.process.wait(timeout=10)
+            except subprocess.TimeoutExpired:
+                self.process.kill()
+
+
+@pytest.fixture(scope="module")
+def panda(ros_master):
+    sim = RosSim("panda")
+    backend = ros_backend("panda_franka_ros")
+    yield backend, sim
+    backend.close()
+    sim.stop()
+
+
+def _move(backend, delta: np.ndarray, speed_scale: float = 0.25) -> JointTrajectory:
+    start = backend.joint_positions()
+    robot = backend.robot
+    return min_jerk_through(
+        np.array([start, start + delta]), np.array(robot.max_velocity), np.array(robot.max_acceleration), speed_scale
+    )
+
+
+def test_the_backend_reads_the_served_robot_as_it_would_a_real_one(panda):
+    backend, _ = panda
+    home = np.array(backend.robot.home)
+    assert np.allclose(backend.joint_positions(), home, atol=0.02)
+    states = backend.joint_states()
+    assert {"joint1", "finger_joint1", "finger_joint2"} <= set(states)  # franka_ros's names mapped to the model's
+    assert np.allclose(backend.base_pose().position, [-0.45, 0.0, load_world(WORLD).table.height])  # from TF
+    assert 0.075 < backend.gripper_width() < 0.085
+    labels = backend.segmentation_labels()
+    assert {"apple", "footed_bowl", "robot"} <= set(labels.values())
+    frame = backend.capture("camera_left")
+    assert frame.rgb.shape == (480, 640, 3) and frame.depth.dtype == np.float32
+    apple = next(i for i, name in labels.items() if name == "apple")
+    assert np.count_nonzero(frame.segmentation == apple) > 100  # the apple is in view, labelled
+    assert np.allclose(frame.extrinsics.position, [0.55, 0.85, 1.55], atol=1e-3)  # the rig's pose, from TF
+    assert np.allclose(frame.intrinsics[0, 2], 320.0)
+
+
+def test_a_trajectory_and_the_gripper_run_through_their_actions(panda):
+    backend, _ = panda
+    delta = np.zeros(7)
+    delta[0], delta[3] = 0.3, 0.2
+    target = backend.joint_positions() + delta
+    report = backend.execute_trajectory(_move(backend, delta))
+    assert np.allclose(backend.joint_positions(), target, atol=0.01)
+    assert report.final_joint_error < 0.01 and report.max_joint_error < 0.05
+    closed = backend.set_gripper(1.0)
+    assert closed.width < 0.002 and not closed.blocked  # nothing between the fingers
+    opened = backend.set_gripper(0.0)
+    assert opened.width > 0.075
+    backend.execute_trajectory(_move(backend, -delta))
+
+
+def test_a_faster_trajectory_than_the_speed_scale_is_slowed_down(panda):
+    backend, _ = panda
+    delta = np.zeros(7)
+    delta[0] = 0.2
+    fast = _move(backend, delta, speed_scale=1.0)
+    sent = backend.check_trajectory(fast)
+    limit = np.array(backend.robot.max_velocity) * backend.config.speed_scale
+    assert sent.duration > fast.duration and np.all(np.abs(sent.velocities) <= limit + 1e-9)
+    backend.execute_trajectory(fast)
+    backend.execute_trajectory(_move(backend, -delta))
+
+
+def test_a_trajectory_that_would_leave_the_workspace_is_refused_before_anything_moves(panda):
+    backend, _ = panda
+    before = backend.joint_positions()
+    down = np.zeros(7)
+    down[1], down[3] = 2.0, 0.6  # shoulder and elbow fold the hand down through the table (TCP at z 0.70)
+    with pytest.raises(MotionRefused, match=r"TCP to z=.* below the table's top at 0\.82 m|leave the workspace"):
+        backend.execute_trajectory(_move(backend, down))
+    time.sleep(0.3)
+    assert np.allclose(backend.joint_positions(), before, atol=1e-3)
+
+
+def test_a_goal_the_controller_rejects_is_reported_with_its_reason(panda):
+    backend, _ = panda
+    trajectory = _move(backend, np.zeros(7) + 0.01)
+    goal = backend.driver.send_trajectory([f"not_a_joint_{i}" for i in range(7)], trajectory)
+    deadline = time.monotonic() + 10
+    while not goal.status().done:
+        assert time.monotonic() < deadline
+        time.sleep(0.02)
+    status = goal.status()
+    assert status.state == "rejected" and "are not this controller's" in status.detail
+
+
+def test_ctrl_c_during_a_motion_cancels_the_goal_and_the_arm_stops(panda):
+    backend, _ = panda
+    delta = np.zeros(7)
+    delta[0] = 1.0
+    trajectory = _move(backend, delta)
+    start = backend.joint_positions()
+    threading.Timer(0.4, _thread.interrupt_main).start()
+    with pytest.raises(KeyboardInterrupt):
+        backend.execute_trajectory(trajectory)
+    backend.wait(0.3)  # the arm brakes to a stop where the controller heard the cancel
+    stopped = backend.joint_positions()
+    backend.wait(0.5)
+    assert np.allclose(backend.joint_positions(), stopped, atol=0.005)  # held there, not going on
+    assert 0.02 < stopped[0] - start[0] < 0.5  # it had moved, and stopped far short of its 1 rad
+    back = min_jerk_through(
+        np.array([stopped, start]), np.array(backend.robot.max_velocity), np.array(backend.robot.max_acceleration), 0.25
+    )
+    backend.execute_trajectory(back)
+
+
+def test_a_robot_that_stops_publishing_mid_trajectory_ends_the_motion_with_what_was_lost(panda):
+    backend, sim = panda
+    delta = np.zeros(7)
+    delta[0] = 1.0
+    timer = threading.Timer(0.4, lambda: os.kill(sim.process.pid, signal.SIGSTOP))
+    timer.start()
+    started = time.monotonic()
+    try:
+        with pytest.raises(DriverError, match="joint states are stale: the last one on /joint_states arrived"):
+            backend.execute_trajectory(_move(backend, delta))
+        print(f"paused robot: error after {time.monotonic() - started - 0.4:.2f} s")
+    finally:
+        os.kill(sim.process.pid, signal.SIGCONT)
+    time.sleep(0.5)  # it runs again: the arm comes to rest where the cancelled goal left it
+    backend.wait(0.2)
+    timer = threading.Timer(0.4, lambda: os.kill(sim.process.pid, signal.SIGKILL))
+    timer.start()
+    started = time.monotonic()
+    with pytest.raises(DriverError, match="joint states are stale: the last one on /joint_states arrived"):
+        backend.execute_trajectory(_move(backend, -delta))
+    print(f"killed robot: error after {time.monotonic() - started - 0.4:.2f} s")
+    sim.process.wait(timeout=10)
+
+
+def test_the_ur5e_and_its_robotiq_gripper_through_ur_robot_drivers_names(ros_master):
+    sim = RosSim("ur5e")
+    try:
+        with ros_backend("ur5e_ur_robot_driver") as backend:
+            assert "gripper/right_driver_joint" in backend.joint_states()  # served as finger_joint
+            assert abs(backend.gripper_width() - 0.085) < 0.004
+            closed = backend.set_gripper(1.0)
+            assert closed.width < 0.006 and not closed.blocked  # the driver joint's angle read as an opening
+            assert backend.set_gripper(0.0).width > 0.08
+            delta = np.zeros(6)
+            delta[0] = 0.3
+            target = backend.joint_positions() + delta
+            backend.execute_trajectory(_move(backend, delta))
+            assert np.allclose(backend.joint_positions(), target, atol=0.01)
+    finally:
+        sim.stop()
+
+
+def test_no_robot_on_the_master_is_a_clear_error(ros_master):
+    started = time.monotonic()
+    with pytest.raises(DriverError, match=r"no action server at /position_joint_trajectory_controller/follow_joint_"):
+        ros_backend("panda_franka_ros")
+    print(f"no robot: error after {time.monotonic() - started:.2f} s")
