@@ -24,9 +24,12 @@ import pytest
 
 pytest.importorskip("rospy", reason="ROS 1 is not installed here (scripts/setup.sh installs it on Debian)")
 
+from roboscript.assembly import build_tools
 from roboscript.backends.driven import MotionRefused
 from roboscript.backends.ros import ros_backend
+from roboscript.bench.tasks import get_task
 from roboscript.drivers.base import DriverError
+from roboscript.perception.modes import perception_mode
 from roboscript.sim.world_catalog import load_world
 from roboscript.trajectory import JointTrajectory, min_jerk_through
 
@@ -145,6 +148,20 @@ def test_a_trajectory_and_the_gripper_run_through_their_actions(panda):
     opened = backend.set_gripper(0.0)
     assert opened.width > 0.075
     backend.execute_trajectory(_move(backend, -delta))
+
+
+def test_a_program_picks_and_places_through_the_tool_api_over_ros(panda):
+    """simple_0's reference program, its 2D boxes from the robot's segmentation topic, the furniture's labels from
+    the world's description, everything else from the cameras: nothing from the simulator's state."""
+    backend, _ = panda
+    tools = build_tools(backend, perception_mode("full", "segmentation"), seed=0, scene=load_world(WORLD))
+    exec(get_task("simple_0").reference_program(), tools.namespace())
+    tools.detect_objects(["apple", "footed_bowl"])  # look again, as the robot sees it now
+    apple = tools.get_object_center_position("apple")
+    bowl = tools.get_3d_bbox("footed_bowl")
+    assert np.all(apple[:2] > bowl[:2]) and np.all(apple[:2] < bowl[3:5]), (apple, bowl)
+    assert bowl[2] < apple[2] < bowl[5] + 0.05
+    assert backend.gripper_width() > 0.07  # let go
 
 
 def test_a_faster_trajectory_than_the_speed_scale_is_slowed_down(panda):

@@ -13,31 +13,37 @@ from roboscript.backends.base import Backend, BackendError
 from roboscript.perception.base import Perception
 from roboscript.perception.modes import GROUND_TRUTH, PerceptionMode, perception_mode
 from roboscript.planning.motion import MotionPlanner
+from roboscript.sim.world_file import WorldSpec
 
 SCENE_PADDING = 0.005  # metres: contacts closer than this count as collisions in the planning scene
 
 
-def build_tools(backend: Backend, perception: PerceptionMode | str = GROUND_TRUTH, seed: int = 0) -> ToolAPI:
+def build_tools(
+    backend: Backend, perception: PerceptionMode | str = GROUND_TRUTH, seed: int = 0, scene: WorldSpec | None = None
+) -> ToolAPI:
     """The tools on ``backend``, with perception and the planning scene as the mode ``perception`` says (ground
-    truth by default; a string is parsed with :func:`~roboscript.perception.modes.perception_mode`)."""
+    truth by default; a string is parsed with :func:`~roboscript.perception.modes.perception_mode`).
+
+    On a robot (no ground truth), ``scene`` describes what the cameras will see: the objects to look for and the
+    furniture's parts (which handle moves which drawer); without it, the objects are those the segmentation labels
+    name and no furniture is known."""
     mode = perception_mode(perception)
     _check_truth(backend, mode)
-    seen = build_perception(backend, mode, seed)
+    seen = build_perception(backend, mode, seed, scene)
     motion = build_motion(backend, seen, mode, seed)
     return ToolAPI(backend, seen, motion, seed)
 
 
-def build_perception(backend: Backend, mode: PerceptionMode | str = GROUND_TRUTH, seed: int = 0) -> Perception:
-    """The perception ``mode`` asks for on ``backend``."""
+def build_perception(
+    backend: Backend, mode: PerceptionMode | str = GROUND_TRUTH, seed: int = 0, scene: WorldSpec | None = None
+) -> Perception:
+    """The perception ``mode`` asks for on ``backend`` (``scene``: see :func:`build_tools`)."""
     from roboscript.perception.ground_truth import GroundTruthPerception
 
     mode = perception_mode(mode)
     _check_truth(backend, mode)
     if backend.ground_truth is None:
-        raise BackendError(
-            f"perception {mode} on {type(backend).__name__}: perception from a robot's own cameras needs the labels of "
-            "its furniture (what parts there are, what each handle moves), which only a simulation gives yet"
-        )
+        return _perception_from_sensors(backend, mode, seed, scene)
     truth = GroundTruthPerception(backend)
     if not mode.observed_objects:
         # One look before anything moves, as a tracker that has watched the scene from the start would have had: a
@@ -80,6 +86,43 @@ def perceived_motion(
     source = PerceivedSceneSource(perception, description, mount, backend.joint_states, padding, _robot_label(backend))
     # The scene is built at the first motion: by then the program has said what to look for.
     return MotionPlanner(backend, None, ArmKinematics(description, mount), source.state, scene_source=source, **kwargs)
+
+
+def _perception_from_sensors(backend: Backend, mode: PerceptionMode, seed: int, scene: WorldSpec | None) -> Perception:
+    """The camera pipeline on a backend without ground truth: boxes from its segmentation node or a detector,
+    labels of furniture from the scene's description."""
+    from roboscript.perception.grounding import SegmentationGrounder
+    from roboscript.perception.labels import FurnitureLabels, segment_labels
+    from roboscript.perception.modes import SEGMENTATION
+    from roboscript.perception.pipeline import PipelinePerception
+
+    labels = furniture_labels(scene) if scene is not None else FurnitureLabels()
+    if mode.detector is not None and mode.detector.kind == SEGMENTATION:
+        segments = segment_labels(backend.segmentation_labels(), labels.furniture())
+        if not segments:
+            raise BackendError(
+                f"{type(backend).__name__} publishes no segmentation labels: configure the segmentation topics and "
+                "the labels' topic, or give a detector (owlv2:DIR or grounding-dino:DIR)"
+            )
+        grounder = SegmentationGrounder(segments, seed=seed)
+        named = [s.name for s in segments if s.kind == "object"]
+    else:
+        grounder, named = _detector(mode), []
+    vocabulary = scene.object_names() if scene is not None else named
+    return PipelinePerception(backend, grounder, vocabulary, labels, robot_index=_robot_label(backend))
+
+
+def furniture_labels(scene: WorldSpec):
+    """The furniture of a world's description as labels: each cabinet, its drawers and doors and their handles."""
+    from roboscript.perception.labels import FurnitureLabels, PartLabel
+
+    parts = []
+    for cabinet in scene.cabinets:
+        names = cabinet.part_names()  # each row's drawer or door, then its handle
+        for moving, handle in zip(names[0::2], names[1::2], strict=True):
+            joint = "prismatic" if ".drawer_" in moving else "revolute"
+            parts.append(PartLabel(moving, joint, handle))
+    return FurnitureLabels([c.name for c in scene.cabinets], parts)
 
 
 def _robot_label(backend: Backend) -> int | None:

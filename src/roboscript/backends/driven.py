@@ -2,9 +2,10 @@
 
 Before a trajectory is sent it is checked against the joint limits, the configuration's speed scale (a faster one is
 slowed down, never sent as it is), the workspace box (every link) and the table's height (the TCP). While it runs,
-the joint states are watched: the goal is cancelled when a joint lags its set-point by more than the tracking
-tolerance, when joint states stop arriving, when the controller does not finish in time, and on Ctrl-C; each ends in
-an error that says what happened, within the configuration's timeouts.
+the joint states and the controller's feedback are watched: the goal is cancelled when a joint lags its set-point
+(as the controller reports both, in step) by more than the tracking tolerance, when joint states stop arriving,
+when the controller does not finish in time, and on Ctrl-C; each ends in an error that says what happened, within
+the configuration's timeouts.
 """
 
 from __future__ import annotations
@@ -58,6 +59,7 @@ class DriverBackend(Backend):
         self._model_names = {driver: model for model, driver in config.joint_names.items()}
         self._arm = config.arm_driver_joints()
         self._wait_for_first_state()
+        self._still_since = driver.now()  # robot clock: since when nothing we commanded has moved
 
     # --- state ---
 
@@ -176,22 +178,21 @@ class DriverBackend(Backend):
                 status = goal.status()
                 if status.done:
                     break
-                reading = self._fresh_state_or_stop(goal)
+                self._fresh_state_or_stop(goal)
                 elapsed = self.driver.now() - started
-                measured = np.array([reading.positions[j] for j in self._arm])
-                wanted = trajectory.sample(elapsed)[0]
-                lag = np.abs(measured - wanted)
-                joint_errors.append(float(np.max(lag)))
-                tcp_errors.append(
-                    float(np.linalg.norm(self._model.tcp(measured).position - self._model.tcp(wanted).position))
-                )
-                if joint_errors[-1] > self.config.tracking_tolerance:
-                    joint = self.config.robot.arm_joints[int(np.argmax(lag))]
-                    self._stop(goal)
-                    raise BackendError(
-                        f"tracking lost: {joint} is {joint_errors[-1]:.3f} rad from its set-point at t={elapsed:.2f} s "
-                        f"(tolerance {self.config.tracking_tolerance} rad); the goal was cancelled and the arm stopped"
-                    )
+                sample = goal.tracking()  # the controller's own set-point and measurement, in step with each other
+                if sample is not None:
+                    lag = np.abs(sample.actual - sample.desired)
+                    joint_errors.append(float(np.max(lag)))
+                    tcp_errors.append(self._tcp_distance(sample.actual, sample.desired))
+                    if joint_errors[-1] > self.config.tracking_tolerance:
+                        joint = self.config.robot.arm_joints[int(np.argmax(lag))]
+                        self._stop(goal)
+                        raise BackendError(
+                            f"tracking lost: {joint} is {joint_errors[-1]:.3f} rad from its set-point at "
+                            f"t={elapsed:.2f} s (tolerance {self.config.tracking_tolerance} rad); the goal was "
+                            "cancelled and the arm stopped"
+                        )
                 if elapsed > deadline:
                     self._stop(goal)
                     raise BackendError(
@@ -208,6 +209,7 @@ class DriverBackend(Backend):
                 f"the controller at {self.config.trajectory_action} {status.state} the trajectory"
                 + (f": {status.detail}" if status.detail else "")
             )
+        self._still_since = self.driver.now()
         final = self.joint_positions()
         end = trajectory.positions[-1]
         return ExecutionReport(
@@ -215,8 +217,11 @@ class DriverBackend(Backend):
             max_joint_error=max(joint_errors, default=0.0),
             max_tcp_error=max(tcp_errors, default=0.0),
             final_joint_error=float(np.max(np.abs(final - end))),
-            final_tcp_error=float(np.linalg.norm(self._model.tcp(final).position - self._model.tcp(end).position)),
+            final_tcp_error=self._tcp_distance(final, end),
         )
+
+    def _tcp_distance(self, a: np.ndarray, b: np.ndarray) -> float:
+        return float(np.linalg.norm(self._model.tcp(a).position - self._model.tcp(b).position))
 
     def _fresh_state_or_stop(self, goal) -> JointStateReading:
         try:
@@ -242,6 +247,7 @@ class DriverBackend(Backend):
         started = self.driver.now()
         result = self.driver.command_gripper(position, closing=closed > 0.5, timeout=self.config.server_timeout + 3.0)
         self.wait(GRIPPER_SETTLE)
+        self._still_since = self.driver.now()
         width = self.gripper_width()
         blocked = result.stalled if result.stalled is not None else closed > 0.5 and width > EMPTY_GRIP
         return GripperReport(width, closed, blocked, self.driver.now() - started)
@@ -261,7 +267,8 @@ class DriverBackend(Backend):
     def capture(self, camera: str) -> CameraFrame:
         if camera not in self.camera_names():
             raise BackendError(f"no camera named {camera!r}; cameras: {', '.join(self.camera_names()) or 'none'}")
-        return self.driver.camera_frame(camera, timeout=self.config.server_timeout)
+        # A frame from before the last motion ended would show the world as it was.
+        return self.driver.camera_frame(camera, self.config.server_timeout + 2.0, self._still_since)
 
     def segmentation_labels(self) -> dict[int, str]:
         return self.driver.segmentation_labels()

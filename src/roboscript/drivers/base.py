@@ -10,6 +10,8 @@ from __future__ import annotations
 from abc import ABC, abstractmethod
 from dataclasses import dataclass
 
+import numpy as np
+
 from roboscript.errors import FailureError
 from roboscript.robot_io import CameraFrame
 from roboscript.trajectory import JointTrajectory
@@ -42,8 +44,20 @@ class GoalStatus:
         return self.state != "active"
 
 
+@dataclass(frozen=True)
+class TrackingSample:
+    """The controller's own account of how it tracks: set-point and measured positions, in the order sent."""
+
+    desired: np.ndarray
+    actual: np.ndarray
+
+
 class TrajectoryGoal(ABC):
     """A trajectory sent to the robot's controller."""
+
+    def tracking(self) -> TrackingSample | None:
+        """The controller's latest feedback, None before any (or from a controller that gives none)."""
+        return None
 
     @abstractmethod
     def status(self) -> GoalStatus:
@@ -90,8 +104,9 @@ class Driver(ABC):
         """The cameras the driver reads."""
 
     @abstractmethod
-    def camera_frame(self, camera: str, timeout: float) -> CameraFrame:
-        """The next complete RGB-D frame of ``camera`` with its calibration and pose in the world frame."""
+    def camera_frame(self, camera: str, timeout: float, not_before: float) -> CameraFrame:
+        """A complete RGB-D frame of ``camera`` taken at ``not_before`` (robot clock) or later, with its calibration
+        and its pose in the world frame."""
 
     def segmentation_labels(self) -> dict[int, str]:
         """What the segmentation images' labels stand for; empty without segmentation."""

@@ -28,6 +28,7 @@ PERCEPTION_MODES = {
     "gt-scene": "as full, with the ground-truth planning scene (the simulator's geometry)",
 }
 DETECTOR_ENV = "ROBOSCRIPT_DETECTOR"
+SEGMENTATION = "segmentation"  # the 2D boxes of a segmentation node's labelled images, on a robot that has one
 ALIASES = {"det-2d": "gt-scene"}  # the earlier name of detector boxes with the exact planning scene, for old runs
 
 
@@ -113,11 +114,14 @@ def parse_detector(spec: str, mode: str = "full") -> DetectorSpec:
     """The detector ``spec`` (``KIND:DIR``) names, checked, not loaded; ``mode`` is named in the error."""
     from roboscript.perception.detectors import DETECTOR_KINDS, DetectorError, check_model_dir
 
+    if spec == SEGMENTATION:
+        return DetectorSpec(SEGMENTATION, "")
     kind, sep, path = spec.partition(":")
     if not sep or not path:
         raise DetectorError(
             f"perception {mode} needs a detector: pass --detector KIND:DIR or set {DETECTOR_ENV}=KIND:DIR with KIND "
-            f"one of {', '.join(DETECTOR_KINDS)} and DIR a model saved with save_pretrained (got {spec!r}), or take "
+            f"one of {', '.join(DETECTOR_KINDS)} and DIR a model saved with save_pretrained, or {SEGMENTATION} for a "
+            f"robot's segmentation topic (got {spec!r}), or take "
             f"the 2D boxes from ground truth with {_with_truth_2d(mode)}"
         )
     return DetectorSpec(kind, check_model_dir(kind, path))

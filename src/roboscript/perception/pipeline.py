@@ -47,6 +47,7 @@ from roboscript.perception.footprints import footprint_of
 from roboscript.perception.fusion import FusionSettings
 from roboscript.perception.grounding import Grounder, normalize_phrase
 from roboscript.perception.instances import Instance3D, fit_box, footprint_points, object_box, table_surface
+from roboscript.perception.labels import PartLabels
 from roboscript.perception.observation import Observation, observe
 from roboscript.perception.points import robot_masks, surface_points
 
@@ -105,7 +106,7 @@ class PipelinePerception(Perception):
         backend: Backend,
         grounder: Grounder,
         vocabulary: Sequence[str],
-        parts: Perception,
+        parts: PartLabels,
         robot_index: int | None = None,
         settings: FusionSettings | None = None,
     ):
@@ -458,7 +459,7 @@ def shows_in_pieces(name: str) -> bool:
     return kind_of(name) != "handle"
 
 
-def _labelled_part(parts: Perception, handle: str) -> str | None:
+def _labelled_part(parts: PartLabels, handle: str) -> str | None:
     """The part a handle moves, as the labels say (which handle is on which drawer)."""
     joints = parts.joints(handle)
     return joints[0].part if joints else None

@@ -13,7 +13,15 @@ import time
 
 import numpy as np
 
-from roboscript.drivers.base import Driver, DriverError, GoalStatus, GripperResult, JointStateReading, TrajectoryGoal
+from roboscript.drivers.base import (
+    Driver,
+    DriverError,
+    GoalStatus,
+    GripperResult,
+    JointStateReading,
+    TrackingSample,
+    TrajectoryGoal,
+)
 from roboscript.geometry import Transform
 from roboscript.robot_config import RobotConfig
 from roboscript.robot_io import CameraFrame
@@ -53,6 +61,13 @@ def start_node(name: str = "roboscript") -> None:
 class _Goal(TrajectoryGoal):
     def __init__(self, client, action: str):
         self._client, self._action = client, action
+        self._tracking: TrackingSample | None = None
+
+    def on_feedback(self, feedback) -> None:
+        self._tracking = TrackingSample(np.array(feedback.desired.positions), np.array(feedback.actual.positions))
+
+    def tracking(self) -> TrackingSample | None:
+        return self._tracking
 
     def status(self) -> GoalStatus:
         return _goal_status(self._client)
@@ -165,8 +180,9 @@ class RosDriver(Driver):
             for t, q, v in zip(trajectory.times, trajectory.positions, trajectory.velocities, strict=True)
         ]
         self._wait_for(self._trajectory, self.config.trajectory_action, self.config.server_timeout)
-        self._trajectory.send_goal(goal)
-        return _Goal(self._trajectory, self.config.trajectory_action)
+        handle = _Goal(self._trajectory, self.config.trajectory_action)
+        self._trajectory.send_goal(goal, feedback_cb=handle.on_feedback)
+        return handle
 
     def command_gripper(self, position: float, closing: bool, timeout: float) -> GripperResult:
         gripper = self.config.gripper
@@ -202,17 +218,16 @@ class RosDriver(Driver):
     def camera_names(self) -> list[str]:
         return [c.name for c in self.config.cameras]
 
-    def camera_frame(self, camera: str, timeout: float) -> CameraFrame:
+    def camera_frame(self, camera: str, timeout: float, not_before: float) -> CameraFrame:
         config = next(c for c in self.config.cameras if c.name == camera)
         parts = ["rgb", "depth", "info"] + (["segmentation"] if config.segmentation else [])
-        asked = self._rospy.get_time()
         deadline = time.monotonic() + timeout
         while True:
             with self._lock:
                 messages = {p: self._images.get((camera, p)) for p in parts}
             ready = all(m is not None for m in messages.values())
             stamps = {m.header.stamp.to_sec() for m in messages.values()} if ready else set()
-            if ready and len(stamps) == 1 and stamps.pop() >= asked:
+            if ready and len(stamps) == 1 and stamps.pop() >= not_before:
                 break
             if time.monotonic() > deadline:
                 missing = [p for p, m in messages.items() if m is None]
@@ -251,8 +266,14 @@ class RosDriver(Driver):
         )
 
     def segmentation_labels(self) -> dict[int, str]:
-        with self._lock:
-            return dict(self._labels)
+        """The labels' latched message, waited for (up to the server timeout) where cameras publish segmentation."""
+        deadline = time.monotonic() + self.config.server_timeout
+        wanted = any(c.segmentation for c in self.config.cameras)
+        while True:
+            with self._lock:
+                if self._labels or not wanted or time.monotonic() > deadline:
+                    return dict(self._labels)
+            time.sleep(0.01)
 
     def close(self) -> None:
         for subscriber in self._subscribers:
