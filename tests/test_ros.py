@@ -11,6 +11,7 @@ motion with an error saying what was lost. (How fast each error comes is printed
 from __future__ import annotations
 
 import _thread
+import json
 import os
 import signal
 import socket
@@ -241,6 +242,25 @@ def test_a_robot_that_stops_publishing_mid_trajectory_ends_the_motion_with_what_
         backend.execute_trajectory(_move(backend, -delta))
     print(f"killed robot: error after {time.monotonic() - started - 0.4:.2f} s")
     sim.process.wait(timeout=10)
+
+
+def test_a_drawer_is_opened_by_its_handle_and_a_mug_put_in_it_through_exec_on_ros(tmp_path):
+    """The benchmark's trial through ROS: its own master, ros-sim serving moderate_2's world, the reference program
+    on the ROS backend, and the check evaluated by the twin on its own state."""
+    program = tmp_path / "moderate_2.py"
+    program.write_text(get_task("moderate_2").reference_program())
+    command = [sys.executable, "-m", "roboscript.cli", "exec", str(program), "--task", "moderate_2"]
+    run = subprocess.run(
+        [*command, "--backend", "ros", "--trials", "1", "--json"], capture_output=True, text=True, timeout=900
+    )
+    assert run.returncode == 0, run.stderr[-3000:]
+    result = json.loads(run.stdout.strip().splitlines()[-1])
+    (trial,) = result["per_trial"]
+    assert trial["outcome"] == "ok", trial
+    assert trial["checks"] == [
+        {"check": "in(white_and_yellow_mug, cabinet.drawer_1)", "passed": True, "detail": trial["checks"][0]["detail"]}
+    ]
+    print(f"moderate_2 through ROS: {trial['wall_time_s']:.1f} s of wall time")
 
 
 def test_the_ur5e_and_its_robotiq_gripper_through_ur_robot_drivers_names(ros_master):

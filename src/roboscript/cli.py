@@ -81,7 +81,12 @@ def cmd_ros_sim(args: argparse.Namespace) -> int:
         from roboscript.ros.sim_server import serve
     except ImportError as exc:
         raise ValueError(f"ros-sim needs ROS 1 (rospy, actionlib): see the README's ROS section ({exc})") from None
-    serve(args.world, robot, config, args.real_time_factor, args.camera_rate, args.seed, args.randomize)
+    task = None
+    if args.task:
+        from roboscript.bench.tasks import get_task
+
+        task = get_task(args.task, args.suite)
+    serve(args.world, robot, config, args.real_time_factor, args.camera_rate, args.seed, args.randomize, task=task)
     return 0
 
 
@@ -145,6 +150,8 @@ def cmd_exec(args: argparse.Namespace) -> int:
         args.video,
         perception=args.perception,
         suite=args.suite,
+        backend=args.backend,
+        robot_config=args.robot_config,
     )
     records = run_isolated(specs, args.jobs, None if args.json else progress_printer(len(specs)))
     result = task_result(args.task, args.robot, records)
@@ -163,7 +170,9 @@ def cmd_bench(args: argparse.Namespace) -> int:
 
     if args.repair and not args.policy.startswith("llm:"):
         raise ValueError("--repair needs an LLM policy (--policy llm:SPEC)")
-    out = args.out or default_out(run_label(args.policy, args.repair), args.robot, args.perception, args.suite)
+    out = args.out or default_out(
+        run_label(args.policy, args.repair), args.robot, args.perception, args.suite, args.backend
+    )
     result = run_benchmark(
         args.policy,
         tasks,
@@ -177,6 +186,8 @@ def cmd_bench(args: argparse.Namespace) -> int:
         repair_rounds=args.repair,
         perception=args.perception,
         suite=args.suite,
+        backend=args.backend,
+        robot_config=args.robot_config,
     )
     if args.json:
         print(json.dumps({"tasks": result["tasks"], "wall_time_s": result["wall_time_s"]}))
@@ -214,6 +225,8 @@ def cmd_run(args: argparse.Namespace) -> int:
         world=args.world,
         perception=args.perception,
         suite=args.suite,
+        backend=args.backend,
+        robot_config=args.robot_config,
     )
     records = run_isolated(specs, args.jobs)
     result = task_result(label, args.robot, records)
@@ -246,7 +259,14 @@ def cmd_demo(args: argparse.Namespace) -> int:
         from roboscript.llm import make_llm
 
         make_llm(plan.llm)  # a bad spec fails here, before the world is built
-    record = run_demo(plan, seed=args.seed, timeout=args.timeout, repair_rounds=args.repair, perception=args.perception)
+    record = run_demo(
+        plan,
+        seed=args.seed,
+        timeout=args.timeout,
+        repair_rounds=args.repair,
+        perception=args.perception,
+        backend=args.backend,
+    )
     status = "task done" if record.success else "task NOT done"
     print(
         f"{status}: {record.outcome}, {record.passed}/{len(record.checks)} checks"
@@ -318,7 +338,25 @@ def _add_perception_option(parser: argparse.ArgumentParser) -> None:
 
     modes = "; ".join(f"{m}: {what}" for m, what in PERCEPTION_MODES.items())
     modes += "; gt-2d, gt-3d and gt-scene combine with '+' (gt-2d+gt-scene)"
-    parser.add_argument("--perception", type=_perception_mode, default="gt", metavar="MODE", help=modes)
+    parser.add_argument(
+        "--perception",
+        type=_perception_mode,
+        default=None,
+        metavar="MODE",
+        help=modes + "; default: gt, or full with --backend ros",
+    )
+    parser.add_argument(
+        "--backend",
+        choices=["mujoco", "ros"],
+        default="mujoco",
+        help="mujoco: the simulation in-process; ros: the world served by `roboscript ros-sim` on a master of the "
+        "trial's own, the tools on the ROS backend, perception from the cameras and the segmentation topic",
+    )
+    parser.add_argument(
+        "--robot-config",
+        default=None,
+        help="with --backend ros: a robot configuration file or packaged name (default: the arm's packaged one)",
+    )
     parser.add_argument(
         "--detector",
         default=None,
@@ -340,9 +378,13 @@ def _perception_mode(text: str):
 def _resolve_perception(args: argparse.Namespace) -> None:
     """The perception mode with its detector, from --detector or the environment: the one place either is read.
     A missing detector fails here, before any world is built."""
-    from roboscript.perception.modes import DETECTOR_ENV, perception_mode
+    from roboscript.perception.modes import DETECTOR_ENV, SEGMENTATION, perception_mode
 
-    args.perception = perception_mode(args.perception, args.detector or os.environ.get(DETECTOR_ENV))
+    on_robot = getattr(args, "backend", "mujoco") == "ros"
+    mode = args.perception or ("full" if on_robot else "gt")
+    # A robot served by ros-sim (or with a segmentation node) grounds phrases in its segmentation topic by default.
+    detector = args.detector or os.environ.get(DETECTOR_ENV) or (SEGMENTATION if on_robot else None)
+    args.perception = perception_mode(mode, detector)
 
 
 def build_parser() -> argparse.ArgumentParser:
@@ -377,6 +419,10 @@ def build_parser() -> argparse.ArgumentParser:
     ros_sim.add_argument("--camera-rate", type=float, default=1.0, help="camera images per simulated second")
     ros_sim.add_argument("--seed", type=int, default=0)
     ros_sim.add_argument("--randomize", action="store_true", help="jitter object poses (deterministic per seed)")
+    ros_sim.add_argument(
+        "--task", default=None, help="a task whose checks the twin evaluates when asked on /roboscript/evaluate"
+    )
+    ros_sim.add_argument("--suite", default="paper", help="the task's suite (default: paper)")
     ros_sim.set_defaults(func=cmd_ros_sim)
     tasks = sub.add_parser("tasks", help="list a suite's tasks: worlds, queries and checks")
     tasks.add_argument("--json", action="store_true", help="print one JSON object")

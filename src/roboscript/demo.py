@@ -45,6 +45,7 @@ def run_demo(
     timeout: float = 300.0,
     repair_rounds: int = 0,
     perception: PerceptionMode | str = GROUND_TRUTH,
+    backend: str = "mujoco",
 ) -> TrialRecord:
     """Runs the task once in a child process; writes ``<task>.mp4``, ``report.md`` and ``report.json`` in
     ``plan.out``."""
@@ -60,11 +61,12 @@ def run_demo(
         seed,
         program,
         timeout,
-        str(video),
+        None if backend == "ros" else str(video),  # through ROS no video is recorded yet
         llm=plan.llm,
         repair_rounds=repair_rounds if plan.llm is not None else 0,
         perception=perception,
         suite=plan.suite,
+        backend=backend,
     )
     (record,) = run_isolated([spec])
     if plan.llm is None:

@@ -199,7 +199,7 @@ _SAFETY_FIELDS = {
     "workspace_upper": None,
     "table_height": None,
     "tracking_tolerance": 0.1,
-    "state_timeout": 0.5,
+    "state_timeout": 1.0,
     "server_timeout": 1.5,
 }
 

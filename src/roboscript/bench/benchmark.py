@@ -52,11 +52,16 @@ def run_label(policy: str, repair_rounds: int = 0) -> str:
 
 
 def default_out(
-    policy: str, robot: str, perception: PerceptionMode | str = GROUND_TRUTH, suite: str = DEFAULT_SUITE
+    policy: str,
+    robot: str,
+    perception: PerceptionMode | str = GROUND_TRUTH,
+    suite: str = DEFAULT_SUITE,
+    backend: str = "mujoco",
 ) -> str:
-    """``out/bench/<policy>_<robot>``, with the suite and the perception mode where they are not the defaults
-    (``<policy>_<suite>_<perception>_<robot>``), the policy made safe for a directory name."""
+    """``out/bench/<policy>_<robot>``, with the suite, the perception mode and the backend where they are not the
+    defaults (``<policy>_<suite>_<perception>_<robot>_ros``), the policy made safe for a directory name."""
     mode = "" if str(perception) == "gt" else f"_{perception}"
+    robot = robot if backend == "mujoco" else f"{robot}_{backend}"
     label = "" if suite == DEFAULT_SUITE else "_" + Path(suite).stem
     return f"out/bench/{re.sub(r'[^A-Za-z0-9._-]+', '_', policy)}{label}{mode}_{robot}"
 
@@ -75,6 +80,8 @@ def trial_specs(
     world: str | None = None,
     perception: PerceptionMode | str = GROUND_TRUTH,
     suite: str = DEFAULT_SUITE,
+    backend: str = "mujoco",
+    robot_config: str | None = None,
 ) -> list[TrialSpec]:
     """Trial ``i`` uses seed ``seed + i``; with several trials, videos get a ``_trial<i>`` suffix."""
     if trials < 1:
@@ -105,6 +112,8 @@ def trial_specs(
                 perception=perception,
                 suite=suite,
                 program_source=source,
+                backend=backend,
+                robot_config=robot_config,
             )
         )
     return specs
@@ -139,6 +148,8 @@ def run_benchmark(
     repair_rounds: int = 0,
     perception: PerceptionMode | str = GROUND_TRUTH,
     suite: str = DEFAULT_SUITE,
+    backend: str = "mujoco",
+    robot_config: str | None = None,
 ) -> dict:
     """Runs (or resumes) the benchmark of ``suite`` in ``out``; returns ``{"tasks": {id: exec object},
     "wall_time_s"}``."""
@@ -150,7 +161,9 @@ def run_benchmark(
     texts = {t: p.program for t, p in programs.items()}
     run = RunDirectory(
         out,
-        provenance(run_label(policy, repair_rounds), robot, trials, seed, texts, str(perception), repair_rounds, suite),
+        provenance(
+            run_label(policy, repair_rounds), robot, trials, seed, texts, str(perception), repair_rounds, suite, backend
+        ),
     )
     done = run.done()
     specs = [
@@ -167,6 +180,8 @@ def run_benchmark(
             repair_rounds=repair_rounds,
             perception=perception,
             suite=suite,
+            backend=backend,
+            robot_config=robot_config,
         )
         if (s.task, s.robot, s.trial) not in done
     ]

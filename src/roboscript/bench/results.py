@@ -45,8 +45,9 @@ def provenance(
     perception: str,
     repair_rounds: int = 0,
     suite: str = "paper",
+    backend: str = "mujoco",
 ) -> dict:
-    """Everything that decides a run's results, to be stored beside them."""
+    """Everything that decides a run's results, to be stored beside them (the backend where it is not MuJoCo)."""
     versions = {"python": platform.python_version()}
     for package in ("roboscript", "mujoco", "ompl", "mink", "numpy"):
         try:
@@ -61,6 +62,7 @@ def provenance(
         "seed": seed,
         "perception": perception,
         "repair_rounds": repair_rounds,
+        **({"backend": backend} if backend != "mujoco" else {}),
         "programs": {task: program_hash(p) for task, p in sorted(programs.items())},
         "versions": versions,
         "git_commit": _git_commit(),

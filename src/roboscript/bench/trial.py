@@ -19,6 +19,7 @@ from roboscript.codegen.sandbox import ExecutionResult, Limits
 from roboscript.perception.modes import GROUND_TRUTH, PerceptionMode, perception_mode
 
 MAX_OUTPUT = 4000  # characters of a program's printed output kept in its record
+BACKENDS = ("mujoco", "ros")
 
 
 @dataclass(frozen=True)
@@ -46,6 +47,8 @@ class TrialSpec:
     perception: PerceptionMode | str = GROUND_TRUTH
     suite: str = DEFAULT_SUITE  # the suite ``task`` is of: a packaged suite's name or a suite file's path
     program_source: str | None = None  # where a stored program came from (a file, an entry of one)
+    backend: str = "mujoco"  # mujoco, or ros: the world served by ros-sim, the tools on the ROS backend
+    robot_config: str | None = None  # the ROS backend's robot configuration (default: the arm's packaged one)
 
     def __post_init__(self) -> None:
         if self.repair_rounds < 0:
@@ -53,6 +56,8 @@ class TrialSpec:
         if self.timeout <= 0:
             raise ValueError(f"the time limit must be positive, got {self.timeout} s")
         object.__setattr__(self, "perception", perception_mode(self.perception))
+        if self.backend not in BACKENDS:
+            raise ValueError(f"unknown backend {self.backend!r}; backends: {', '.join(BACKENDS)}")
 
     def attempts(self) -> int:
         """How many times the program may run: once, and once more after each repair round."""
@@ -114,7 +119,7 @@ def run_trial(spec: TrialSpec) -> TrialRecord:
     attempts: list[dict] = []
     author: _Author | None = None
     while True:
-        with _TrialWorld(spec, task) as world:
+        with _trial_world(spec, task) as world:
             if spec.llm is not None and author is None:
                 author = _Author(spec.llm, task.query_for(spec.instruction))
             program = spec.program if author is None else author.program
@@ -218,6 +223,14 @@ class _TrialWorld:
             self.recorder.close()
             os.replace(self.recorder.path, self.spec.video)
         self.backend.close()
+
+
+def _trial_world(spec: TrialSpec, task: Task):
+    if spec.backend == "ros":
+        from roboscript.bench.ros_trial import RosTrialWorld
+
+        return RosTrialWorld(spec, task)
+    return _TrialWorld(spec, task)
 
 
 def _partial(video: str) -> str:

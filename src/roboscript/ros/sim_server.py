@@ -55,6 +55,7 @@ class RosSimServer:
         state_rate: float = 100.0,
         camera_rate: float = 1.0,
         labels_topic: str = "/roboscript/segmentation_labels",
+        checks: list | None = None,
     ):
         import actionlib
         import rospy
@@ -107,6 +108,14 @@ class RosSimServer:
                 )
             )
 
+        self._checks = checks
+        if checks is not None:
+            from std_msgs.msg import String
+
+            from roboscript.ros.launch import EVALUATE_TOPIC, EVALUATION_TOPIC
+
+            self._evaluation = rospy.Publisher(EVALUATION_TOPIC, String, queue_size=5, latch=True)
+            self._evaluate = rospy.Subscriber(EVALUATE_TOPIC, String, self._on_goal("evaluate"), queue_size=5)
         self._cameras = _CameraPublisher(backend, config, Image, CameraInfo, labels_topic, self._stop)
         self._next_camera = 0.0
         self._publish_static_frames()
@@ -129,7 +138,9 @@ class RosSimServer:
 
     def _on_cancel(self, handle) -> None:
         current = self._current
-        if current is not None and current.handle.get_goal_id().id == handle.get_goal_id().id:
+        if current is None or current.kind == "evaluate":
+            return
+        if current.handle.get_goal_id().id == handle.get_goal_id().id:
             current.cancelled.set()
 
     # --- the simulation's thread ---
@@ -162,7 +173,9 @@ class RosSimServer:
     def _run(self, job: _Job) -> None:
         self._current = job
         try:
-            if job.kind == "trajectory":
+            if job.kind == "evaluate":
+                self._run_evaluation(job)
+            elif job.kind == "trajectory":
                 self._run_trajectory(job)
             elif job.kind == "gripper":
                 self._run_gripper_command(job)
@@ -221,6 +234,19 @@ class RosSimServer:
             self._trajectory_goal = None
         result.error_code = types.result.SUCCESSFUL
         handle.set_succeeded(result)
+
+    def _run_evaluation(self, job: _Job) -> None:
+        """The task's checks on the simulation's own state, for the harness that asked (never for the backend)."""
+        from std_msgs.msg import String
+
+        asked = json.loads(job.handle.data).get("id")
+        try:
+            truth = self.backend.ground_truth
+            answer = {"id": asked, "checks": [c.evaluate(truth).to_dict() for c in self._checks]}
+        except Exception as exc:  # a check that cannot be evaluated: the harness is told, the twin serves on
+            answer = {"id": asked, "error": f"{type(exc).__name__}: {exc}"}
+        answer["time"] = self.simulator.time
+        self._evaluation.publish(String(data=json.dumps(answer)))
 
     def _closed_fraction(self, position: float) -> float:
         gripper = self.config.gripper
@@ -445,6 +471,7 @@ def serve(
     seed: int = 0,
     randomize: bool = False,
     node_name: str = "roboscript_sim",
+    task=None,
 ) -> None:
     """Runs ``roboscript ros-sim``: the world served as a ROS robot until ROS shuts down or the process is killed."""
     import rospy
@@ -452,7 +479,10 @@ def serve(
     rospy.set_param("/use_sim_time", True)  # before any node of ours reads it: clients follow /clock
     rospy.init_node(node_name, disable_signals=False)
     with MujocoBackend(world, robot=robot, seed=seed, randomize=randomize) as backend:
-        server = RosSimServer(backend, config, real_time_factor=real_time_factor, camera_rate=camera_rate)
+        checks = task.build_checks(backend.ground_truth) if task is not None else None
+        server = RosSimServer(
+            backend, config, real_time_factor=real_time_factor, camera_rate=camera_rate, checks=checks
+        )
         rospy.loginfo("ros-sim: %s with the %s served as %s", world, robot, config.name)
         print(f"ros-sim: serving {world} ({robot}) as {config.name}; Ctrl-C stops", flush=True)
         server.spin()

@@ -1,0 +1,112 @@
+"""A trial through ROS: the task's world served by `roboscript ros-sim` (its own rosmaster, on a free port), the
+program's tools on the ROS backend with perception from the cameras and the robot's segmentation topic, and the
+task's checks evaluated by the twin on its own state when the program is done.
+
+The backend and the tools know nothing of the simulation; only this harness does, to start it and to ask it for the
+verdict.
+"""
+
+from __future__ import annotations
+
+import os
+import tempfile
+
+from roboscript.bench.tasks import Task
+from roboscript.codegen.outcomes import Outcome
+from roboscript.codegen.sandbox import ExecutionResult
+from roboscript.perception.modes import SEGMENTATION, PerceptionMode, perception_mode
+
+ROBOT_CONFIGS = {"panda": "panda_franka_ros", "ur5e": "ur5e_ur_robot_driver"}
+REAL_TIME_FACTOR = 2.0
+_MASTER: tuple | None = None  # (process, uri, home): one per process, as this process's ROS node is bound to it
+
+
+def _process_master() -> str:
+    """This process's rosmaster, started at its first ROS trial and stopped when the process exits."""
+    global _MASTER
+    if _MASTER is None or _MASTER[0].poll() is not None:
+        import atexit
+
+        from roboscript.ros.launch import start_master
+
+        home = tempfile.mkdtemp(prefix="roboscript_ros_")
+        process, uri = start_master(home)
+        atexit.register(process.terminate)
+        _MASTER = (process, uri, home)
+        os.environ.update(ROS_MASTER_URI=uri, ROS_IP="127.0.0.1", ROS_HOME=home)
+    return _MASTER[1]
+
+
+def ros_perception(mode: PerceptionMode) -> PerceptionMode:
+    """The mode a ROS trial runs with: everything from the robot's sensors; its 2D boxes from the segmentation topic
+    unless a detector was given."""
+    if mode.from_truth - {"2d"}:
+        raise ValueError(
+            f"perception {mode} takes {', '.join(sorted(mode.from_truth))} from ground truth, which a robot does not "
+            "have: through ROS use full (or gt-2d, which reads the robot's segmentation topic)"
+        )
+    return mode if mode.detector is not None else perception_mode("full", SEGMENTATION)
+
+
+class RosTrialWorld:
+    """One attempt's world through ROS, used as :class:`roboscript.bench.trial._TrialWorld` is."""
+
+    def __init__(self, spec, task: Task):
+        self.spec, self.task = spec, task
+        self.recorder = None
+
+    def __enter__(self) -> RosTrialWorld:
+        from roboscript.assembly import build_tools
+        from roboscript.backends.ros import ros_backend
+        from roboscript.ros.launch import start_sim
+        from roboscript.sim.world_catalog import load_world
+
+        spec = self.spec
+        if spec.video:
+            raise ValueError("--video is not recorded through ROS yet; record the twin with the mujoco backend")
+        uri = _process_master()
+        self.sim = self.backend = None
+        try:
+            self.sim = start_sim(
+                self.task.world,
+                spec.robot,
+                uri,
+                REAL_TIME_FACTOR,
+                seed=spec.seed,
+                randomize=True,
+                task=self.task.id if spec.world is None else None,
+                suite=spec.suite,
+            )
+            self.backend = ros_backend(spec.robot_config or ROBOT_CONFIGS[spec.robot])
+            mode = ros_perception(spec.perception)
+            tools = build_tools(self.backend, mode, seed=spec.seed, scene=load_world(self.task.world))
+            self.namespace = tools.namespace()
+        except BaseException:
+            self.__exit__()
+            raise
+        self.sim_start = self.backend.time()
+        return self
+
+    def judge(self, result: ExecutionResult) -> dict:
+        from roboscript.bench.trial import MAX_OUTPUT
+        from roboscript.ros.launch import evaluate_on_twin
+
+        self.backend.wait(1.0)
+        checks = evaluate_on_twin() if self.spec.world is None else []
+        outcome = result.outcome
+        if outcome is Outcome.OK and not all(c["passed"] for c in checks):
+            outcome = Outcome.CHECKS_FAILED
+        return {
+            "outcome": outcome.value,
+            "ok": result.error is None,
+            "error": result.error,
+            "checks": checks,
+            "sim_time_s": round(self.backend.time() - self.sim_start, 3),
+            "output": result.output[:MAX_OUTPUT],
+        }
+
+    def __exit__(self, *exc) -> None:
+        if self.backend is not None:
+            self.backend.close()
+        if self.sim is not None:
+            self.sim.stop()
