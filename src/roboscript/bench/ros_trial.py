@@ -22,16 +22,14 @@ _MASTER: tuple | None = None  # (process, uri, home): one per process, as this p
 
 
 def _process_master() -> str:
-    """This process's rosmaster, started at its first ROS trial and stopped when the process exits."""
+    """This process's rosmaster, started at its first ROS trial; it ends with the process (see
+    :func:`roboscript.ros.launch.start_master`)."""
     global _MASTER
     if _MASTER is None or _MASTER[0].poll() is not None:
-        import atexit
-
         from roboscript.ros.launch import start_master
 
         home = tempfile.mkdtemp(prefix="roboscript_ros_")
         process, uri = start_master(home)
-        atexit.register(process.terminate)
         _MASTER = (process, uri, home)
         os.environ.update(ROS_MASTER_URI=uri, ROS_IP="127.0.0.1", ROS_HOME=home)
     return _MASTER[1]

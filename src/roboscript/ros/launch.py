@@ -20,6 +20,16 @@ EVALUATION_TOPIC = "/roboscript/evaluation"
 START_TIMEOUT = 120.0  # seconds for ros-sim to build its world and start serving (a busy machine included)
 
 
+def _die_with_parent() -> None:
+    """In the child, before exec: Linux sends it SIGTERM when the process that started it exits, however that
+    exits (trial processes end with os._exit, which runs no clean-up), so no master or twin outlives its run."""
+    import ctypes
+    import signal
+
+    pr_set_pdeathsig = 1
+    ctypes.CDLL("libc.so.6", use_errno=True).prctl(pr_set_pdeathsig, signal.SIGTERM)
+
+
 def free_port() -> int:
     with socket.socket() as s:
         s.bind(("127.0.0.1", 0))
@@ -27,14 +37,18 @@ def free_port() -> int:
 
 
 def start_master(ros_home: str | None = None) -> tuple[subprocess.Popen, str]:
-    """A rosmaster on a free loopback port, and its URI, once it answers."""
+    """A rosmaster on a free loopback port, and its URI, once it answers; it is stopped when this process exits."""
     import rosgraph
 
     port = free_port()
     uri = f"http://127.0.0.1:{port}"
     env = {**os.environ, **({"ROS_HOME": ros_home} if ros_home else {})}
     process = subprocess.Popen(
-        ["rosmaster", "--core", "-p", str(port)], env=env, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL
+        ["rosmaster", "--core", "-p", str(port)],
+        env=env,
+        stdout=subprocess.DEVNULL,
+        stderr=subprocess.DEVNULL,
+        preexec_fn=_die_with_parent,
     )
     master = rosgraph.Master("/roboscript_launch", master_uri=uri)
     deadline = time.monotonic() + 30
@@ -85,7 +99,9 @@ def start_sim(
     command += ["--suite", suite] if suite else []
     command += list(extra)
     env = {**os.environ, "ROS_MASTER_URI": master_uri, "ROS_IP": "127.0.0.1"}
-    process = subprocess.Popen(command, env=env, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
+    process = subprocess.Popen(
+        command, env=env, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True, preexec_fn=_die_with_parent
+    )
     sim = SimProcess(process)
     ready = threading.Event()
 
