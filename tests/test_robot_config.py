@@ -19,3 +19,13 @@ def test_the_packaged_configurations_load(tmp_path):
         load_robot_config(bad)
     with pytest.raises(RobotConfigError, match="no such packaged configuration; packaged: panda_franka_ros"):
         load_robot_config("kuka")
+
+
+def test_ros_sim_without_a_master_says_how_to_start_one(monkeypatch, capsys):
+    from roboscript.cli import main
+
+    monkeypatch.delenv("ROS_MASTER_URI", raising=False)
+    assert main(["ros-sim", "world_2_pick_and_place", "--robot", "panda"]) == 2
+    assert "ROS_MASTER_URI is not set: start a master (rosmaster --core -p 11311)" in capsys.readouterr().err
+    assert main(["ros-sim", "world_2_pick_and_place", "--robot", "ur5e", "--robot-config", "panda_franka_ros"]) == 2
+    assert "robot configuration panda_franka_ros is for the panda, not the ur5e" in capsys.readouterr().err
