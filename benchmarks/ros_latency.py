@@ -12,10 +12,7 @@ from __future__ import annotations
 
 import argparse
 import os
-import socket
 import statistics
-import subprocess
-import sys
 import time
 
 import numpy as np
@@ -53,12 +50,6 @@ def _measure(backend, repeats: int) -> dict[str, float]:
     }
 
 
-def _free_port() -> int:
-    with socket.socket() as s:
-        s.bind(("127.0.0.1", 0))
-        return s.getsockname()[1]
-
-
 def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("--repeats", type=int, default=30)
@@ -67,23 +58,13 @@ def main() -> None:
     with MujocoBackend(WORLD, robot="panda") as direct:
         direct_figures = _measure(direct, args.repeats)
 
-    port = _free_port()
-    os.environ["ROS_MASTER_URI"] = f"http://127.0.0.1:{port}"
-    master = subprocess.Popen(
-        ["rosmaster", "--core", "-p", str(port)], stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL
-    )
-    sim = subprocess.Popen(
-        [sys.executable, "-m", "roboscript.cli", "ros-sim", WORLD, "--robot", "panda", "--camera-rate", "0.2"],
-        stdout=subprocess.PIPE,
-        stderr=subprocess.STDOUT,
-        text=True,
-    )
-    try:
-        for line in sim.stdout:
-            if "serving" in line:
-                break
-        from roboscript.backends.ros import ros_backend
+    from roboscript.backends.ros import ros_backend
+    from roboscript.ros.launch import start_master, start_sim
 
+    master, uri = start_master()
+    os.environ["ROS_MASTER_URI"] = uri
+    sim = start_sim(WORLD, "panda", uri, real_time_factor=1.0, extra=("--camera-rate", "0.2"))
+    try:
         with ros_backend("panda_franka_ros") as ros:
             stamps = []
             for _ in range(200):
@@ -94,7 +75,7 @@ def main() -> None:
             intervals = np.diff(stamps)
             ros_figures = _measure(ros, args.repeats)
     finally:
-        sim.terminate()
+        sim.stop()
         master.terminate()
     print(f"{'median':36s} {'direct':>10s} {'ROS':>10s}")
     for key in direct_figures:

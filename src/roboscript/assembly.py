@@ -28,8 +28,7 @@ def build_tools(
     furniture's parts (which handle moves which drawer); without it, the objects are those the segmentation labels
     name and no furniture is known."""
     mode = perception_mode(perception)
-    _check_truth(backend, mode)
-    seen = build_perception(backend, mode, seed, scene)
+    seen = build_perception(backend, mode, seed, scene)  # refuses a mode the backend cannot serve
     motion = build_motion(backend, seen, mode, seed)
     return ToolAPI(backend, seen, motion, seed)
 

@@ -64,15 +64,12 @@ def cmd_render(args: argparse.Namespace) -> int:
     return 0
 
 
-ROBOT_CONFIGS = {"panda": "panda_franka_ros", "ur5e": "ur5e_ur_robot_driver"}  # what ros-sim serves by default
-
-
 def cmd_ros_sim(args: argparse.Namespace) -> int:
-    from roboscript.robot_config import load_robot_config
+    from roboscript.robot_config import DEFAULT_CONFIGS, load_robot_config
     from roboscript.sim.world_catalog import load_world
 
     robot = args.robot or load_world(args.world).robot
-    config = load_robot_config(args.robot_config or ROBOT_CONFIGS[robot])
+    config = load_robot_config(args.robot_config or DEFAULT_CONFIGS[robot])
     if config.robot.name != robot:
         raise ValueError(f"robot configuration {config.name} is for the {config.robot.name}, not the {robot}")
     if not os.environ.get("ROS_MASTER_URI"):

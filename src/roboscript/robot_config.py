@@ -16,6 +16,8 @@ from roboscript.datafile import DataFileError, Reader, names_a_file, read_data_f
 from roboscript.robots import ROBOTS, RobotDescription, get_robot
 
 GRIPPER_KINDS = ("gripper_command", "franka")
+# The packaged configuration of each arm: what ros-sim serves by default, and what a ROS trial connects with.
+DEFAULT_CONFIGS = {"panda": "panda_franka_ros", "ur5e": "ur5e_ur_robot_driver"}
 DEFAULT_SPEED_SCALE = 0.25  # of the arm's limits: what a real arm runs at unless its configuration says otherwise
 
 

@@ -173,6 +173,7 @@ class DriverBackend(Backend):
         started = self.driver.now()
         deadline = trajectory.duration + self.config.server_timeout
         joint_errors, tcp_errors = [], []
+        seen = None  # the feedback last judged: it comes at the controller's rate, slower than this loop polls
         try:
             while True:
                 status = goal.status()
@@ -181,7 +182,8 @@ class DriverBackend(Backend):
                 self._fresh_state_or_stop(goal)
                 elapsed = self.driver.now() - started
                 sample = goal.tracking()  # the controller's own set-point and measurement, in step with each other
-                if sample is not None:
+                if sample is not None and sample is not seen:
+                    seen = sample
                     lag = np.abs(sample.actual - sample.desired)
                     joint_errors.append(float(np.max(lag)))
                     tcp_errors.append(self._tcp_distance(sample.actual, sample.desired))

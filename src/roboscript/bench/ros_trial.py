@@ -12,11 +12,10 @@ import os
 import tempfile
 
 from roboscript.bench.tasks import Task
-from roboscript.codegen.outcomes import Outcome
 from roboscript.codegen.sandbox import ExecutionResult
 from roboscript.perception.modes import SEGMENTATION, PerceptionMode, perception_mode
+from roboscript.robot_config import DEFAULT_CONFIGS
 
-ROBOT_CONFIGS = {"panda": "panda_franka_ros", "ur5e": "ur5e_ur_robot_driver"}
 REAL_TIME_FACTOR = 2.0
 _MASTER: tuple | None = None  # (process, uri, home): one per process, as this process's ROS node is bound to it
 
@@ -75,7 +74,7 @@ class RosTrialWorld:
                 task=self.task.id if spec.world is None else None,
                 suite=spec.suite,
             )
-            self.backend = ros_backend(spec.robot_config or ROBOT_CONFIGS[spec.robot])
+            self.backend = ros_backend(spec.robot_config or DEFAULT_CONFIGS[spec.robot])
             mode = ros_perception(spec.perception)
             tools = build_tools(self.backend, mode, seed=spec.seed, scene=load_world(self.task.world))
             self.namespace = tools.namespace()
@@ -86,22 +85,12 @@ class RosTrialWorld:
         return self
 
     def judge(self, result: ExecutionResult) -> dict:
-        from roboscript.bench.trial import MAX_OUTPUT
+        from roboscript.bench.trial import attempt_record
         from roboscript.ros.launch import evaluate_on_twin
 
         self.backend.wait(1.0)
         checks = evaluate_on_twin() if self.spec.world is None else []
-        outcome = result.outcome
-        if outcome is Outcome.OK and not all(c["passed"] for c in checks):
-            outcome = Outcome.CHECKS_FAILED
-        return {
-            "outcome": outcome.value,
-            "ok": result.error is None,
-            "error": result.error,
-            "checks": checks,
-            "sim_time_s": round(self.backend.time() - self.sim_start, 3),
-            "output": result.output[:MAX_OUTPUT],
-        }
+        return attempt_record(result, checks, self.backend.time() - self.sim_start)
 
     def __exit__(self, *exc) -> None:
         if self.backend is not None:

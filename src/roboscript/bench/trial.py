@@ -206,23 +206,28 @@ class _TrialWorld:
         """The attempt's outcome once what was let go has come to rest."""
         self.backend.wait(1.0)
         checks = [c.evaluate(self.ground_truth).to_dict() for c in self.checks]
-        outcome = result.outcome
-        if outcome is Outcome.OK and not all(c["passed"] for c in checks):
-            outcome = Outcome.CHECKS_FAILED
-        return {
-            "outcome": outcome.value,
-            "ok": result.error is None,
-            "error": result.error,
-            "checks": checks,
-            "sim_time_s": round(self.backend.time() - self.sim_start, 3),
-            "output": result.output[:MAX_OUTPUT],
-        }
+        return attempt_record(result, checks, self.backend.time() - self.sim_start)
 
     def __exit__(self, *exc) -> None:
         if self.recorder is not None:
             self.recorder.close()
             os.replace(self.recorder.path, self.spec.video)
         self.backend.close()
+
+
+def attempt_record(result: ExecutionResult, checks: list[dict], sim_time: float) -> dict:
+    """An attempt as the trial record keeps it: a program that ran to its end fails if a check did not pass."""
+    outcome = result.outcome
+    if outcome is Outcome.OK and not all(c["passed"] for c in checks):
+        outcome = Outcome.CHECKS_FAILED
+    return {
+        "outcome": outcome.value,
+        "ok": result.error is None,
+        "error": result.error,
+        "checks": checks,
+        "sim_time_s": round(sim_time, 3),
+        "output": result.output[:MAX_OUTPUT],
+    }
 
 
 def _trial_world(spec: TrialSpec, task: Task):

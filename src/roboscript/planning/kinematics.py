@@ -9,12 +9,11 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 import mink
-import mujoco
 import numpy as np
 
 from roboscript.geometry import Transform, quat_to_matrix
 from roboscript.robots import ROBOT_PREFIX, RobotDescription
-from roboscript.robots.mujoco_model import attach_robot, configure_options
+from roboscript.robots.mujoco_model import RobotModel
 
 
 @dataclass(frozen=True)
@@ -31,20 +30,15 @@ class ArmKinematics:
     """TCP forward and inverse kinematics for one robot at one mount pose."""
 
     def __init__(self, description: RobotDescription, mount: Transform):
-        spec = mujoco.MjSpec()
-        configure_options(spec)
-        attach_robot(spec, description, mount)
+        robot = RobotModel(description, mount)
         self.description = description
         self.mount = mount
-        self.model = spec.compile()
-        self.data = mujoco.MjData(self.model)
+        self.model, self.data = robot.model, robot.data
+        self._robot = robot
         q = RobotDescription.qualified
-        joints = [self.model.joint(q(j)) for j in description.arm_joints]
-        self._qpos = np.array([j.qposadr[0] for j in joints])
-        self.lower = np.array([j.range[0] for j in joints])
-        self.upper = np.array([j.range[1] for j in joints])
+        self._qpos = np.array([self.model.joint(q(j)).qposadr[0] for j in description.arm_joints])
+        self.lower, self.upper = robot.joint_lower, robot.joint_upper
         self.tcp_site_name = ROBOT_PREFIX + description.tcp_site
-        self._site = self.model.site(self.tcp_site_name).id
         self._configuration = mink.Configuration(self.model)
         self._task = mink.FrameTask(
             self.tcp_site_name, "site", position_cost=1.0, orientation_cost=0.5, lm_damping=1e-3
@@ -57,9 +51,7 @@ class ArmKinematics:
 
     def fk(self, q: np.ndarray) -> Transform:
         """The TCP pose at arm configuration ``q``."""
-        self.data.qpos[self._qpos] = q
-        mujoco.mj_kinematics(self.model, self.data)
-        return Transform.from_rotation(self.data.site_xpos[self._site], self.data.site_xmat[self._site].reshape(3, 3))
+        return self._robot.tcp(q)
 
     def solve(
         self,

@@ -119,7 +119,9 @@ class RosSimServer:
         self._cameras = _CameraPublisher(backend, config, Image, CameraInfo, labels_topic, self._stop)
         self._next_camera = 0.0
         self._publish_static_frames()
+        self._trajectory_goal: tuple[JointTrajectory, list[str], float] | None = None  # the one being run
         self.simulator.add_step_callback(self._on_tick)
+        self._ticking = True
 
     # --- names ---
 
@@ -167,8 +169,9 @@ class RosSimServer:
 
     def close(self) -> None:
         self._stop.set()
-        if self._on_tick in self.simulator._callbacks:
+        if self._ticking:
             self.simulator.remove_step_callback(self._on_tick)
+            self._ticking = False
 
     def _run(self, job: _Job) -> None:
         self._current = job
@@ -300,7 +303,7 @@ class RosSimServer:
         if now >= self._next_camera:
             self._cameras.offer(simulator, now)
             self._next_camera = now + self.camera_period
-        goal = getattr(self, "_trajectory_goal", None)
+        goal = self._trajectory_goal
         if goal is not None and now >= self._next_feedback:
             self._publish_feedback(goal, now)
             self._next_feedback = now + 1.0 / FEEDBACK_RATE
