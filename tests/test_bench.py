@@ -72,6 +72,8 @@ def test_run_directory_resumes_and_refuses_mixing(tmp_path):
         RunDirectory(tmp_path, provenance("reference", "panda", 3, 0, {"simple_0": "program B"}, "gt"))
     with pytest.raises(ValueError, match="robot='panda', not 'ur5e'"):
         RunDirectory(tmp_path, provenance("reference", "ur5e", 3, 0, {"simple_0": "program A"}, "gt"))
+    with pytest.raises(ValueError, match="backend='mujoco', not 'ros'"):
+        RunDirectory(tmp_path, provenance("reference", "panda", 3, 0, {"simple_0": "program A"}, "gt", backend="ros"))
 
 
 def exec_json(tmp_path, source, *args):
@@ -157,3 +159,49 @@ def test_stored_programs_missing_a_task_are_refused_before_anything_runs(tmp_pat
     assert "no stored program in" in out.stderr and "for hard_2 (programs found for: simple_0)" in out.stderr
     assert "simple_9.py (no task 'simple_9')" in out.stderr
     assert not (tmp_path / "run" / "results.jsonl").exists()
+
+
+def _descendants(pid: int) -> set[int]:
+    """Every process below ``pid``, from /proc."""
+    parents: dict[int, int] = {}
+    for entry in Path("/proc").iterdir():
+        if entry.name.isdigit():
+            try:
+                parents[int(entry.name)] = int((entry / "stat").read_text().rsplit(")", 1)[1].split()[1])
+            except (OSError, ValueError, IndexError):
+                continue
+    found, frontier = set(), {pid}
+    while frontier:
+        frontier = {child for child, parent in parents.items() if parent in frontier} - found
+        found |= frontier
+    return found
+
+
+def test_a_run_stopped_with_sigterm_leaves_no_trial_running(tmp_path):
+    import signal
+    import time
+
+    program = tmp_path / "slow.py"
+    program.write_text("for i in range(100000):\n    get_gripper_pose()\n")
+    command = [sys.executable, "-m", "roboscript.cli", "exec", str(program), "--task", "simple_0", "--trials", "2"]
+    run = subprocess.Popen([*command, "--jobs", "2"], stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+    deadline = time.monotonic() + 120
+    trials: set[int] = set()
+    while len(trials) < 3 and time.monotonic() < deadline:  # the fork server and both trials
+        time.sleep(0.5)
+        trials = _descendants(run.pid)
+    assert len(trials) >= 3, "the trials did not start"
+    time.sleep(3.0)
+    run.send_signal(signal.SIGTERM)
+    run.wait(timeout=60)
+    time.sleep(2.0)
+    alive = {}
+    for pid in trials:
+        try:
+            state = Path(f"/proc/{pid}/stat").read_text().rsplit(")", 1)[1].split()[0]
+            command = Path(f"/proc/{pid}/cmdline").read_bytes().replace(b"\0", b" ")[:200]
+        except OSError:
+            continue
+        if state != "Z":  # a zombie has exited: it only waits to be reaped (by init, here)
+            alive[pid] = command
+    assert alive == {}, f"left running: {alive}"

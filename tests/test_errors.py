@@ -57,4 +57,4 @@ def test_builtin_bases_are_kept_and_the_classifier_catches_by_branch():
     assert classify_exception(GraspError("no grasp")) is Outcome.PLANNING_FAILURE
     assert classify_exception(UnknownObjectError("x", ["apple"])) is Outcome.RUNTIME_ERROR
     assert classify_exception(ZeroDivisionError()) is Outcome.RUNTIME_ERROR
-    assert error_message(UnknownObjectError("x", ["apple"])) .startswith("no object named 'x'")
+    assert error_message(UnknownObjectError("x", ["apple"])).startswith("no object named 'x'")

@@ -4,8 +4,9 @@ knows it talks to a simulation: it reads joint states, sends FollowJointTrajecto
 reads camera topics and TF.
 
 Fault tests: a trajectory that would leave the workspace is refused before anything moves; a goal the server rejects;
-Ctrl-C during a motion cancels the goal; a robot that stops publishing (paused, then killed) mid-trajectory ends the
-motion with an error saying what was lost. (How fast each error comes is printed, not asserted.)
+Ctrl-C during a motion cancels the goal; a push that makes a joint lag cancels it; a robot that stops publishing
+(paused, then killed) mid-trajectory ends the motion with an error saying what was lost. (How fast each error comes
+is printed, not asserted.)
 """
 
 from __future__ import annotations
@@ -26,12 +27,14 @@ import pytest
 pytest.importorskip("rospy", reason="ROS 1 is not installed here (scripts/setup.sh installs it on Debian)")
 
 from roboscript.assembly import build_tools
+from roboscript.backends.base import BackendError
 from roboscript.backends.driven import MotionRefused
 from roboscript.backends.ros import ros_backend
 from roboscript.bench.tasks import get_task
 from roboscript.drivers.base import DriverError
 from roboscript.perception.modes import perception_mode
 from roboscript.ros.launch import SimProcess, start_master, start_sim
+from roboscript.ros.sim_server import DISTURB_TOPIC
 from roboscript.sim.world_catalog import load_world
 from roboscript.trajectory import JointTrajectory, min_jerk_through
 
@@ -192,6 +195,34 @@ def test_ctrl_c_during_a_motion_cancels_the_goal_and_the_arm_stops(panda):
     backend.execute_trajectory(back)
 
 
+def test_a_push_that_makes_a_joint_lag_cancels_the_goal_and_says_which_joint(panda):
+    """A collision, simulated: ros-sim pushes the hand sideways mid-trajectory, harder than the joints' motors
+    can hold; the backend sees a joint fall behind its set-point in the controller's feedback and cancels."""
+    import rospy
+    from std_msgs.msg import String
+
+    backend, _ = panda
+    pusher = rospy.Publisher(DISTURB_TOPIC, String, queue_size=1)
+    deadline = time.monotonic() + 10
+    while pusher.get_num_connections() == 0 and time.monotonic() < deadline:
+        time.sleep(0.05)
+    delta = np.zeros(7)
+    delta[0] = 0.8
+    push = json.dumps({"force": [0.0, 400.0, 0.0], "duration": 0.6})
+    timer = threading.Timer(0.5, lambda: pusher.publish(String(data=push)))
+    timer.start()
+    try:
+        with pytest.raises(BackendError, match=r"tracking lost: panda_joint\d is \d\.\d+ rad from its set-point"):
+            backend.execute_trajectory(_move(backend, delta))
+    finally:
+        timer.cancel()
+        pusher.unregister()
+    backend.wait(1.0)  # the push is over: the arm holds where the cancelled goal left it
+    still = backend.joint_positions()
+    backend.wait(0.5)
+    assert np.abs(backend.joint_positions() - still).max() < 0.01
+
+
 def test_a_robot_that_stops_publishing_mid_trajectory_ends_the_motion_with_what_was_lost(panda):
     backend, sim = panda
     delta = np.zeros(7)
@@ -223,9 +254,15 @@ def test_a_drawer_is_opened_by_its_handle_and_boxes_put_in_it_through_exec_on_ro
     program = tmp_path / "moderate_0.py"
     program.write_text(get_task("moderate_0").reference_program())
     before = _ros_processes()
+    scratch = tmp_path / "tmp"
+    scratch.mkdir()
     command = [sys.executable, "-m", "roboscript.cli", "exec", str(program), "--task", "moderate_0"]
     run = subprocess.run(
-        [*command, "--backend", "ros", "--trials", "1", "--json"], capture_output=True, text=True, timeout=900
+        [*command, "--backend", "ros", "--trials", "1", "--json"],
+        capture_output=True,
+        text=True,
+        timeout=900,
+        env={**os.environ, "TMPDIR": str(scratch)},
     )
     assert run.returncode == 0, run.stderr[-3000:]
     result = json.loads(run.stdout.strip().splitlines()[-1])
@@ -238,6 +275,8 @@ def test_a_drawer_is_opened_by_its_handle_and_boxes_put_in_it_through_exec_on_ro
     print(f"moderate_0 through ROS: {trial['wall_time_s']:.1f} s of wall time")
     time.sleep(1.0)
     assert _ros_processes() <= before  # the trial's master and twin ended with it
+    left = [p.name for p in scratch.iterdir() if p.name.startswith(("genpy_", "roboscript_ros_"))]
+    assert left == []  # nor its ROS home or generated message modules
 
 
 def test_the_ur5e_and_its_robotiq_gripper_through_ur_robot_drivers_names(ros_master):

@@ -5,7 +5,9 @@ from __future__ import annotations
 import argparse
 import json
 import os
+import signal
 import sys
+import threading
 import time
 from pathlib import Path
 
@@ -130,15 +132,19 @@ def cmd_exec(args: argparse.Namespace) -> int:
     from roboscript.bench.benchmark import progress_printer, trial_specs
     from roboscript.bench.metrics import task_result
     from roboscript.bench.runner import run_isolated
-    from roboscript.bench.tasks import get_task
+    from roboscript.bench.tasks import free_task, get_task
+    from roboscript.cli_robot import robot_requested, run_on_running_robot
 
-    get_task(args.task, args.suite)
+    scene = args.world or get_task(args.task, args.suite).world
     path = Path(args.program)
     if not path.is_file():
         raise ValueError(f"no program file {str(path)!r}")
     program = path.read_text()
+    if robot_requested(args):
+        return run_on_running_robot(args, program, scene)
+    label = free_task(args.world, "run the program").id if args.world else args.task
     specs = trial_specs(
-        args.task,
+        label,
         program,
         args.robot,
         args.trials,
@@ -149,9 +155,11 @@ def cmd_exec(args: argparse.Namespace) -> int:
         suite=args.suite,
         backend=args.backend,
         robot_config=args.robot_config,
+        world=args.world,
+        instruction="run the program" if args.world else None,
     )
     records = run_isolated(specs, args.jobs, None if args.json else progress_printer(len(specs)))
-    result = task_result(args.task, args.robot, records)
+    result = task_result(label, args.robot, records)
     if args.json:
         print(json.dumps(result))
     else:
@@ -199,6 +207,7 @@ def cmd_run(args: argparse.Namespace) -> int:
     from roboscript.bench.metrics import task_result
     from roboscript.bench.runner import run_isolated
     from roboscript.bench.tasks import free_task, get_task
+    from roboscript.cli_robot import robot_requested
     from roboscript.llm import make_llm
     from roboscript.sim.world_catalog import load_world
 
@@ -208,6 +217,8 @@ def cmd_run(args: argparse.Namespace) -> int:
     else:
         label = get_task(args.task, args.suite).id
     llm = make_llm(args.llm)  # fails here, clearly, when no LLM is configured
+    if robot_requested(args):
+        return _run_llm_on_robot(args, llm, label)
     specs = trial_specs(
         label,
         "",
@@ -241,6 +252,19 @@ def cmd_run(args: argparse.Namespace) -> int:
         return 0 if all(r.ok for r in records) else 1
     _print_result(result)
     return 0
+
+
+def _run_llm_on_robot(args: argparse.Namespace, llm, label: str) -> int:
+    """``run --master``: the LLM writes the program once, for the scene's names; it then runs as ``exec`` would."""
+    from roboscript.bench.tasks import free_task, get_task
+    from roboscript.cli_robot import run_on_running_robot
+    from roboscript.codegen.agent import CodeAgent
+
+    task = free_task(args.world, args.instruction) if args.world else get_task(args.task, args.suite)
+    program = CodeAgent(llm).write_program(task.query_for(args.instruction)).program
+    if args.show_code:
+        print(program)
+    return run_on_running_robot(args, program, task.world)
 
 
 def cmd_demo(args: argparse.Namespace) -> int:
@@ -386,6 +410,7 @@ def _resolve_perception(args: argparse.Namespace) -> None:
 
 def build_parser() -> argparse.ArgumentParser:
     from roboscript.bench.metrics import METRICS
+    from roboscript.cli_robot import add_replay_command, add_robot_options
     from roboscript.demo import DEMO_TASK
 
     parser = argparse.ArgumentParser(prog="roboscript", description=__doc__)
@@ -427,9 +452,12 @@ def build_parser() -> argparse.ArgumentParser:
     tasks.set_defaults(func=cmd_tasks)
     run = sub.add_parser("exec", help="run a program on a task's world and evaluate it")
     run.add_argument("program", help="a Python file written against the tool API")
-    run.add_argument("--task", required=True, help="a task id (see `roboscript tasks`)")
+    scene = run.add_mutually_exclusive_group(required=True)
+    scene.add_argument("--task", help="a task id (see `roboscript tasks`): its world, and its checks")
+    scene.add_argument("--world", help="a world name or file to act in; without a task nothing is checked")
     run.add_argument("--video", default=None, help="record camera_left into this MP4 file")
     _add_run_options(run)
+    add_robot_options(run)
     run.set_defaults(func=cmd_exec)
     ask = sub.add_parser("run", help="have an LLM write a program for an instruction, run it and evaluate it")
     ask.add_argument("instruction", help="what the robot should do, in words")
@@ -451,7 +479,9 @@ def build_parser() -> argparse.ArgumentParser:
     )
     ask.add_argument("--video", default=None, help="record camera_left into this MP4 file")
     _add_run_options(ask)
+    add_robot_options(ask)
     ask.set_defaults(func=cmd_run, trials=1)
+    add_replay_command(sub)
     report = sub.add_parser("report", help="benchmark runs side by side (policies, perception modes, robots)")
     report.add_argument("runs", nargs="+", help="run directories written by `roboscript bench`")
     report.add_argument(
@@ -493,8 +523,15 @@ def build_parser() -> argparse.ArgumentParser:
     return parser
 
 
+def _exit_on_sigterm(signum, frame) -> None:
+    # SystemExit unwinds like Ctrl-C does, so running trials are stopped and results written so far are kept.
+    sys.exit(128 + signum)
+
+
 def main(argv: list[str] | None = None) -> int:
     args = build_parser().parse_args(argv)
+    if args.command in ("exec", "run", "bench") and threading.current_thread() is threading.main_thread():
+        signal.signal(signal.SIGTERM, _exit_on_sigterm)
     from roboscript.errors import RoboScriptError, error_message
 
     try:

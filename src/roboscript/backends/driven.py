@@ -188,7 +188,7 @@ class DriverBackend(Backend):
                     joint_errors.append(float(np.max(lag)))
                     tcp_errors.append(self._tcp_distance(sample.actual, sample.desired))
                     if joint_errors[-1] > self.config.tracking_tolerance:
-                        joint = self.config.robot.arm_joints[int(np.argmax(lag))]
+                        joint = self.config.driver_joint(self.config.robot.arm_joints[int(np.argmax(lag))])
                         self._stop(goal)
                         raise BackendError(
                             f"tracking lost: {joint} is {joint_errors[-1]:.3f} rad from its set-point at "
@@ -270,7 +270,13 @@ class DriverBackend(Backend):
         if camera not in self.camera_names():
             raise BackendError(f"no camera named {camera!r}; cameras: {', '.join(self.camera_names()) or 'none'}")
         # A frame from before the last motion ended would show the world as it was.
-        return self.driver.camera_frame(camera, self.config.server_timeout + 2.0, self._still_since)
+        timeout = self.config.server_timeout + 2.0
+        try:
+            return self.driver.camera_frame(camera, timeout, self._still_since)
+        except DriverError:
+            # A busy machine (or network) delays images more than a wait on the clock allows for: wait once more,
+            # twice as long, before calling the camera lost.
+            return self.driver.camera_frame(camera, 2 * timeout, self._still_since)
 
     def segmentation_labels(self) -> dict[int, str]:
         return self.driver.segmentation_labels()

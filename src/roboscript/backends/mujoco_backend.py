@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import mujoco
 import numpy as np
 
 from roboscript.backends.base import Backend, BackendError, ClockListener
@@ -26,6 +27,8 @@ class MujocoBackend(Backend):
         seed: seeds pose randomisation (only used when ``randomize`` is true).
         randomize: jitter object poses by the world's ``randomize`` amounts.
         settle: simulated seconds to let the world come to rest before anything else happens.
+        start: the arm's joint positions to start from (a twin of a real robot starts where the robot is);
+            default: the robot's home.
     """
 
     def __init__(
@@ -35,6 +38,7 @@ class MujocoBackend(Backend):
         seed: int = 0,
         randomize: bool = False,
         settle: float = 1.0,
+        start: np.ndarray | None = None,
     ):
         spec = world if isinstance(world, WorldSpec) else load_world(world)
         if randomize:
@@ -47,8 +51,25 @@ class MujocoBackend(Backend):
         self._read_joints = robot_joint_readings(self.sim_world)
         self._base_pose = robot_mount(spec, self.sim_world.robot.description)
         self._listening = False
+        if start is not None:
+            self._start_at(np.asarray(start, dtype=float))
         if settle > 0:
             self.simulator.settle(settle)
+
+    def _start_at(self, q: np.ndarray) -> None:
+        binding = self.sim_world.robot
+        if q.shape != (len(binding.qpos),):
+            raise ValueError(
+                f"start: expected {len(binding.qpos)} joint positions for the {self.robot.name}, got shape {q.shape}"
+            )
+        if np.any(q < binding.joint_lower - 1e-6) or np.any(q > binding.joint_upper + 1e-6):
+            raise ValueError(
+                f"start: joint positions {np.round(q, 3).tolist()} are outside the {self.robot.name}'s limits"
+            )
+        self.sim_world.data.qpos[binding.qpos] = q
+        self.sim_world.data.qvel[binding.dof] = 0.0
+        self.simulator.hold(q)
+        mujoco.mj_forward(self.sim_world.model, self.sim_world.data)
 
     @property
     def robot(self) -> RobotDescription:

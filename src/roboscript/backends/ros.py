@@ -9,6 +9,8 @@ from pathlib import Path
 from roboscript.backends.driven import DriverBackend
 from roboscript.robot_config import RobotConfig, load_robot_config
 
+TF_CONNECT_TIMEOUT = 10.0  # seconds for the robot's base frame to appear in TF when the backend connects
+
 
 def ros_backend(
     config: RobotConfig | str | Path,
@@ -23,7 +25,9 @@ def ros_backend(
     config = config if isinstance(config, RobotConfig) else load_robot_config(config)
     driver = RosDriver(config, node_name)
     try:
-        base = driver.frame_pose(config.base_frame, timeout=config.server_timeout)
+        # TF's listener has only just started: it first connects to every publisher of /tf and /tf_static, which
+        # takes seconds on a busy machine. A frame that is really missing is reported after this long.
+        base = driver.frame_pose(config.base_frame, timeout=max(config.server_timeout, TF_CONNECT_TIMEOUT))
         return DriverBackend(driver, config, base, confirm)
     except BaseException:
         driver.close()

@@ -93,6 +93,7 @@ class RunDirectory:
         "seed": None,
         "perception": None,
         "repair_rounds": 0,
+        "backend": "mujoco",
     }
 
     def __init__(self, path: str | Path, run: dict):

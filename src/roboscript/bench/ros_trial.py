@@ -8,7 +8,10 @@ verdict.
 
 from __future__ import annotations
 
+import multiprocessing.util
 import os
+import shutil
+import subprocess
 import tempfile
 
 from roboscript.bench.tasks import Task
@@ -30,8 +33,21 @@ def _process_master() -> str:
         home = tempfile.mkdtemp(prefix="roboscript_ros_")
         process, uri = start_master(home)
         _MASTER = (process, uri, home)
+        # multiprocessing's finalizers run at the end of a trial process too, where atexit handlers do not.
+        multiprocessing.util.Finalize(None, _stop_master, args=(process, home), exitpriority=10)
         os.environ.update(ROS_MASTER_URI=uri, ROS_IP="127.0.0.1", ROS_HOME=home)
     return _MASTER[1]
+
+
+def _stop_master(process, home: str) -> None:
+    """Stops this process's master and removes its ROS home (its logs)."""
+    if process.poll() is None:
+        process.terminate()
+        try:
+            process.wait(timeout=5)
+        except subprocess.TimeoutExpired:
+            process.kill()
+    shutil.rmtree(home, ignore_errors=True)
 
 
 def ros_perception(mode: PerceptionMode) -> PerceptionMode:

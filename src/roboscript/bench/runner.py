@@ -90,42 +90,49 @@ def run_isolated(
         if on_record is not None:
             on_record(record)
 
-    while pending or running:
-        while pending and len(running) < jobs:
-            spec = pending.pop(0)
-            receiver, sender = context.Pipe(duplex=False)
-            process = context.Process(target=_child, args=(spec, sender), daemon=True)
-            sys.stdout.flush()
-            sys.stderr.flush()
-            process.start()
-            sender.close()
-            running[receiver] = (spec, process, time.perf_counter())
-        ready = wait(list(running), timeout=1.0)
-        for receiver in ready:
-            spec, process, started = running.pop(receiver)
-            try:
-                status, payload = receiver.recv()
-            except EOFError:
+    try:
+        while pending or running:
+            while pending and len(running) < jobs:
+                spec = pending.pop(0)
+                receiver, sender = context.Pipe(duplex=False)
+                process = context.Process(target=_child, args=(spec, sender), daemon=True)
+                sys.stdout.flush()
+                sys.stderr.flush()
+                process.start()
+                sender.close()
+                running[receiver] = (spec, process, time.perf_counter())
+            ready = wait(list(running), timeout=1.0)
+            for receiver in ready:
+                spec, process, started = running.pop(receiver)
+                try:
+                    status, payload = receiver.recv()
+                except EOFError:
+                    process.join(5)
+                    finish(_death(spec, process.exitcode, started))
+                    continue
                 process.join(5)
-                finish(_death(spec, process.exitcode, started))
-                continue
-            process.join(5)
-            if status == "ok":
-                finish(TrialRecord(**payload))
-            else:
-                finish(_failed(spec, f"the trial could not be run: {payload}", started))
-        now = time.perf_counter()
-        for receiver, (spec, process, started) in list(running.items()):
-            if now - started > wall_budget(spec):
-                process.kill()
-                process.join(5)
-                running.pop(receiver)
-                finish(
-                    _failed(
-                        spec,
-                        f"TimeoutError: the program ran longer than its {spec.timeout:g} s limit (killed)",
-                        started,
-                        Outcome.TIMEOUT,
+                if status == "ok":
+                    finish(TrialRecord(**payload))
+                else:
+                    finish(_failed(spec, f"the trial could not be run: {payload}", started))
+            now = time.perf_counter()
+            for receiver, (spec, process, started) in list(running.items()):
+                if now - started > wall_budget(spec):
+                    process.kill()
+                    process.join(5)
+                    running.pop(receiver)
+                    finish(
+                        _failed(
+                            spec,
+                            f"TimeoutError: the program ran longer than its {spec.timeout:g} s limit (killed)",
+                            started,
+                            Outcome.TIMEOUT,
+                        )
                     )
-                )
+    finally:
+        # An interrupted run (Ctrl-C, SIGTERM, an error here) leaves no trial running: each one's master and twin
+        # go with it (see roboscript.ros.launch).
+        for _, process, _ in running.values():
+            process.kill()
+            process.join(5)
     return records

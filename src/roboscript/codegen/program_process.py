@@ -27,6 +27,7 @@ from multiprocessing.connection import Connection
 from roboscript.codegen.outcomes import Outcome
 from roboscript.codegen.sandbox import ExecutionResult, Limits, ProgramTimeout, execute
 from roboscript.errors import UsageError
+from roboscript.processes import die_with_parent
 
 EXIT_GRACE = 10.0  # seconds past the time limit before a program's process that does not report is killed
 MAX_MESSAGE = 64 * 1024**2  # bytes of one tool call's arguments or one reply
@@ -49,8 +50,10 @@ def run_program(
     here, there = Pipe()
     sys.stdout.flush()
     sys.stderr.flush()
+    parent = os.getpid()
     pid = os.fork()
     if pid == 0:  # the program's process: never returns
+        die_with_parent(signal.SIGKILL, parent)  # a killed trial takes its program along
         _program_side(program, namespace, limits, forwarded, there, keep=there.fileno())
     there.close()
     try:

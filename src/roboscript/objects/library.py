@@ -65,8 +65,6 @@ def _register(obj: ObjectType) -> ObjectType:
     return obj
 
 
-
-
 # ---------------------------------------------------------------------------------------------------------------
 # The catalogue. Densities in kg/m^3 of the solid parts: fruit ~ 850-950, wood ~ 600, ceramic ~ 2000 (walls),
 # cardboard boxes ~ 300-500 (they are mostly air), plastic ~ 1000.

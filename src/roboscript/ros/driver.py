@@ -7,6 +7,7 @@ labelled segmentation image where one is published, and camera poses from TF.
 
 from __future__ import annotations
 
+import collections
 import json
 import threading
 import time
@@ -31,6 +32,7 @@ from roboscript.trajectory import JointTrajectory
 _NODE_LOCK = threading.Lock()
 _NODE_STARTED = False
 LABELS_TOPIC = "/roboscript/segmentation_labels"
+FRAME_HISTORY = 4  # messages kept a camera topic: enough to find a complete frame when one topic lags the others
 ENCODINGS = {"rgb8": (np.uint8, 3), "bgr8": (np.uint8, 3), "32FC1": (np.float32, 1), "16UC1": (np.uint16, 1)}
 ENCODINGS["32SC1"] = (np.int32, 1)
 _STATES = {  # actionlib's GoalStatus codes
@@ -109,7 +111,7 @@ class RosDriver(Driver):
             self._wait_for(self._gripper, gripper.action, timeout)
         self._tf = tf2_ros.Buffer()
         self._tf_listener = tf2_ros.TransformListener(self._tf)
-        self._images: dict[tuple[str, str], object] = {}
+        self._images: dict[tuple[str, str], collections.deque] = {}
         for camera in config.cameras:
             topics = {"rgb": (camera.rgb, Image), "depth": (camera.depth, Image), "info": (camera.info, CameraInfo)}
             if camera.segmentation:
@@ -148,7 +150,8 @@ class RosDriver(Driver):
     def _keeper(self, camera: str, part: str):
         def keep(message) -> None:
             with self._lock:
-                self._images[(camera, part)] = message
+                kept = self._images.setdefault((camera, part), collections.deque(maxlen=FRAME_HISTORY))
+                kept.append(message)
 
         return keep
 
@@ -224,16 +227,20 @@ class RosDriver(Driver):
         deadline = time.monotonic() + timeout
         while True:
             with self._lock:
-                messages = {p: self._images.get((camera, p)) for p in parts}
-            ready = all(m is not None for m in messages.values())
-            stamps = {m.header.stamp.to_sec() for m in messages.values()} if ready else set()
-            if ready and len(stamps) == 1 and stamps.pop() >= not_before:
+                kept = {p: list(self._images.get((camera, p), ())) for p in parts}
+            messages = _newest_complete(kept, not_before)
+            if messages is not None:
                 break
             if time.monotonic() > deadline:
-                missing = [p for p, m in messages.items() if m is None]
+                missing = [p for p, m in kept.items() if not m]
                 raise DriverError(
                     f"no complete frame from camera {camera!r} within {timeout:.1f} s"
-                    + (f" (nothing yet on {', '.join(missing)})" if missing else " (its images are not in step)")
+                    + (
+                        f" (nothing yet on {', '.join(missing)})"
+                        if missing
+                        else f" (none of the last {FRAME_HISTORY} images of each part share a stamp after "
+                        f"{not_before:.2f} s)"
+                    )
                 )
             time.sleep(0.01)
         info = messages["info"]
@@ -279,6 +286,22 @@ class RosDriver(Driver):
         for subscriber in self._subscribers:
             subscriber.unregister()
         self._subscribers.clear()
+
+
+def _newest_complete(kept: dict[str, list], not_before: float) -> dict | None:
+    """The newest set of one message a part that share a stamp at or after ``not_before``; ``None`` if none.
+
+    A camera's image, depth, info and segmentation travel on topics of their own, and under load one lags another
+    by a frame or more: the newest of each are then of different instants, while an older complete set is kept."""
+    if not all(kept.values()):
+        return None
+    by_part = {p: {m.header.stamp.to_sec(): m for m in messages} for p, messages in kept.items()}
+    common = set.intersection(*(set(stamps) for stamps in by_part.values()))
+    usable = [t for t in common if t >= not_before]
+    if not usable:
+        return None
+    newest = max(usable)
+    return {p: stamps[newest] for p, stamps in by_part.items()}
 
 
 def _goal_status(client) -> GoalStatus:

@@ -5,6 +5,7 @@ from __future__ import annotations
 
 import json
 import os
+import signal
 import socket
 import subprocess
 import sys
@@ -14,6 +15,7 @@ import uuid
 from dataclasses import dataclass, field
 
 from roboscript.drivers.base import DriverError
+from roboscript.processes import die_with_parent
 
 EVALUATE_TOPIC = "/roboscript/evaluate"
 EVALUATION_TOPIC = "/roboscript/evaluation"
@@ -21,13 +23,9 @@ START_TIMEOUT = 120.0  # seconds for ros-sim to build its world and start servin
 
 
 def _die_with_parent() -> None:
-    """In the child, before exec: Linux sends it SIGTERM when the process that started it exits, however that
-    exits (trial processes end with os._exit, which runs no clean-up), so no master or twin outlives its run."""
-    import ctypes
-    import signal
-
-    pr_set_pdeathsig = 1
-    ctypes.CDLL("libc.so.6", use_errno=True).prctl(pr_set_pdeathsig, signal.SIGTERM)
+    """Masters and twins get SIGTERM when the process that started them exits, however that exits (trial processes
+    end with os._exit, which runs no clean-up), so none outlives its run."""
+    die_with_parent(signal.SIGTERM)
 
 
 def free_port() -> int:

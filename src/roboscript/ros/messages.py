@@ -10,6 +10,8 @@ from __future__ import annotations
 
 import functools
 import importlib
+import sys
+import types
 from dataclasses import dataclass
 from pathlib import Path
 
@@ -131,20 +133,52 @@ def full_text(type_name: str) -> str:
     return "\n".join(parts)
 
 
+def _compile(core_type: str, text: str) -> dict[str, type]:
+    """The classes of ``core_type`` and every type in its full ``text``, compiled in memory.
+
+    genpy.dynamic does the same through a temporary directory it removes at exit, which a forked trial process
+    (ended with os._exit) never reaches; so its steps are taken here without the file.
+    """
+    import genmsg
+    import genmsg.msg_loader
+    from genpy.dynamic import _gen_dyn_modify_references, _gen_dyn_name, _generate_dynamic_specs
+    from genpy.generator import msg_generator
+
+    core, *dependencies = text.split(f"\n{SEPARATOR}\n")
+    context = genmsg.MsgContext.create_default()
+    specs = {core_type: genmsg.msg_loader.load_msg_from_string(context, core, core_type)}
+    for dependency in dependencies:
+        name, spec = _generate_dynamic_specs(context, specs, dependency)
+        specs[name] = spec
+    context = genmsg.MsgContext.create_default()  # registered afresh, as dependents are generated against them
+    for name, spec in specs.items():
+        context.register(name, spec)
+    source = "\n".join(
+        _gen_dyn_modify_references(line, name, list(specs))
+        for name, spec in specs.items()
+        for line in msg_generator(context, spec, {})
+    )
+    module = types.ModuleType(f"roboscript_ros_generated_{core_type.replace('/', '_')}")
+    exec(compile(source, f"<generated {core_type}>", "exec"), module.__dict__)
+    sys.modules[module.__name__] = module
+    classes = {}
+    for name, spec in specs.items():
+        cls = getattr(module, _gen_dyn_name(*genmsg.package_resource_name(name)))
+        cls._spec = spec
+        classes[name] = cls
+    return classes
+
+
 @functools.cache
 def message_class(type_name: str) -> type:
     """The class of message ``type_name`` (``control_msgs/GripperCommand``)."""
-    import genpy.dynamic
-
-    return genpy.dynamic.generate_dynamic(type_name, full_text(type_name))[type_name]
+    return _compile(type_name, full_text(type_name))[type_name]
 
 
 @functools.cache
 def action_types(action_name: str) -> ActionTypes:
     """The classes of action ``action_name`` (``control_msgs/FollowJointTrajectory``)."""
-    import genpy.dynamic
-
-    classes = genpy.dynamic.generate_dynamic(f"{action_name}Action", full_text(f"{action_name}Action"))
+    classes = _compile(f"{action_name}Action", full_text(f"{action_name}Action"))
     return ActionTypes(
         classes[f"{action_name}Action"],
         classes[f"{action_name}Goal"],

@@ -20,17 +20,19 @@ import threading
 import time
 from dataclasses import dataclass, field
 
-import mujoco
 import numpy as np
 
 from roboscript.backends.mujoco_backend import MujocoBackend
 from roboscript.robot_config import RobotConfig
 from roboscript.ros.messages import action_types
-from roboscript.sim.cameras import Renderer, camera_pose_opencv, pinhole_intrinsics
+from roboscript.ros.sim_cameras import OPTICAL_FRAME, CameraPublisher
+from roboscript.sim.cameras import camera_pose_opencv
 from roboscript.trajectory import JointTrajectory
 
 FEEDBACK_RATE = 20.0  # Hz of simulated time: trajectory feedback
-OPTICAL_FRAME = "{camera}_color_optical_frame"
+# A push on the arm, for fault tests (a collision, a person's hand): JSON {"force": [fx, fy, fz], "duration": s},
+# newtons on the body that carries the TCP, world frame, for that many simulated seconds.
+DISTURB_TOPIC = "/roboscript/disturb"
 
 
 class _Preempted(Exception):
@@ -61,6 +63,7 @@ class RosSimServer:
         import rospy
         from rosgraph_msgs.msg import Clock
         from sensor_msgs.msg import CameraInfo, Image, JointState
+        from std_msgs.msg import String
 
         if real_time_factor <= 0 or state_rate <= 0 or camera_rate <= 0:
             raise ValueError(
@@ -110,13 +113,13 @@ class RosSimServer:
 
         self._checks = checks
         if checks is not None:
-            from std_msgs.msg import String
-
             from roboscript.ros.launch import EVALUATE_TOPIC, EVALUATION_TOPIC
 
             self._evaluation = rospy.Publisher(EVALUATION_TOPIC, String, queue_size=5, latch=True)
             self._evaluate = rospy.Subscriber(EVALUATE_TOPIC, String, self._on_goal("evaluate"), queue_size=5)
-        self._cameras = _CameraPublisher(backend, config, Image, CameraInfo, labels_topic, self._stop)
+        self._disturbance: tuple[np.ndarray, float] | None = None  # (force on the TCP's body, until when)
+        self._disturb = rospy.Subscriber(DISTURB_TOPIC, String, self._on_disturb, queue_size=5)
+        self._cameras = CameraPublisher(backend, config, Image, CameraInfo, labels_topic, self._stop)
         self._next_camera = 0.0
         self._publish_static_frames()
         self._trajectory_goal: tuple[JointTrajectory, list[str], float] | None = None  # the one being run
@@ -144,6 +147,16 @@ class RosSimServer:
             return
         if current.handle.get_goal_id().id == handle.get_goal_id().id:
             current.cancelled.set()
+
+    def _on_disturb(self, message) -> None:
+        try:
+            asked = json.loads(message.data)
+            force = np.array(asked["force"], dtype=float).reshape(3)
+            duration = float(asked["duration"])
+        except (ValueError, KeyError, TypeError) as exc:
+            self._rospy.logerr("ros-sim: %s wants {'force': [fx, fy, fz], 'duration': s}: %s", DISTURB_TOPIC, exc)
+            return
+        self._disturbance = (force, self.simulator.time + duration)
 
     # --- the simulation's thread ---
 
@@ -297,6 +310,8 @@ class RosSimServer:
 
     def _on_tick(self, simulator) -> None:
         now = simulator.time
+        if self._disturbance is not None:
+            self._push(simulator, now)
         if now >= self._next_state:
             self._publish_state(now)
             self._next_state = now + self.state_period
@@ -313,6 +328,14 @@ class RosSimServer:
         ahead = (now - self._sim_start) / self.rtf - (time.monotonic() - self._wall_start)
         if ahead > 0:
             time.sleep(ahead)
+
+    def _push(self, simulator, now: float) -> None:
+        force, until = self._disturbance
+        model, data = simulator.model, simulator.data
+        body = model.site_bodyid[self.backend.sim_world.robot.tcp_site]
+        data.xfrc_applied[body, :3] = force if now < until else 0.0
+        if now >= until:
+            self._disturbance = None
 
     def _stamp(self, now: float):
         return self._rospy.Time.from_sec(now)
@@ -370,99 +393,6 @@ class RosSimServer:
             message.transforms.append(t)
         self._tf_static = rospy.Publisher("/tf_static", TFMessage, queue_size=1, latch=True)
         self._tf_static.publish(message)
-
-
-class _CameraPublisher(threading.Thread):
-    """Renders and publishes the cameras from a copy of the simulation's state, in a thread of its own (a renderer's
-    GL context belongs to the thread that made it)."""
-
-    def __init__(self, backend: MujocoBackend, config: RobotConfig, image_type, info_type, labels_topic, stop):
-        import rospy
-        from std_msgs.msg import String
-
-        super().__init__(daemon=True, name="ros-sim cameras")
-        self.backend, self.config, self._stop = backend, config, stop
-        self._image, self._info = image_type, info_type
-        model = backend.sim_world.model
-        self._snapshot = mujoco.MjData(model)
-        self._lock = threading.Lock()
-        self._fresh = threading.Event()
-        self._stamp = 0.0
-        self._specs = {c.name: c for c in backend.sim_world.spec.cameras}
-        self._publishers = {}
-        for camera in config.cameras:
-            if camera.name not in self._specs:
-                continue  # the configuration names a camera this world lacks: it is simply not served
-            self._publishers[camera.name] = (
-                rospy.Publisher(camera.rgb, image_type, queue_size=2),
-                rospy.Publisher(camera.depth, image_type, queue_size=2),
-                rospy.Publisher(camera.info, info_type, queue_size=2),
-                rospy.Publisher(camera.segmentation, image_type, queue_size=2) if camera.segmentation else None,
-            )
-        labels = json.dumps({str(k): v for k, v in backend.segmentation_labels().items()})
-        self._labels = rospy.Publisher(config.segmentation_labels or labels_topic, String, queue_size=1, latch=True)
-        self._labels.publish(String(data=labels))
-
-    def _wanted(self) -> bool:
-        return any(p.get_num_connections() for pubs in self._publishers.values() for p in pubs if p is not None)
-
-    def offer(self, simulator, now: float) -> None:
-        """Called on the simulation's thread: takes a copy of the state to render, if anyone listens."""
-        if not self._publishers or self._fresh.is_set() or not self._wanted():
-            return
-        with self._lock:
-            mujoco.mj_copyData(self._snapshot, simulator.model, simulator.data)
-            self._stamp = now
-        self._fresh.set()
-
-    def run(self) -> None:
-        import rospy
-
-        world = self.backend.sim_world
-        renderers: dict[tuple[int, int], Renderer] = {}
-        while not self._stop.is_set() and not rospy.is_shutdown():
-            if not self._fresh.wait(timeout=0.1):
-                continue
-            with self._lock:
-                data = mujoco.MjData(world.model)
-                mujoco.mj_copyData(data, world.model, self._snapshot)
-                stamp = rospy.Time.from_sec(self._stamp)
-            self._fresh.clear()
-            for name, (rgb_pub, depth_pub, info_pub, seg_pub) in self._publishers.items():
-                spec = self._specs[name]
-                key = (spec.width, spec.height)
-                if key not in renderers:
-                    renderers[key] = Renderer(world.model, world.geom_entity, spec.width, spec.height)
-                frame = renderers[key].capture(data, name, spec, segmentation=seg_pub is not None)
-                frame_id = OPTICAL_FRAME.format(camera=name)
-                rgb_pub.publish(self._picture(frame.rgb, "rgb8", 3, stamp, frame_id))
-                depth_pub.publish(self._picture(frame.depth.astype(np.float32), "32FC1", 4, stamp, frame_id))
-                if seg_pub is not None:
-                    seg_pub.publish(self._picture(frame.segmentation.astype(np.int32), "32SC1", 4, stamp, frame_id))
-                info_pub.publish(self._camera_info(spec, stamp, frame_id))
-        for renderer in renderers.values():
-            renderer.close()
-
-    def _picture(self, array: np.ndarray, encoding: str, pixel_bytes: int, stamp, frame_id: str):
-        image = self._image()
-        image.header.stamp, image.header.frame_id = stamp, frame_id
-        image.height, image.width = array.shape[:2]
-        image.encoding, image.is_bigendian = encoding, 0
-        image.step = image.width * pixel_bytes
-        image.data = np.ascontiguousarray(array).tobytes()
-        return image
-
-    def _camera_info(self, spec, stamp, frame_id: str):
-        info = self._info()
-        info.header.stamp, info.header.frame_id = stamp, frame_id
-        info.height, info.width = spec.height, spec.width
-        k = pinhole_intrinsics(spec.fovy, spec.width, spec.height)
-        info.distortion_model = "plumb_bob"
-        info.D = [0.0] * 5
-        info.K = [float(v) for v in k.flatten()]
-        info.R = [1.0, 0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 1.0]
-        info.P = [k[0, 0], 0.0, k[0, 2], 0.0, 0.0, k[1, 1], k[1, 2], 0.0, 0.0, 0.0, 1.0, 0.0]
-        return info
 
 
 def serve(

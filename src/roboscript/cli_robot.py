@@ -1,0 +1,154 @@
+"""The command line's side of a run on a robot that is already running (``exec`` and ``run`` with ``--master``):
+its options, their checks, the confirmation prompt, and the report."""
+
+from __future__ import annotations
+
+import argparse
+import json
+import os
+import sys
+import time
+from collections.abc import Callable
+from pathlib import Path
+
+from roboscript.errors import UsageError
+
+ROBOT_ONLY = ("dry_run", "validate_in_sim", "yes", "log_dir")
+
+
+def add_robot_options(parser: argparse.ArgumentParser) -> None:
+    group = parser.add_argument_group("a robot that is already running (a real arm, or a ros-sim you started)")
+    group.add_argument(
+        "--master",
+        default=None,
+        metavar="URI",
+        help="with --backend ros: drive the robot on this ROS master (http://HOST:PORT, or 'env' for "
+        "$ROS_MASTER_URI) instead of serving the world on a master of each trial's own",
+    )
+    group.add_argument(
+        "--dry-run",
+        action="store_true",
+        help="look, build the twin of the scene as perceived, run the program on it and write its planned "
+        "trajectories and a video; send nothing to the robot",
+    )
+    group.add_argument(
+        "--validate-in-sim",
+        action="store_true",
+        help="run the program on the twin of the scene first; send it to the robot only if it succeeded there",
+    )
+    group.add_argument("--yes", action="store_true", help="do not ask for confirmation before the first motion")
+    group.add_argument(
+        "--log-dir", default=None, help="where the run's log (run.bag) and the twin's files go; default out/robot/TIME"
+    )
+
+
+def robot_requested(args: argparse.Namespace) -> bool:
+    """Whether the command is to drive a running robot; refuses robot-only options without ``--master``."""
+    if getattr(args, "master", None) is None:
+        given = [f"--{name.replace('_', '-')}" for name in ROBOT_ONLY if getattr(args, name, None)]
+        if given:
+            raise UsageError(f"{', '.join(given)} only apply to a running robot: add --backend ros --master URI")
+        return False
+    if args.backend != "ros":
+        raise UsageError("--master names a ROS master: add --backend ros")
+    if args.video:
+        raise UsageError("--video records a simulation; on a robot, --dry-run or --validate-in-sim film the twin")
+    return True
+
+
+def confirmation(args: argparse.Namespace) -> Callable[[str], bool]:
+    """How the first motion is confirmed: not at all with ``--yes``, else by asking on the terminal; without one
+    (a pipe, a CI job) the run is refused before it connects, rather than waiting for an answer that cannot come."""
+    if args.yes or args.dry_run:
+        return lambda question: True
+    if not sys.stdin.isatty():
+        raise UsageError(
+            "the robot's first motion must be confirmed and there is no terminal to ask on: run it in a terminal, "
+            "or pass --yes"
+        )
+
+    def ask(question: str) -> bool:
+        return input(f"{question} [y/N] ").strip().lower() in ("y", "yes")
+
+    return ask
+
+
+def run_on_running_robot(args: argparse.Namespace, program: str, scene_ref: str) -> int:
+    """Runs ``program`` on the robot at ``--master`` in the scene ``scene_ref`` describes; prints what happened."""
+    from roboscript.robot_config import DEFAULT_CONFIGS, load_robot_config
+    from roboscript.robot_run import RobotRunPlan, run_on_robot
+    from roboscript.sim.world_catalog import load_world
+
+    confirm = confirmation(args)
+    uri = os.environ.get("ROS_MASTER_URI") if args.master == "env" else args.master
+    if not uri:
+        raise UsageError("--master env: ROS_MASTER_URI is not set")
+    os.environ["ROS_MASTER_URI"] = uri
+    config = load_robot_config(args.robot_config or DEFAULT_CONFIGS[args.robot])
+    out = Path(args.log_dir or Path("out/robot") / time.strftime("%Y%m%d-%H%M%S"))
+    plan = RobotRunPlan(
+        config,
+        load_world(scene_ref),
+        args.perception,
+        out,
+        dry_run=args.dry_run,
+        validate_in_sim=args.validate_in_sim,
+        timeout=args.timeout,
+        seed=args.seed,
+    )
+    progress = (lambda line: None) if args.json else (lambda line: print(line, flush=True))
+    progress(f"robot: {config.name} on {uri}; log: {out / 'run.bag'}")
+    result = run_on_robot(program, plan, confirm, progress)
+    if args.json:
+        print(json.dumps(result.to_dict()))
+    else:
+        if result.result is not None:
+            print(f"robot: {result.result.outcome.value}" + (f": {result.result.error}" if result.result.error else ""))
+        if result.stopped:
+            print(result.stopped)
+        if result.twin is not None:
+            print("twin's files: " + ", ".join(str(f) for f in result.twin.files))
+        print(f"log: {result.log} (replay it: roboscript replay {result.log} --world {scene_ref})")
+    return 0 if result.ok else 1
+
+
+def add_replay_command(sub) -> None:
+    replay = sub.add_parser("replay", help="replay a robot run's log (run.bag) on the simulated twin")
+    replay.add_argument("log", help="a run's log, as `exec`/`run --master` write it")
+    replay.add_argument("--world", required=True, help="the twin's world: the scene's description (name or file)")
+    replay.add_argument("--robot-config", default=None, help="default: the one the log names")
+    replay.add_argument("--seed", type=int, default=0, help="with --randomize: the world's randomisation")
+    replay.add_argument("--randomize", action="store_true", help="jitter the world's objects as a trial would")
+    replay.add_argument("--video", default=None, help="record the replay into this MP4 file")
+    replay.add_argument("--tolerance", type=float, default=0.05, help="radians: where twin and robot count as parted")
+    replay.add_argument("--json", action="store_true", help="print one JSON object")
+    replay.set_defaults(func=cmd_replay)
+
+
+def cmd_replay(args: argparse.Namespace) -> int:
+    from roboscript.ros.replay import read_run_log, replay_on_twin, replay_report
+
+    record = read_run_log(args.log, args.robot_config)
+    steps = replay_on_twin(record, args.world, seed=args.seed, randomize=args.randomize, video=args.video)
+    if args.json:
+        print(
+            json.dumps(
+                {
+                    "commands": len(steps),
+                    "tool_calls": len(record.tool_calls),
+                    "outcome": record.outcome,
+                    "steps": [
+                        {
+                            "time": s.command.time,
+                            "kind": s.command.kind,
+                            "deviation": s.deviation,
+                            "twin_error": s.twin_error,
+                        }
+                        for s in steps
+                    ],
+                }
+            )
+        )
+    else:
+        print(replay_report(record, steps, args.tolerance))
+    return 0
