@@ -83,3 +83,22 @@ def test_modes_that_take_ground_truth_are_refused_on_a_backend_without_it():
             build_tools(backend, perception="gt-3d")
         with pytest.raises(BackendError, match="perception gt takes 2d, 3d, scene from ground truth"):
             build_tools(backend)
+
+
+def test_camera_perception_without_open3d_says_which_extra_to_install(monkeypatch):
+    import importlib.util
+
+    from roboscript.assembly import build_perception
+    from roboscript.errors import UsageError
+
+    real_find_spec = importlib.util.find_spec
+
+    # Test double: Open3D looks absent, as on an install without the perception extra.
+    def find_spec(name, *args):
+        return None if name == "open3d" else real_find_spec(name, *args)
+
+    monkeypatch.setattr(importlib.util, "find_spec", find_spec)
+    with MujocoBackend("world_2_pick_and_place", settle=0) as backend:
+        with pytest.raises(UsageError, match=r"perception gt-2d sees through the cameras, which needs Open3D: pip"):
+            build_perception(backend, "gt-2d")
+        assert build_perception(backend, "gt").names()  # ground truth needs no Open3D

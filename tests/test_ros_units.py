@@ -3,10 +3,15 @@ tool calls a run's log records."""
 
 from __future__ import annotations
 
+import time
 from types import SimpleNamespace
 
 import pytest
 
+from roboscript.backends.driven import DriverBackend
+from roboscript.drivers.base import Driver, DriverError, JointStateReading
+from roboscript.geometry import Transform
+from roboscript.robot_config import load_robot_config
 from roboscript.ros.driver import _newest_complete
 from roboscript.ros.run_log import logged_namespace
 
@@ -55,3 +60,49 @@ def test_each_tool_call_is_logged_with_its_answer_or_its_error():
     ]
     assert namespace["Pose"] is SimpleNamespace  # classes and modules are not tools
     assert namespace["grasp"].__doc__ == "Grasps at pose."
+
+
+class LateSubscriberDriver(Driver):
+    """Test double of a driver whose joint-state subscriber falls behind: its reading is 5 s old until it has been
+    asked ``late_for`` times, then fresh."""
+
+    def __init__(self, names: list[str], late_for: int):
+        self.names, self.late_for, self.asked = names, late_for, 0
+
+    def joint_state(self) -> JointStateReading:
+        self.asked += 1
+        received = time.monotonic() - (5.0 if self.asked <= self.late_for else 0.0)
+        return JointStateReading(dict.fromkeys(self.names, 0.0), 0.0, received)
+
+    def now(self) -> float:
+        return time.monotonic()
+
+    def send_trajectory(self, joint_names, trajectory):
+        raise NotImplementedError
+
+    def command_gripper(self, position, closing, timeout):
+        raise NotImplementedError
+
+    def camera_names(self) -> list[str]:
+        return []
+
+    def camera_frame(self, camera, timeout, not_before):
+        raise NotImplementedError
+
+
+def test_a_stale_joint_state_is_waited_on_while_the_arm_stands_still_but_not_during_a_motion():
+    config = load_robot_config("panda_franka_ros")
+    names = [*config.arm_driver_joints(), *config.gripper.width_joints]
+    driver = LateSubscriberDriver(names, late_for=10**9)
+    backend = DriverBackend(driver, config, Transform.identity())
+    driver.late_for = driver.asked + 20  # late for 20 more polls (0.2 s), then the subscriber catches up
+    assert backend.joint_positions().shape == (7,)
+    driver.late_for = driver.asked + 20
+    with pytest.raises(DriverError, match=r"joint states are stale: the last one on /joint_states arrived 5\.\d\d s"):
+        backend._fresh_state(patience=0.0)  # as in a motion: no waiting
+    assert driver.asked == driver.late_for - 19  # asked once, and refused at once
+    driver.late_for = 10**9  # never again: lost
+    asked = driver.asked
+    with pytest.raises(DriverError, match="the robot's driver or the connection is down"):
+        backend.joint_positions()
+    assert driver.asked > asked + 1  # it kept asking through its patience before giving up

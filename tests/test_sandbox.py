@@ -171,3 +171,15 @@ def test_too_much_data_for_a_tool_is_refused_in_the_program():
     program = "where(list(range(3 * 10 ** 7)))"
     result = run_program(program, {"where": len}, Limits(timeout=10), forwarded=["where"])
     assert result.outcome is Outcome.RUNTIME_ERROR and "bytes of arguments; at most" in result.error
+
+
+def test_a_time_limit_stretches_with_the_machines_load_up_to_a_cap(monkeypatch):
+    cpus = os.cpu_count() or 1
+    monkeypatch.setattr(os, "getloadavg", lambda: (2.5 * cpus, 0.0, 0.0))  # test double: a busy machine
+    limits = Limits(timeout=10.0).scaled_to_load()
+    assert limits.timeout == 25.0 and limits.asked == 10.0
+    assert limits.describe() == "10 s limit (stretched to 25 s for the machine's load)"
+    monkeypatch.setattr(os, "getloadavg", lambda: (100.0 * cpus, 0.0, 0.0))
+    assert Limits(timeout=10.0).scaled_to_load().timeout == 40.0  # an endless loop still ends
+    monkeypatch.setattr(os, "getloadavg", lambda: (0.1, 0.0, 0.0))
+    assert Limits(timeout=10.0).scaled_to_load().describe() == "10 s limit"

@@ -154,7 +154,9 @@ def run_on_robot(
                 outcome.stopped = "not sent: the run was not confirmed"
                 return outcome
             progress("running the program on the robot")
-            outcome.result = check_and_execute(program, logged_namespace(tools.namespace(), log), Limits(plan.timeout))
+            outcome.result = check_and_execute(
+                program, logged_namespace(tools.namespace(), log), Limits(plan.timeout).scaled_to_load()
+            )
             return outcome
         finally:
             log.outcome(outcome.to_dict())
@@ -202,7 +204,7 @@ def run_on_twin(
             recorder = _recorder(backend, folder / "twin.mp4", progress)
         tools = build_tools(backend, GROUND_TRUTH, seed=plan.seed)
         progress("running the program on the twin")
-        result = check_and_execute(program, tools.namespace(), Limits(plan.timeout))
+        result = check_and_execute(program, tools.namespace(), Limits(plan.timeout).scaled_to_load())
         backend.wait(0.5)
     finally:
         if recorder is not None:

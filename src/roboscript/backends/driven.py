@@ -84,15 +84,25 @@ class DriverBackend(Backend):
                 f"under 'joints' in {self.config.source or 'the robot configuration'})"
             )
 
-    def _fresh_state(self) -> JointStateReading:
-        reading = self.driver.joint_state()
-        age = _time.monotonic() - reading.received
-        if age > self.config.state_timeout:
-            raise DriverError(
-                f"joint states are stale: the last one on {self.config.joint_states} arrived {age:.2f} s ago (more "
-                f"than the {self.config.state_timeout} s allowed); the robot's driver or the connection is down"
-            )
-        return reading
+    def _fresh_state(self, patience: float | None = None) -> JointStateReading:
+        """The latest joint state, if it is recent enough. While the arm stands still a stale one is waited on for
+        ``patience`` seconds (default: twice the state timeout) before it counts as lost: after a long computation
+        in this process (fusing depth images holds the interpreter) the subscriber's thread may simply not have run
+        yet. During a motion there is no patience: the arm is stopped at once."""
+        patience = 2 * self.config.state_timeout if patience is None else patience
+        deadline = _time.monotonic() + patience
+        while True:
+            reading = self.driver.joint_state()
+            age = _time.monotonic() - reading.received
+            if age <= self.config.state_timeout:
+                return reading
+            if _time.monotonic() >= deadline:
+                raise DriverError(
+                    f"joint states are stale: the last one on {self.config.joint_states} arrived {age:.2f} s ago "
+                    f"(more than the {self.config.state_timeout} s allowed); the robot's driver or the connection "
+                    "is down"
+                )
+            _time.sleep(POLL)
 
     def joint_states(self) -> dict[str, float]:
         positions = self._fresh_state().positions
@@ -227,7 +237,7 @@ class DriverBackend(Backend):
 
     def _fresh_state_or_stop(self, goal) -> JointStateReading:
         try:
-            return self._fresh_state()
+            return self._fresh_state(patience=0.0)
         except DriverError:
             self._stop(goal, confirmed=False)  # nothing is heard from the robot: no confirmation will come either
             raise

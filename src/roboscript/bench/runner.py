@@ -17,6 +17,7 @@ from multiprocessing.connection import wait
 
 from roboscript.bench.trial import TrialRecord, TrialSpec, run_trial
 from roboscript.codegen.outcomes import Outcome
+from roboscript.load import load_factor
 
 KILL_GRACE = 60.0  # seconds beyond the program's limit for world building and judging
 LLM_GRACE = 600.0  # seconds an LLM may take to write (or repair) one program, helpers included
@@ -117,7 +118,7 @@ def run_isolated(
                     finish(_failed(spec, f"the trial could not be run: {payload}", started))
             now = time.perf_counter()
             for receiver, (spec, process, started) in list(running.items()):
-                if now - started > wall_budget(spec):
+                if now - started > wall_budget(spec) * load_factor():  # the trial's own limit scaled alike
                     process.kill()
                     process.join(5)
                     running.pop(receiver)

@@ -126,7 +126,8 @@ def run_trial(spec: TrialSpec) -> TrialRecord:
             if program is None:  # the LLM could not be asked
                 result = author.failure
             else:
-                result = check_and_execute(program, world.namespace, Limits(spec.timeout, spec.memory_limit))
+                limits = Limits(spec.timeout, spec.memory_limit).scaled_to_load()
+                result = check_and_execute(program, world.namespace, limits)
             attempt = world.judge(result)
         attempt["program"] = program if spec.llm is not None else None
         attempts.append(attempt)

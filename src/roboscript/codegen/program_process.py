@@ -207,7 +207,7 @@ class _ToolSide:
     def _kill(self) -> ExecutionResult:
         with contextlib.suppress(ProcessLookupError):
             os.kill(self.pid, signal.SIGKILL)
-        error = f"TimeoutError: the program ran longer than its {self.limits.timeout:g} s limit (its process killed)"
+        error = f"TimeoutError: the program ran longer than its {self.limits.describe()} (its process killed)"
         return ExecutionResult(Outcome.TIMEOUT, error, "")
 
     def _died(self, cause: BaseException) -> ExecutionResult:

@@ -14,7 +14,7 @@ import signal
 import sys
 import traceback
 import types
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
 import numpy as np
 
@@ -85,6 +85,19 @@ class Limits:
     timeout: float = 300.0
     memory: int = 2 * 1024**3
     cpu_margin: float = 30.0
+    asked: float | None = None  # the time limit as set, where the load stretched ``timeout``
+
+    def scaled_to_load(self) -> Limits:
+        """These limits with the time limit stretched by the machine's load (see :mod:`roboscript.load`)."""
+        from roboscript.load import load_factor
+
+        return replace(self, timeout=self.timeout * load_factor(), asked=self.asked or self.timeout)
+
+    def describe(self) -> str:
+        """The time limit as the user set it, and how much the load stretched it."""
+        if self.asked is None or abs(self.timeout - self.asked) < 0.05:
+            return f"{self.timeout:g} s limit"
+        return f"{self.asked:g} s limit (stretched to {self.timeout:.0f} s for the machine's load)"
 
 
 @dataclass(frozen=True)
@@ -134,7 +147,7 @@ def execute(program: str, namespace: dict, limits: Limits = Limits()) -> Executi
             outcome, error = Outcome.OK, None
         except ProgramTimeout:
             outcome = Outcome.TIMEOUT
-            error = f"TimeoutError: the program ran longer than its {limits.timeout:g} s limit"
+            error = f"TimeoutError: the program ran longer than its {limits.describe()}"
         except MemoryError:
             outcome, error = Outcome.RUNTIME_ERROR, "MemoryError: the program used more memory than it may"
         except RecursionError as exc:
