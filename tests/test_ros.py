@@ -33,6 +33,7 @@ from roboscript.backends.ros import ros_backend
 from roboscript.bench.tasks import get_task
 from roboscript.drivers.base import DriverError
 from roboscript.perception.modes import perception_mode
+from roboscript.ros.driver import _advertised
 from roboscript.ros.launch import SimProcess, start_master, start_sim
 from roboscript.ros.sim_server import DISTURB_TOPIC
 from roboscript.sim.world_catalog import load_world
@@ -112,6 +113,8 @@ def test_the_backend_reads_the_served_robot_as_it_would_a_real_one(panda):
 
 
 def test_a_trajectory_and_the_gripper_run_through_their_actions(panda):
+    assert _advertised("/position_joint_trajectory_controller/follow_joint_trajectory/status")
+    assert not _advertised("/no_such_controller/follow_joint_trajectory/status")
     backend, _ = panda
     delta = np.zeros(7)
     delta[0], delta[3] = 0.3, 0.2
@@ -245,6 +248,12 @@ def test_a_robot_that_stops_publishing_mid_trajectory_ends_the_motion_with_what_
         backend.execute_trajectory(_move(backend, -delta))
     print(f"killed robot: error after {time.monotonic() - started - 0.4:.2f} s")
     sim.process.wait(timeout=10)
+    # The master still lists the killed node's topics; the driver tells a dead server from a slow one by its API.
+    import rospy
+
+    status = "/position_joint_trajectory_controller/follow_joint_trajectory/status"
+    assert status in {name for name, _ in rospy.get_published_topics()}
+    assert not _advertised(status)
 
 
 def test_a_drawer_is_opened_by_its_handle_and_boxes_put_in_it_through_exec_on_ros(tmp_path):

@@ -32,6 +32,7 @@ from roboscript.trajectory import JointTrajectory
 _NODE_LOCK = threading.Lock()
 _NODE_STARTED = False
 LABELS_TOPIC = "/roboscript/segmentation_labels"
+CONNECT_TIMEOUT = 10.0  # seconds to connect to an action server the master knows of (a busy machine is slow)
 FRAME_HISTORY = 4  # messages kept a camera topic: enough to find a complete frame when one topic lags the others
 ENCODINGS = {"rgb8": (np.uint8, 3), "bgr8": (np.uint8, 3), "32FC1": (np.float32, 1), "16UC1": (np.uint16, 1)}
 ENCODINGS["32SC1"] = (np.int32, 1)
@@ -96,19 +97,19 @@ class RosDriver(Driver):
         timeout = config.server_timeout
         self._trajectory_types = action_types("control_msgs/FollowJointTrajectory")
         self._trajectory = actionlib.SimpleActionClient(config.trajectory_action, self._trajectory_types.action)
-        self._wait_for(self._trajectory, config.trajectory_action, timeout)
+        self._wait_for(self._trajectory, config.trajectory_action, timeout, connecting=True)
         gripper = config.gripper
         if gripper.kind == "franka":
             self._move_types = action_types("franka_gripper/Move")
             self._grasp_types = action_types("franka_gripper/Grasp")
             self._move = actionlib.SimpleActionClient(f"{gripper.action}/move", self._move_types.action)
             self._grasp = actionlib.SimpleActionClient(f"{gripper.action}/grasp", self._grasp_types.action)
-            self._wait_for(self._move, f"{gripper.action}/move", timeout)
-            self._wait_for(self._grasp, f"{gripper.action}/grasp", timeout)
+            self._wait_for(self._move, f"{gripper.action}/move", timeout, connecting=True)
+            self._wait_for(self._grasp, f"{gripper.action}/grasp", timeout, connecting=True)
         else:
             self._gripper_types = action_types("control_msgs/GripperCommand")
             self._gripper = actionlib.SimpleActionClient(gripper.action, self._gripper_types.action)
-            self._wait_for(self._gripper, gripper.action, timeout)
+            self._wait_for(self._gripper, gripper.action, timeout, connecting=True)
         self._tf = tf2_ros.Buffer()
         self._tf_listener = tf2_ros.TransformListener(self._tf)
         self._images: dict[tuple[str, str], collections.deque] = {}
@@ -124,14 +125,21 @@ class RosDriver(Driver):
         self._subscribers.append(rospy.Subscriber(labels_topic, String, self._on_labels, queue_size=1))
 
     @staticmethod
-    def _wait_for(client, name: str, timeout: float) -> None:
+    def _wait_for(client, name: str, timeout: float, connecting: bool = False) -> None:
         """Waits on the wall clock: actionlib's own wait counts ROS time, which stands still when a simulated
-        robot that publishes /clock is gone."""
-        deadline = time.monotonic() + timeout
+        robot that publishes /clock is gone.
+
+        ``connecting``: the first wait, while this node's connections to the server are still being made. A server
+        the master does not know of fails after ``timeout``; one it knows of, which a busy machine may take seconds
+        to connect to, is waited on up to ``CONNECT_TIMEOUT``."""
+        started, known = time.monotonic(), None
         while not _server_ready(client):
-            if time.monotonic() > deadline:
+            waited = time.monotonic() - started
+            if waited > timeout and connecting and known is None:
+                known = _advertised(f"{name}/status")  # asked once: the master's answer does not change meanwhile
+            if waited > timeout and not (known and waited < CONNECT_TIMEOUT):
                 raise DriverError(
-                    f"no action server at {name} within {timeout:.1f} s: is the robot's driver (or "
+                    f"no action server at {name} within {waited:.1f} s: is the robot's driver (or "
                     "`roboscript ros-sim`) running on this ROS master, and is this its action's name?"
                 )
             time.sleep(0.01)
@@ -302,6 +310,29 @@ def _newest_complete(kept: dict[str, list], not_before: float) -> dict | None:
         return None
     newest = max(usable)
     return {p: stamps[newest] for p, stamps in by_part.items()}
+
+
+def _advertised(topic: str) -> bool:
+    """Whether a live node publishes ``topic``: the master lists it, and the node's own API still accepts a
+    connection (a node that was killed stays listed on the master). A master that does not answer knows of none."""
+    import socket
+    from urllib.parse import urlparse
+
+    import rosgraph
+
+    try:
+        master = rosgraph.Master("/roboscript_probe")
+        publishers = next((nodes for name, nodes in master.getSystemState()[0] if name == topic), [])
+        for node in publishers:
+            api = urlparse(master.lookupNode(node))
+            try:
+                socket.create_connection((api.hostname, api.port), timeout=0.5).close()
+                return True
+            except OSError:
+                continue
+    except Exception:  # the master gone or unreachable
+        return False
+    return False
 
 
 def _goal_status(client) -> GoalStatus:
