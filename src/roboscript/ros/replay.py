@@ -79,9 +79,13 @@ def _json_messages(bag, topic: str) -> list[tuple[float, dict]]:
 
 
 def _raw(bag, topic: str, type_name: str):
+    """``(time, message)`` of an action goal topic. The time is the goal's own stamp, set by the sender when it
+    sent it: the bag's time is when the log's node heard it, which on a busy machine is after the robot started."""
     cls = message_class(type_name)
     for _, (_, data, _, _, _), t in bag.read_messages(topics=[topic], raw=True):
-        yield t.to_sec(), cls().deserialize(data)
+        message = cls().deserialize(data)
+        sent = message.header.stamp.to_sec()
+        yield (sent if sent > 0 else t.to_sec()), message
 
 
 def _commands(bag, config: RobotConfig, start: float) -> list[Command]:
