@@ -102,3 +102,11 @@ def test_camera_perception_without_open3d_says_which_extra_to_install(monkeypatc
         with pytest.raises(UsageError, match=r"perception gt-2d sees through the cameras, which needs Open3D: pip"):
             build_perception(backend, "gt-2d")
         assert build_perception(backend, "gt").names()  # ground truth needs no Open3D
+
+
+def test_a_capture_without_colour_has_the_same_depth_and_segmentation(backend):
+    full = backend.capture("camera_right")
+    plain = backend.capture("camera_right", color=False)
+    assert plain.rgb is None and full.rgb is not None
+    assert np.array_equal(plain.depth, full.depth) and np.array_equal(plain.segmentation, full.segmentation)
+    assert np.allclose(plain.extrinsics.matrix(), full.extrinsics.matrix())

@@ -18,7 +18,7 @@ class CameraFrame:
     """One RGB-D(-S) capture: images plus the calibration that perception needs."""
 
     name: str
-    rgb: np.ndarray  # (H, W, 3) uint8
+    rgb: np.ndarray | None  # (H, W, 3) uint8; None when captured without colour (Backend.capture's color)
     depth: np.ndarray  # (H, W) float32, metres; 0 where nothing was hit
     segmentation: np.ndarray | None  # (H, W) int32 label index, -1 for background and unnamed things
     intrinsics: np.ndarray  # (3, 3)

@@ -30,6 +30,7 @@ from roboscript.perception.grasp_detection import (
     score_grasp,
 )
 from roboscript.perception.grasp_heuristics import GraspError, central_lift_grasps, horizontal_grasps
+from roboscript.phases import timed
 from roboscript.planning.cartesian import arc_poses
 from roboscript.planning.contacts import ContactAllowances
 from roboscript.planning.errors import IKError, PlanningError
@@ -162,6 +163,7 @@ class ToolAPI:
         return self.perception.plane_normal(self._name(object_name), _vector(position, "position"))
 
     @tool
+    @timed("grasp")
     def parse_central_lift_grasp_pose(self, object_name: str, description: str = "top") -> Pose:
         """A top-down grasp at the box centre in x, y; z near the top ("top") or at mid height ("center")."""
         name = self._name(object_name)
@@ -169,6 +171,7 @@ class ToolAPI:
         return Pose.from_transform(self._first_reachable(name, candidates, "central lift"))
 
     @tool
+    @timed("grasp")
     def parse_horizontal_grasp_pose(self, object_name: str, approach_direction: Sequence[float] | None = None) -> Pose:
         """A grasp approaching horizontally (handles, upright objects), along ``approach_direction`` if given."""
         name = self._name(object_name)
@@ -177,6 +180,7 @@ class ToolAPI:
         return Pose.from_transform(self._first_reachable(name, candidates, "horizontal"))
 
     @tool
+    @timed("grasp")
     def parse_adaptive_shape_grasp_pose(
         self,
         object_name: str,
@@ -351,6 +355,7 @@ class ToolAPI:
         self.contacts.withdraw_cleared(self.held)
 
     @tool
+    @timed("place")
     def parse_place_pose(
         self, object_name: str, receptacle_name: str | None = None, position: Sequence[float] | None = None
     ) -> Pose:

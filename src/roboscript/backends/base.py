@@ -93,8 +93,12 @@ class Backend(ABC):
         """Names of the RGB-D cameras, in rig order."""
 
     @abstractmethod
-    def capture(self, camera: str) -> CameraFrame:
-        """One RGB-D frame with calibration; segmentation only where the backend can provide it."""
+    def capture(self, camera: str, color: bool = True) -> CameraFrame:
+        """One RGB-D frame with calibration; segmentation only where the backend can provide it.
+
+        ``color=False`` says the colour image will not be looked at: a backend that must make it (a simulator
+        renders it, at more than half a capture's cost) may then leave it out (``rgb`` None); others send it anyway.
+        """
 
     def segmentation_labels(self) -> dict[int, str]:
         """What the segmentation images of :meth:`capture` label: index -> name (``robot`` for the robot's own

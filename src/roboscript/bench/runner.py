@@ -64,10 +64,13 @@ def _death(spec: TrialSpec, exitcode: int | None, started: float) -> TrialRecord
 
 def trial_context() -> mp.context.BaseContext:
     """Trials start from a fork server: a clean process that has imported the simulator and the tools but run
-    nothing. Forking the caller itself would copy whatever state it is in, and a process that has run OpenMP
-    code (Open3D's fusion) hangs its forked children the moment they run OpenMP code too."""
+    nothing but compile each robot once (:mod:`roboscript.bench.warm`: a trial then builds its world in a third
+    of a second instead of four). Forking the caller itself would copy whatever state it is in, and a process that
+    has run OpenMP code (Open3D's fusion) hangs its forked children the moment they run OpenMP code too."""
     context = mp.get_context("forkserver")
-    context.set_forkserver_preload(["roboscript.bench.trial", "roboscript.api", "roboscript.backends.mujoco_backend"])
+    context.set_forkserver_preload(
+        ["roboscript.bench.trial", "roboscript.api", "roboscript.backends.mujoco_backend", "roboscript.bench.warm"]
+    )
     return context
 
 

@@ -17,6 +17,7 @@ from roboscript.codegen.outcomes import Outcome
 from roboscript.codegen.program_process import run_program
 from roboscript.codegen.sandbox import ExecutionResult, Limits
 from roboscript.perception.modes import GROUND_TRUTH, PerceptionMode, perception_mode
+from roboscript.phases import PhaseClock, phase
 
 MAX_OUTPUT = 4000  # characters of a program's printed output kept in its record
 BACKENDS = ("mujoco", "ros")
@@ -85,6 +86,8 @@ class TrialRecord:
     llm_exchanges: list[dict] = field(default_factory=list)  # every prompt and raw response behind it
     attempts: list[dict] = field(default_factory=list)  # with repair: every run, first (unrepaired) to last
     program_source: str | None = None  # which stored program ran (a file, or an entry of a generated-code file)
+    # Where the trial's wall time went, in seconds per phase (roboscript.phases), with "rest" and "wall".
+    phases: dict[str, float] = field(default_factory=dict)
 
     def first_attempt(self) -> TrialRecord:
         """The trial as it would have ended without repair: its first attempt (itself when there was one)."""
@@ -115,6 +118,7 @@ def run_trial(spec: TrialSpec) -> TrialRecord:
     (each attempt records into a file of its own, which replaces the video when the attempt is over).
     """
     started = time.perf_counter()
+    clock = PhaseClock()
     task = free_task(spec.world, spec.instruction) if spec.world else get_task(spec.task, spec.suite)
     attempts: list[dict] = []
     author: _Author | None = None
@@ -158,6 +162,7 @@ def run_trial(spec: TrialSpec) -> TrialRecord:
         if len(attempts) > 1 or "repair_error" in last
         else [],
         program_source=spec.program_source,
+        phases=clock.read(),
     )
 
 
@@ -182,6 +187,10 @@ class _TrialWorld:
         self.spec, self.task = spec, task
 
     def __enter__(self) -> _TrialWorld:
+        with phase("build"):
+            return self._build()
+
+    def _build(self) -> _TrialWorld:
         from roboscript.assembly import build_tools
         from roboscript.backends.mujoco_backend import MujocoBackend
 
@@ -255,7 +264,8 @@ class _Author:
         self.query, self.generation, self.failure, self.repair_error = query, None, None, None
         try:
             self.agent = CodeAgent(make_llm(llm_spec))
-            self.generation = self.agent.write_program(query)
+            with phase("llm"):
+                self.generation = self.agent.write_program(query)
         except LLMError as exc:
             self.failure = ExecutionResult(Outcome.LLM_ERROR, f"LLMError: {exc}", "")
 
@@ -268,7 +278,8 @@ class _Author:
         from roboscript.llm import LLMError
 
         try:
-            self.agent.repair(self.query, self.generation, error_report(self.generation.program, result))
+            with phase("llm"):
+                self.agent.repair(self.query, self.generation, error_report(self.generation.program, result))
         except LLMError as exc:
             self.repair_error = f"LLMError: {exc}"
             return False

@@ -17,6 +17,7 @@ import numpy as np
 
 from roboscript.geometry import Transform
 from roboscript.perception.base import ObjectPoints
+from roboscript.phases import timed
 
 
 @dataclass(frozen=True)
@@ -183,6 +184,7 @@ def pad_contact(rotation: np.ndarray, tcp: np.ndarray, points: np.ndarray, width
     return float(z.max() - z.min())
 
 
+@timed("grasp")
 def detect_grasps(
     cloud: ObjectPoints,
     scene_points: np.ndarray,

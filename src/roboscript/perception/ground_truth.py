@@ -27,6 +27,7 @@ from roboscript.perception.base import (
 )
 from roboscript.perception.footprints import footprint_of
 from roboscript.perception.points import entities_points, entity_points, robot_masks, surface_points
+from roboscript.phases import timed
 from roboscript.robot_io import CameraFrame
 from roboscript.sim.furniture import drawer_interior
 
@@ -45,6 +46,7 @@ class GroundTruthPerception(Perception):
         self._frames_time = -1.0
         self._views: dict[str, tuple[np.ndarray, np.ndarray]] = {}  # each object's fullest view, in its own frame
 
+    @timed("perceive")
     def detect(self, categories: list[str] | None = None) -> None:
         """Looks with the cameras and keeps each object's view (the rest is read from the simulator's state)."""
         self._frames = None
@@ -140,10 +142,12 @@ class GroundTruthPerception(Perception):
     def _camera_frames(self) -> list[CameraFrame]:
         now = self.backend.time()
         if self._frames is None or now != self._frames_time:
-            self._frames = [self.backend.capture(c) for c in self.backend.camera_names()]
+            # Points need depth and segmentation only; rendering colour would cost more than both.
+            self._frames = [self.backend.capture(c, color=False) for c in self.backend.camera_names()]
             self._frames_time = now
         return self._frames
 
+    @timed("perceive")
     def points(self, name: str) -> ObjectPoints:
         """What the cameras see of ``name`` now; of an object, its fullest view so far where now shows less."""
         entity = self._entity(name)
@@ -162,6 +166,7 @@ class GroundTruthPerception(Perception):
         local_points, local_normals = kept
         return ObjectPoints(pose.apply(local_points), local_normals @ pose.rotation.T)
 
+    @timed("perceive")
     def scene_points(self) -> np.ndarray:
         frames = self._camera_frames()
         return surface_points(frames, robot_masks(frames, self.world.entity("robot").index), self.point_stride)

@@ -50,6 +50,7 @@ from roboscript.perception.instances import Instance3D, fit_box, footprint_point
 from roboscript.perception.labels import PartLabels
 from roboscript.perception.observation import Observation, observe
 from roboscript.perception.points import robot_masks, surface_points
+from roboscript.phases import timed
 
 SETTLE_TIME = 0.5  # seconds given to what was let go to come to rest before looking again
 SHALLOW = 0.035  # metres: containers lower than this (plates, saucers) hold things on top, not inside
@@ -137,6 +138,7 @@ class PipelinePerception(Perception):
 
     # --- looking ----------------------------------------------------------------------------------------------
 
+    @timed("perceive")
     def detect(self, categories: list[str] | None = None) -> None:
         phrases = [normalize_phrase(c) for c in categories] if categories else list(self.vocabulary)
         if not phrases:
@@ -391,12 +393,14 @@ class PipelinePerception(Perception):
             return plane_normal_at(seen.points, np.asarray(position, dtype=float), normals=seen.normals)
         return plane_normal_at(obj.points, np.asarray(position, dtype=float))
 
+    @timed("perceive")
     def points(self, name: str) -> ObjectPoints:
         obj = self._object(name)
         if obj is None:
             return self._part(name)
         return ObjectPoints(obj.points, obj.normals)
 
+    @timed("perceive")
     def scene_points(self) -> np.ndarray:
         """The surfaces of the last look, less where objects were taken from since (they are gone from there)."""
         self._ensure_looked()

@@ -6,9 +6,11 @@ from collections.abc import Sequence
 
 import numpy as np
 
+from roboscript.phases import timed
 from roboscript.robot_io import CameraFrame
 
 
+@timed("perceive")
 def point_map(frame: CameraFrame, hidden: np.ndarray | None = None) -> np.ndarray:
     """World coordinates of every pixel, (H, W, 3); NaN where the depth is 0 (nothing seen) and where ``hidden``
     (H, W) marks a pixel (the robot's own: no surface of the scene)."""
@@ -30,6 +32,7 @@ def robot_masks(frames: Sequence[CameraFrame], robot_index: int | None) -> list[
     return [None if robot_index is None or f.segmentation is None else f.segmentation == robot_index for f in frames]
 
 
+@timed("perceive")
 def surface_points(
     frames: Sequence[CameraFrame], masks: Sequence[np.ndarray | None] | None = None, stride: int = 1
 ) -> np.ndarray:
@@ -43,6 +46,7 @@ def surface_points(
     return np.concatenate(clouds) if clouds else np.zeros((0, 3))
 
 
+@timed("perceive")
 def normal_map(points: np.ndarray, camera_position: np.ndarray) -> np.ndarray:
     """Unit normals from neighbouring pixels' points, turned towards the camera; NaN where undefined."""
     du = np.full_like(points, np.nan)
@@ -58,6 +62,7 @@ def normal_map(points: np.ndarray, camera_position: np.ndarray) -> np.ndarray:
     return n
 
 
+@timed("perceive")
 def entity_points(frames: list[CameraFrame], entity: int, stride: int = 1) -> tuple[np.ndarray, np.ndarray]:
     """Points and normals of the pixels segmented as ``entity`` in every frame.
 
@@ -67,23 +72,25 @@ def entity_points(frames: list[CameraFrame], entity: int, stride: int = 1) -> tu
     return entities_points(frames, [entity], stride)[entity]
 
 
+@timed("perceive")
 def entities_points(
     frames: list[CameraFrame], entities: Sequence[int], stride: int = 1
 ) -> dict[int, tuple[np.ndarray, np.ndarray]]:
-    """:func:`entity_points` of several entities, each frame's points and normals computed once."""
+    """:func:`entity_points` of several entities.
+
+    Points and normals are computed at the chosen pixels only, the normals from the same neighbours as
+    :func:`normal_map`'s: an object covers a few thousand of a frame's 300,000 pixels."""
     found: dict[int, tuple[list[np.ndarray], list[np.ndarray]]] = {e: ([], []) for e in entities}
     for frame in frames:
         if frame.segmentation is None:
             raise ValueError(f"frame {frame.name!r} has no segmentation; ground-truth points need it")
-        world = normals = None
+        rows, cols = np.nonzero(_inner_pixels_of_any(frame.segmentation, stride))
+        labels = frame.segmentation[rows, cols]
         for entity in entities:
-            inner = _inner_pixels(frame.segmentation == entity, stride)
-            if not inner.any():
+            mine = labels == entity
+            if not mine.any():
                 continue
-            if world is None:
-                world = point_map(frame)
-                normals = normal_map(world, frame.extrinsics.position)
-            p, nn = world[inner], normals[inner]
+            p, nn = _points_and_normals(frame, rows[mine], cols[mine])
             ok = np.isfinite(p).all(axis=1) & np.isfinite(nn).all(axis=1)
             found[entity][0].append(p[ok])
             found[entity][1].append(nn[ok])
@@ -93,13 +100,43 @@ def entities_points(
     }
 
 
-def _inner_pixels(mask: np.ndarray, stride: int) -> np.ndarray:
-    """The pixels of ``mask`` whose four neighbours are in it too, every ``stride``-th."""
-    inner = mask.copy()
-    inner[1:] &= mask[:-1]
-    inner[:-1] &= mask[1:]
-    inner[:, 1:] &= mask[:, :-1]
-    inner[:, :-1] &= mask[:, 1:]
+def _pixels_to_world(frame: CameraFrame, rows: np.ndarray, cols: np.ndarray) -> np.ndarray:
+    """World coordinates of the pixels ``(rows, cols)`` as :func:`point_map` computes them; NaN where no depth."""
+    k = frame.intrinsics
+    z = frame.depth[rows, cols].astype(float)
+    u, v = cols.astype(float), rows.astype(float)
+    camera = np.stack([(u - k[0, 2]) * z / k[0, 0], (v - k[1, 2]) * z / k[1, 1], z], axis=-1)
+    world = camera @ frame.extrinsics.rotation.T + frame.extrinsics.position
+    world[z <= 0] = np.nan
+    return world
+
+
+def _points_and_normals(frame: CameraFrame, rows: np.ndarray, cols: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """Points and :func:`normal_map`'s normals at the pixels ``(rows, cols)`` (NaN normals on the image's edge)."""
+    h, w = frame.depth.shape
+    points = _pixels_to_world(frame, rows, cols)
+    left, right = np.maximum(cols - 1, 0), np.minimum(cols + 1, w - 1)
+    up, down = np.maximum(rows - 1, 0), np.minimum(rows + 1, h - 1)
+    du = _pixels_to_world(frame, rows, right) - _pixels_to_world(frame, rows, left)
+    dv = _pixels_to_world(frame, down, cols) - _pixels_to_world(frame, up, cols)
+    du[(cols == 0) | (cols == w - 1)] = np.nan
+    dv[(rows == 0) | (rows == h - 1)] = np.nan
+    n = np.cross(du, dv)
+    with np.errstate(invalid="ignore", divide="ignore"):
+        n = n / np.linalg.norm(n, axis=-1, keepdims=True)
+    flip = np.einsum("nk,nk->n", n, frame.extrinsics.position - points) < 0
+    n[flip] *= -1
+    return points, n
+
+
+def _inner_pixels_of_any(segmentation: np.ndarray, stride: int) -> np.ndarray:
+    """The pixels whose four neighbours carry the same label as they do, every ``stride``-th: for each label, the
+    pixels inside its segment rather than on its outline."""
+    inner = np.ones(segmentation.shape, dtype=bool)
+    inner[1:] &= segmentation[1:] == segmentation[:-1]
+    inner[:-1] &= segmentation[:-1] == segmentation[1:]
+    inner[:, 1:] &= segmentation[:, 1:] == segmentation[:, :-1]
+    inner[:, :-1] &= segmentation[:, :-1] == segmentation[:, 1:]
     if stride > 1:
         keep = np.zeros_like(inner)
         keep[::stride, ::stride] = True

@@ -13,6 +13,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from roboscript.geometry import Transform, quat_from_axis_angle, rotation_angle_between
+from roboscript.phases import timed
 from roboscript.planning.kinematics import ArmKinematics
 from roboscript.planning.planner import densify, first_collision
 from roboscript.planning.scene import PlanningScene
@@ -78,6 +79,7 @@ def arc_poses(current: Transform, axis: np.ndarray, pivot: np.ndarray, n: int, a
     return poses
 
 
+@timed("planning")
 def cartesian_path(
     kinematics: ArmKinematics,
     scene: PlanningScene | None,

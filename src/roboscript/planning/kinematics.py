@@ -1,4 +1,5 @@
-"""Arm kinematics on a robot-only MuJoCo model: forward kinematics of the TCP and inverse kinematics with mink.
+"""Arm kinematics on a robot-only MuJoCo model: forward kinematics of the TCP and inverse kinematics
+(mink's frame task, its quadratic program solved directly).
 
 The model holds just the robot at its mount, so IK works on the arm's few joints rather than on every object of
 the world. Collision-aware choice among solutions is :mod:`roboscript.planning.ik`'s job.
@@ -12,8 +13,15 @@ import mink
 import numpy as np
 
 from roboscript.geometry import Transform, quat_to_matrix
+from roboscript.phases import timed
+from roboscript.planning.box_qp import solve_box_qp
 from roboscript.robots import ROBOT_PREFIX, RobotDescription
 from roboscript.robots.mujoco_model import RobotModel
+
+POSITION_COST, ORIENTATION_COST = 1.0, 0.5  # an orientation error of 1 rad weighs as 0.5 m of position error
+LM_DAMPING = 1e-3  # Levenberg-Marquardt damping, scaled by the squared weighted error
+DAMPING = 1e-4  # constant damping: steps stay bounded near singularities
+LIMIT_GAIN = 0.95  # a step may cover this share of the way to a joint's limit
 
 
 @dataclass(frozen=True)
@@ -41,9 +49,10 @@ class ArmKinematics:
         self.tcp_site_name = ROBOT_PREFIX + description.tcp_site
         self._configuration = mink.Configuration(self.model)
         self._task = mink.FrameTask(
-            self.tcp_site_name, "site", position_cost=1.0, orientation_cost=0.5, lm_damping=1e-3
+            self.tcp_site_name, "site", position_cost=POSITION_COST, orientation_cost=ORIENTATION_COST
         )
-        self._limits = [mink.ConfigurationLimit(self.model, gain=0.95)]
+        self._cost = np.array([POSITION_COST] * 3 + [ORIENTATION_COST] * 3)
+        self._arm_dofs = np.array([self.model.joint(q(j)).dofadr[0] for j in description.arm_joints])
 
     @property
     def dof(self) -> int:
@@ -53,6 +62,7 @@ class ArmKinematics:
         """The TCP pose at arm configuration ``q``."""
         return self._robot.tcp(q)
 
+    @timed("ik")
     def solve(
         self,
         target: Transform,
@@ -70,17 +80,32 @@ class ArmKinematics:
                 mink.SO3.from_matrix(quat_to_matrix(target.quaternion)), target.position
             )
         )
-        dt = 1.0
         position_error = angle_error = np.inf
         for _ in range(max_iterations):
             error = self._task.compute_error(self._configuration)
             position_error, angle_error = float(np.linalg.norm(error[:3])), float(np.linalg.norm(error[3:]))
             if position_error < position_tolerance and angle_error < angle_tolerance:
                 break
-            velocity = mink.solve_ik(
-                self._configuration, [self._task], dt, solver="daqp", damping=1e-4, limits=self._limits
-            )
-            self._configuration.integrate_inplace(velocity, dt)
+            self._configuration.integrate_inplace(self._step(error), 1.0)
         q = self._configuration.q[self._qpos].copy()
         converged = position_error < position_tolerance and angle_error < angle_tolerance
         return IKResult(np.clip(q, self.lower, self.upper), position_error, angle_error, converged)
+
+    def _step(self, error: np.ndarray) -> np.ndarray:
+        """One damped least-squares step towards the target, each joint kept within a share of the way to its
+        limits: the quadratic program mink poses (a frame task with Levenberg-Marquardt damping, a configuration
+        limit), solved directly (see :mod:`roboscript.planning.box_qp`)."""
+        # Only the arm's joints move the TCP: the others' columns are zero, and so would be their steps.
+        jacobian = self._task.compute_jacobian(self._configuration)[:, self._arm_dofs]
+        weighted_error = self._cost * -error
+        weighted = self._cost[:, None] * jacobian
+        hessian = weighted.T @ weighted
+        hessian.flat[:: hessian.shape[0] + 1] += DAMPING + LM_DAMPING * float(weighted_error @ weighted_error)
+        linear = -(weighted_error @ weighted)
+        q = self._configuration.q[self._qpos]
+        # A joint a hair outside its range (clipping leaves it on the bound) must not make zero infeasible.
+        lower = np.minimum(LIMIT_GAIN * (self.lower - q), 0.0)
+        upper = np.maximum(LIMIT_GAIN * (self.upper - q), 0.0)
+        step = np.zeros(self.model.nv)
+        step[self._arm_dofs] = solve_box_qp(hessian, linear, lower, upper)
+        return step

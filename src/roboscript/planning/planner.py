@@ -13,6 +13,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from roboscript.phases import timed
 from roboscript.planning.errors import (
     PathInCollisionError,
     PlannerTimeoutError,
@@ -175,6 +176,7 @@ class JointPlanner:
         if index >= 0:
             raise PathInCollisionError(index, len(points), self.scene.collisions(points[index]))
 
+    @timed("planning")
     def plan(
         self,
         start: np.ndarray,

@@ -21,6 +21,7 @@ import mujoco
 import numpy as np
 
 from roboscript.geometry import Transform
+from roboscript.phases import timed
 from roboscript.robots.description import RobotDescription
 from roboscript.robots.mujoco_model import RobotBinding, is_descendant
 
@@ -167,6 +168,7 @@ class PlanningScene:
         """True if the arm at ``q`` is within its limits and nothing it holds or is made of collides."""
         return self.within_limits(q) and self.is_free(q)
 
+    @timed("planning")
     def is_free(self, q: np.ndarray) -> bool:
         """True if nothing collides with the arm at ``q`` (joint limits not checked)."""
         self._place(q)
@@ -192,6 +194,7 @@ class PlanningScene:
                 return False
         return True
 
+    @timed("planning")
     def collisions(self, q: np.ndarray) -> list[tuple[str, str]]:
         """The pairs of named things in collision (closer than the padding) with the arm at ``q``."""
         self._place(q)

@@ -15,6 +15,7 @@ import mujoco
 import numpy as np
 
 from roboscript.geometry import Transform, matrix_to_quat, quat_to_mujoco
+from roboscript.phases import timed
 from roboscript.robot_io import CameraFrame
 
 
@@ -96,10 +97,12 @@ class Renderer:
         self._renderer.scene.flags[mujoco.mjtRndFlag.mjRND_SHADOW] = False
         self._renderer.scene.flags[mujoco.mjtRndFlag.mjRND_REFLECTION] = False
 
+    @timed("render")
     def rgb(self, data: mujoco.MjData, camera: str | int | mujoco.MjvCamera) -> np.ndarray:
         self._update(data, camera)
         return self._renderer.render().copy()
 
+    @timed("render")
     def depth(self, data: mujoco.MjData, camera: str | int | mujoco.MjvCamera) -> np.ndarray:
         self._renderer.enable_depth_rendering()
         try:
@@ -112,6 +115,7 @@ class Renderer:
         depth[depth >= far * 0.999] = 0.0
         return depth
 
+    @timed("render")
     def segmentation(self, data: mujoco.MjData, camera: str | int | mujoco.MjvCamera) -> np.ndarray:
         self._renderer.enable_segmentation_rendering()
         try:
@@ -126,9 +130,14 @@ class Renderer:
         return out
 
     def capture(
-        self, data: mujoco.MjData, camera: str, spec: CameraSpec | None = None, segmentation: bool = True
+        self,
+        data: mujoco.MjData,
+        camera: str,
+        spec: CameraSpec | None = None,
+        segmentation: bool = True,
+        color: bool = True,
     ) -> CameraFrame:
-        """RGB, depth and (optionally) segmentation from camera ``name`` with its calibration."""
+        """Depth, and optionally RGB and segmentation, from camera ``name`` with its calibration."""
         if spec is not None and (spec.width, spec.height) != (self.width, self.height):
             raise ValueError(
                 f"camera {camera!r} is {spec.width}x{spec.height} but this renderer renders "
@@ -137,7 +146,7 @@ class Renderer:
         intrinsics = pinhole_intrinsics(float(self._model.cam(camera).fovy[0]), self.width, self.height)
         return CameraFrame(
             name=camera,
-            rgb=self.rgb(data, camera),
+            rgb=self.rgb(data, camera) if color else None,
             depth=self.depth(data, camera),
             segmentation=self.segmentation(data, camera) if segmentation else None,
             intrinsics=intrinsics,

@@ -13,6 +13,7 @@ from collections.abc import Callable
 import mujoco
 import numpy as np
 
+from roboscript.phases import timed
 from roboscript.robot_io import ExecutionReport, GripperReport
 from roboscript.sim.world import SimWorld
 from roboscript.trajectory import JointTrajectory
@@ -130,12 +131,14 @@ class Simulator:
         for callback in self._callbacks:
             callback(self)
 
+    @timed("physics")
     def step(self, duration: float) -> None:
         """Advances ``duration`` seconds holding the current set-points."""
         n = round(duration / (self.model.opt.timestep * self.control_stride))
         for _ in range(n):
             self._tick()
 
+    @timed("physics")
     def execute(
         self,
         trajectory: JointTrajectory,
@@ -202,6 +205,7 @@ class Simulator:
             final_tcp_error=final_tcp,
         )
 
+    @timed("physics")
     def set_gripper(self, closed: float, timeout: float = 1.5) -> GripperReport:
         """Commands the gripper (0 open .. 1 closed) and steps until the fingers stop or ``timeout`` passes."""
         if not 0.0 <= closed <= 1.0:
@@ -222,6 +226,7 @@ class Simulator:
         target_width = g.max_width * (1.0 - closed)
         return GripperReport(width, closed, blocked=width > target_width + 0.004, duration=self.time - start)
 
+    @timed("physics")
     def settle(self, max_duration: float = 1.0, linear_tol: float = 0.005, angular_tol: float = 0.05) -> float:
         """Steps until every free object is at rest (speeds under the tolerances), at most ``max_duration``.
 
