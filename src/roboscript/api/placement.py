@@ -366,7 +366,17 @@ def _clear_of(spots: list, points: np.ndarray, radius: float, table_top: float) 
     band = points[(points[:, 2] > table_top + 0.005) & (points[:, 2] < table_top + 0.5)][:, :2]
     if len(band) == 0:
         return spots
-    return [s for s in spots if float(np.min(np.linalg.norm(band - s.center[:2], axis=1))) > radius]
+    # Points binned in cells as wide as the radius: only the 3x3 cells round a spot's can be that near it.
+    cells: dict[tuple[int, int], list[int]] = {}
+    for index, cell in enumerate(map(tuple, np.floor(band / radius).astype(int).tolist())):
+        cells.setdefault(cell, []).append(index)
+    kept = []
+    for s in spots:
+        cx, cy = (int(v) for v in np.floor(s.center[:2] / radius))
+        near = [i for dx in (-1, 0, 1) for dy in (-1, 0, 1) for i in cells.get((cx + dx, cy + dy), ())]
+        if not near or float(np.min(np.linalg.norm(band[near] - s.center[:2], axis=1))) > radius:
+            kept.append(s)
+    return kept
 
 
 def _same_turn(a: float, b: float) -> bool:

@@ -45,11 +45,21 @@ class Footprint:
 
 def gap(a: Footprint, b: Footprint) -> float:
     """How far apart two footprints are along the axis that separates them best (negative: they overlap)."""
-    best = -math.inf
-    ca, cb = a.corners(), b.corners()
-    for axis in np.vstack([a.axes(), b.axes()]):
-        pa, pb = ca @ axis, cb @ axis
-        best = max(best, float(pb.min() - pa.max()), float(pa.min() - pb.max()))
+    return float(gaps(a.center[None], a.yaw, a.half, b)[0])
+
+
+_SIGNS = np.array([[1, 1], [1, -1], [-1, 1], [-1, -1]])
+
+
+def gaps(centers: np.ndarray, yaw: float, half: np.ndarray, other: Footprint) -> np.ndarray:
+    """:func:`gap` from each of several footprints alike but for their centres ``(N, 2)`` to ``other``."""
+    axes_a = Footprint(np.zeros(2), yaw, half).axes()
+    corners_a = np.asarray(centers)[:, None, :] + ((_SIGNS * half) @ axes_a)[None]  # (N, 4, 2)
+    corners_b = other.corners()
+    best = np.full(len(centers), -np.inf)
+    for axis in np.vstack([axes_a, other.axes()]):
+        pa, pb = corners_a @ axis, corners_b @ axis
+        best = np.maximum(best, np.maximum(pb.min() - pa.max(axis=1), pa.min(axis=1) - pb.max()))
     return best
 
 
@@ -105,19 +115,19 @@ def spots_in_receptacle(
         xs = np.arange(lo[0], hi[0] + 1e-9, step) if hi[0] - lo[0] > step else np.array([(lo[0] + hi[0]) / 2])
         ys = np.arange(lo[1], hi[1] + 1e-9, step) if hi[1] - lo[1] > step else np.array([(lo[1] + hi[1]) / 2])
         own_half = (half_xy if quarter % 2 == 0 else half_xy[::-1]) + MARGIN
-        for x in xs:
-            for y in ys:
-                world = receptacle.frame.apply(np.array([[x, y, 0.0]]))[0]
-                here = Footprint(world[:2], frame_yaw, own_half)
-                if any(gap(here, o) < 0 for o in obstacles):
-                    continue
-                center = np.array([world[0], world[1], bottom + height / 2 + DROP])
-                # Nearest the corner first; among equals, the smaller turn.
-                if near_xy is None:
-                    score = -float(np.abs(np.array([x, y]) - corner).sum()) - 0.01 * abs(turn)
-                else:
-                    score = -float(np.linalg.norm(world[:2] - near_xy)) - 0.01 * abs(turn)
-                out.append(PlacementSpot(center, turn, score))
+        grid = np.array([[x, y] for x in xs for y in ys])
+        world = receptacle.frame.apply(np.column_stack([grid, np.zeros(len(grid))]))
+        free = np.ones(len(grid), dtype=bool)
+        for o in obstacles:
+            free &= gaps(world[:, :2], frame_yaw, own_half, o) >= 0
+        for k in np.flatnonzero(free):
+            center = np.array([world[k, 0], world[k, 1], bottom + height / 2 + DROP])
+            # Nearest the corner first; among equals, the smaller turn.
+            if near_xy is None:
+                score = -float(np.abs(grid[k] - corner).sum()) - 0.01 * abs(turn)
+            else:
+                score = -float(np.linalg.norm(world[k, :2] - near_xy)) - 0.01 * abs(turn)
+            out.append(PlacementSpot(center, turn, score))
     out.sort(key=lambda s: -s.score)
     return out
 
