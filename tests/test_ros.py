@@ -64,12 +64,16 @@ def RosSim(robot: str, world: str = WORLD) -> SimProcess:
     return start_sim(world, robot, os.environ["ROS_MASTER_URI"], REAL_TIME_FACTOR)
 
 
-def _ros_processes() -> set[int]:
-    """Every rosmaster and ros-sim process on the machine."""
+def _ros_processes(tmpdir: Path | None = None) -> set[int]:
+    """Every rosmaster and ros-sim process on the machine; with ``tmpdir``, only those started with that TMPDIR
+    (a run of this test's own, not one that happens to run beside the tests)."""
     found = set()
+    marker = None if tmpdir is None else b"TMPDIR=" + str(tmpdir).encode() + b"\0"
     for entry in Path("/proc").iterdir():
         try:
             command = (entry / "cmdline").read_bytes().replace(b"\0", b" ")
+            if marker is not None and marker not in (entry / "environ").read_bytes() + b"\0":
+                continue
         except (OSError, ValueError):
             continue
         if entry.name.isdigit() and (b"rosmaster" in command or b"ros-sim" in command):
@@ -262,7 +266,6 @@ def test_a_drawer_is_opened_by_its_handle_and_boxes_put_in_it_through_exec_on_ro
     twin on its own state."""
     program = tmp_path / "moderate_0.py"
     program.write_text(get_task("moderate_0").reference_program())
-    before = _ros_processes()
     scratch = tmp_path / "tmp"
     scratch.mkdir()
     command = [sys.executable, "-m", "roboscript.cli", "exec", str(program), "--task", "moderate_0"]
@@ -283,7 +286,7 @@ def test_a_drawer_is_opened_by_its_handle_and_boxes_put_in_it_through_exec_on_ro
     ]
     print(f"moderate_0 through ROS: {trial['wall_time_s']:.1f} s of wall time")
     time.sleep(1.0)
-    assert _ros_processes() <= before  # the trial's master and twin ended with it
+    assert not _ros_processes(scratch)  # the trial's master and twin ended with it
     left = [p.name for p in scratch.iterdir() if p.name.startswith(("genpy_", "roboscript_ros_"))]
     assert left == []  # nor its ROS home or generated message modules
 
