@@ -27,8 +27,10 @@ import tempfile
 from collections import defaultdict
 from pathlib import Path
 
+from roboscript.phases import PHASES as MARKED_PHASES
+
 REPO = Path(__file__).resolve().parents[1]
-PHASES = ("build", "llm", "render", "perceive", "grasp", "place", "ik", "planning", "physics", "rest")
+PHASES = (*MARKED_PHASES, "rest")
 
 # Run in the child, with the tree under test first on the path.
 CHILD = r"""

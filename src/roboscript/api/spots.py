@@ -22,6 +22,9 @@ MARGIN = 0.007  # clearance kept from walls and from other objects
 DROP = 0.012  # the object is released this far above its support
 
 
+_SIGNS = np.array([[1, 1], [1, -1], [-1, 1], [-1, -1]])  # a rectangle's corners, in half-extents
+
+
 @dataclass(frozen=True)
 class Footprint:
     """A rectangle on the table: centre (x, y), turned by ``yaw`` radians, with half-extents along its own axes."""
@@ -39,16 +42,12 @@ class Footprint:
         return np.array([[c, s], [-s, c]])
 
     def corners(self) -> np.ndarray:
-        signs = np.array([[1, 1], [1, -1], [-1, 1], [-1, -1]])
-        return np.asarray(self.center) + (signs * self.half) @ self.axes()
+        return np.asarray(self.center) + (_SIGNS * self.half) @ self.axes()
 
 
 def gap(a: Footprint, b: Footprint) -> float:
     """How far apart two footprints are along the axis that separates them best (negative: they overlap)."""
     return float(gaps(a.center[None], a.yaw, a.half, b)[0])
-
-
-_SIGNS = np.array([[1, 1], [1, -1], [-1, 1], [-1, -1]])
 
 
 def gaps(centers: np.ndarray, yaw: float, half: np.ndarray, other: Footprint) -> np.ndarray:

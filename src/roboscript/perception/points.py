@@ -15,12 +15,8 @@ def point_map(frame: CameraFrame, hidden: np.ndarray | None = None) -> np.ndarra
     """World coordinates of every pixel, (H, W, 3); NaN where the depth is 0 (nothing seen) and where ``hidden``
     (H, W) marks a pixel (the robot's own: no surface of the scene)."""
     h, w = frame.depth.shape
-    k = frame.intrinsics
-    u, v = np.meshgrid(np.arange(w, dtype=float), np.arange(h, dtype=float))
-    z = frame.depth.astype(float)
-    camera = np.stack([(u - k[0, 2]) * z / k[0, 0], (v - k[1, 2]) * z / k[1, 1], z], axis=-1)
-    world = camera @ frame.extrinsics.rotation.T + frame.extrinsics.position
-    world[z <= 0] = np.nan
+    rows, cols = np.indices((h, w)).reshape(2, -1)
+    world = _pixels_to_world(frame, rows, cols).reshape(h, w, 3)
     if hidden is not None:
         world[hidden] = np.nan
     return world
@@ -53,12 +49,15 @@ def normal_map(points: np.ndarray, camera_position: np.ndarray) -> np.ndarray:
     dv = np.full_like(points, np.nan)
     du[:, 1:-1] = points[:, 2:] - points[:, :-2]
     dv[1:-1] = points[2:] - points[:-2]
+    return _unit_normals_facing(du, dv, points, camera_position)
+
+
+def _unit_normals_facing(du: np.ndarray, dv: np.ndarray, points: np.ndarray, camera: np.ndarray) -> np.ndarray:
+    """Unit normals ``du x dv`` at ``points`` (any leading shape, last axis xyz), each turned towards ``camera``."""
     n = np.cross(du, dv)
-    norm = np.linalg.norm(n, axis=-1, keepdims=True)
     with np.errstate(invalid="ignore", divide="ignore"):
-        n = n / norm
-    flip = np.einsum("hwk,hwk->hw", n, camera_position - points) < 0
-    n[flip] *= -1
+        n = n / np.linalg.norm(n, axis=-1, keepdims=True)
+    n[np.einsum("...k,...k->...", n, camera - points) < 0] *= -1
     return n
 
 
@@ -101,7 +100,8 @@ def entities_points(
 
 
 def _pixels_to_world(frame: CameraFrame, rows: np.ndarray, cols: np.ndarray) -> np.ndarray:
-    """World coordinates of the pixels ``(rows, cols)`` as :func:`point_map` computes them; NaN where no depth."""
+    """World coordinates of the pixels ``(rows, cols)`` (index arrays of one shape); NaN where there is no
+    depth."""
     k = frame.intrinsics
     z = frame.depth[rows, cols].astype(float)
     u, v = cols.astype(float), rows.astype(float)
@@ -121,12 +121,7 @@ def _points_and_normals(frame: CameraFrame, rows: np.ndarray, cols: np.ndarray) 
     dv = _pixels_to_world(frame, down, cols) - _pixels_to_world(frame, up, cols)
     du[(cols == 0) | (cols == w - 1)] = np.nan
     dv[(rows == 0) | (rows == h - 1)] = np.nan
-    n = np.cross(du, dv)
-    with np.errstate(invalid="ignore", divide="ignore"):
-        n = n / np.linalg.norm(n, axis=-1, keepdims=True)
-    flip = np.einsum("nk,nk->n", n, frame.extrinsics.position - points) < 0
-    n[flip] *= -1
-    return points, n
+    return points, _unit_normals_facing(du, dv, points, frame.extrinsics.position)
 
 
 def _inner_pixels_of_any(segmentation: np.ndarray, stride: int) -> np.ndarray:
