@@ -181,3 +181,38 @@ def test_ground_truth_footprints_of_things_lying_on_their_side_are_turned_rectan
         np.testing.assert_allclose(apple, [0.038, 0.038], atol=0.002)
     finally:
         backend.close()
+
+
+def test_ground_truth_renders_the_cameras_again_only_when_something_has_moved():
+    """A look at an unchanged world reuses the frames of the last look (rendering is most of a look's cost); a
+    world stepped on, or an object moved without a step, is rendered again."""
+    from roboscript.perception.ground_truth import GroundTruthPerception
+
+    backend = MujocoBackend("world_2_pick_and_place", robot="panda", settle=0.2)
+    captured = []
+    capture = backend.capture
+
+    def counting_capture(camera, color=True):  # a spy around the real capture
+        captured.append(camera)
+        return capture(camera, color)
+
+    backend.capture = counting_capture
+    try:
+        cameras = len(backend.camera_names())
+        truth = GroundTruthPerception(backend)
+        truth.detect(None)
+        first = truth.points("apple").points
+        truth.detect(None)
+        assert len(captured) == cameras  # the second look saw the same world
+        backend.wait(0.05)
+        truth.points("apple")
+        assert len(captured) == 2 * cameras
+        model, data = backend.sim_world.model, backend.sim_world.data
+        adr = model.jnt_qposadr[model.body_jntadr[model.body("apple").id]]
+        data.qpos[adr] += 0.05
+        mujoco.mj_forward(model, data)
+        moved = truth.points("apple").points
+        assert len(captured) == 3 * cameras
+        assert np.median(moved[:, 0]) - np.median(first[:, 0]) == pytest.approx(0.05, abs=0.01)
+    finally:
+        backend.close()

@@ -314,3 +314,22 @@ def test_no_robot_on_the_master_is_a_clear_error(ros_master):
     with pytest.raises(DriverError, match=r"no action server at /position_joint_trajectory_controller/follow_joint_"):
         ros_backend("panda_franka_ros")
     print(f"no robot: error after {time.monotonic() - started:.2f} s")
+
+
+def test_a_new_master_never_joins_one_already_on_its_port(ros_master, monkeypatch, tmp_path):
+    """Another run's master took the port found free: the launcher tries another instead of sharing that one
+    (two runs on one master would drive each other's robots)."""
+    import roboscript.ros.launch as launch
+
+    taken = int(ros_master.rsplit(":", 1)[1])
+    ports = iter([taken, launch.free_port()])
+    monkeypatch.setattr(launch, "free_port", lambda: next(ports))
+    process, uri = launch.start_master(str(tmp_path))
+    try:
+        assert uri != ros_master
+        import rosgraph
+
+        assert rosgraph.Master("/probe", master_uri=uri).getPid() == process.pid
+    finally:
+        process.terminate()
+        process.wait(timeout=10)

@@ -4,13 +4,23 @@ MuJoCo keeps the meshes it has decoded in a process-wide asset cache, and the ro
 compiling a world costs: about 4 s for the Panda's the first time in a process, a third of a second for a whole
 world after. The trial fork server (:func:`roboscript.bench.runner.trial_context`) imports this module, so every
 trial forked from it starts with the cache warm.
+
+Open3D, which observed perception fuses views with, takes seconds to import (it brings scikit-learn along); it is
+imported here once, where it is installed, instead of in every trial that looks.
 """
 
 from __future__ import annotations
 
+import ctypes
+import importlib.util
+import os
+
 from roboscript.geometry import Transform
 from roboscript.robots import ROBOTS
 from roboscript.robots.mujoco_model import RobotModel
+
+OMP_THREADS = "OMP_NUM_THREADS"
+OPENMP_LIBRARY = "libgomp.so.1"  # the GNU OpenMP runtime Open3D's wheel links (scikit-learn's own copy is renamed)
 
 
 def warm_robot_meshes() -> None:
@@ -19,4 +29,40 @@ def warm_robot_meshes() -> None:
         RobotModel(description, Transform.identity())
 
 
+def import_open3d() -> bool:
+    """Imports Open3D where it is installed (the ``perception`` extra); returns whether it was.
+
+    Open3D's library starts OpenMP's thread team as it loads, and a team does not survive a fork: a forked trial
+    that fuses views waits forever for threads it does not have. So OpenMP is loaded here with one thread (no team
+    is started), and each forked trial sets the number of threads it would have had (see :func:`_after_fork`).
+    SciPy and scikit-learn are imported first, outside that setting, so that their BLAS keeps its threads."""
+    if importlib.util.find_spec("open3d") is None:
+        return False
+    import scipy.linalg  # noqa: F401
+    import sklearn  # noqa: F401
+
+    chosen = os.environ.get(OMP_THREADS)
+    os.environ[OMP_THREADS] = "1"
+    try:
+        import open3d  # noqa: F401
+    finally:
+        if chosen is None:
+            del os.environ[OMP_THREADS]
+        else:
+            os.environ[OMP_THREADS] = chosen
+    os.register_at_fork(after_in_child=_after_fork)
+    return True
+
+
+def _after_fork() -> None:
+    """In a forked trial: OpenMP's threads as many as the user chose, else as many as this process may use."""
+    chosen = os.environ.get(OMP_THREADS, "")
+    threads = int(chosen) if chosen.isdigit() and int(chosen) > 0 else len(os.sched_getaffinity(0))
+    try:
+        ctypes.CDLL(OPENMP_LIBRARY).omp_set_num_threads(threads)
+    except (OSError, AttributeError):  # another OpenMP runtime: the trial fuses on one thread, slower but sound
+        pass
+
+
 warm_robot_meshes()
+import_open3d()

@@ -43,13 +43,12 @@ class GroundTruthPerception(Perception):
         self.world = self.gt.world
         self.point_stride = point_stride
         self._frames: list[CameraFrame] | None = None
-        self._frames_time = -1.0
+        self._frames_state: tuple[float, bytes] | None = None  # the world's state the frames were rendered in
         self._views: dict[str, tuple[np.ndarray, np.ndarray]] = {}  # each object's fullest view, in its own frame
 
     @timed("perceive")
     def detect(self, categories: list[str] | None = None) -> None:
         """Looks with the cameras and keeps each object's view (the rest is read from the simulator's state)."""
-        self._frames = None
         objects = [self.world.entity(n) for n in self.objects()]
         seen = entities_points(self._camera_frames(), [e.index for e in objects], self.point_stride)
         for entity in objects:
@@ -140,11 +139,13 @@ class GroundTruthPerception(Perception):
         return np.asarray(best, dtype=float)
 
     def _camera_frames(self) -> list[CameraFrame]:
-        now = self.backend.time()
-        if self._frames is None or now != self._frames_time:
+        """The cameras' frames of the world as it is now: rendered again only when something has moved since."""
+        data = self.world.data
+        state = (self.backend.time(), data.qpos.tobytes() + data.mocap_pos.tobytes() + data.mocap_quat.tobytes())
+        if self._frames is None or state != self._frames_state:
             # Points need depth and segmentation only; rendering colour would cost more than both.
             self._frames = [self.backend.capture(c, color=False) for c in self.backend.camera_names()]
-            self._frames_time = now
+            self._frames_state = state
         return self._frames
 
     @timed("perceive")

@@ -34,11 +34,27 @@ def free_port() -> int:
         return s.getsockname()[1]
 
 
+MASTER_ATTEMPTS = 5  # ports tried before giving up: another run may take a free port before our master binds it
+
+
 def start_master(ros_home: str | None = None) -> tuple[subprocess.Popen, str]:
-    """A rosmaster on a free loopback port, and its URI, once it answers; it is stopped when this process exits."""
+    """A rosmaster on a free loopback port, and its URI, once it answers; it is stopped when this process exits.
+
+    The master that answers must be the one started here (its pid is asked): a port found free can be taken by a
+    run beside this one before our master binds it, and two runs on one master would drive each other's robots."""
+    failures = []
+    for _ in range(MASTER_ATTEMPTS):
+        process, uri, why = _try_master(free_port(), ros_home)
+        if process is not None:
+            return process, uri
+        failures.append(why)
+    raise DriverError(f"no rosmaster of ours started in {MASTER_ATTEMPTS} attempts: " + "; ".join(failures))
+
+
+def _try_master(port: int, ros_home: str | None) -> tuple[subprocess.Popen | None, str, str]:
+    """(process, uri, "") when a master of ours answers on ``port``, else (None, uri, why not)."""
     import rosgraph
 
-    port = free_port()
     uri = f"http://127.0.0.1:{port}"
     env = {**os.environ, **({"ROS_HOME": ros_home} if ros_home else {})}
     process = subprocess.Popen(
@@ -52,13 +68,23 @@ def start_master(ros_home: str | None = None) -> tuple[subprocess.Popen, str]:
     deadline = time.monotonic() + 30
     while True:
         try:
-            master.getPid()
-            return process, uri
+            pid = master.getPid()
         except OSError:
-            if process.poll() is not None or time.monotonic() > deadline:
-                process.kill()
-                raise DriverError(f"rosmaster on port {port} did not start") from None
-            time.sleep(0.05)
+            pid = None
+        if pid == process.pid:
+            return process, uri, ""
+        if pid is not None or process.poll() is not None or time.monotonic() > deadline:
+            process.kill()
+            process.wait()
+            why = (
+                f"port {port} is another master's (pid {pid})"
+                if pid is not None
+                else f"rosmaster on port {port} exited with {process.returncode}"
+                if process.returncode is not None and process.returncode >= 0
+                else f"rosmaster on port {port} did not answer within 30 s"
+            )
+            return None, uri, why
+        time.sleep(0.05)
 
 
 @dataclass
