@@ -390,3 +390,34 @@ def test_ik_tries_the_given_seeds_before_random_ones(table_world):
         motion.kinematics, target, home, motion.scene, attempts=1, max_attempts=1, wanted_solutions=4, seeds=[far]
     )
     assert any(np.allclose(q, far, atol=1e-2) for q in seeded)
+
+
+class BoxedBackend(MujocoBackend):
+    """Test double: the simulation with the safety box a real arm's backend refuses motions out of."""
+
+    CEILING = TABLE + 0.95
+
+    def workspace_box(self):
+        return np.array([-1.3, -1.0, 0.8]), np.array([0.75, 1.0, self.CEILING])
+
+
+def test_plans_keep_every_link_inside_the_backends_workspace_box():
+    """A real arm's backend refuses trajectories that take a link out of its workspace box, so the planner keeps
+    inside it: an arm raised straight up is no valid configuration, and paths across the table stay below the
+    ceiling (a UR5e planned over the top would be refused by the robot, and the program fail)."""
+    backend = BoxedBackend(objects_world(), robot="ur5e", settle=0.3)
+    motion = ground_truth_motion(backend)
+    scene = motion.scene
+    upright = backend.joint_positions().copy()
+    upright[1:4] = [-np.pi / 2, 0.0, -np.pi / 2]  # shoulder, elbow and wrist in a line pointing up
+    assert not scene.is_valid(upright)
+    assert any(pair[1] == "workspace box" for pair in scene.collisions(upright))
+    start = backend.joint_positions()
+    robot_bodies = sorted(scene.robot.body_ids)
+    for x, y in ((0.1, 0.4), (0.1, -0.4), (-0.2, 0.5)):
+        goal = motion.ik(Transform(np.array([x, y, TABLE + 0.15]), DOWN), start)
+        path = motion.planner.plan(start, goal)
+        for q in densify(path.waypoints, scene.lever_arms, 0.005):
+            scene.is_free(q)  # places the arm at q
+            assert scene.data.xpos[robot_bodies, 2].max() < BoxedBackend.CEILING
+        start = goal

@@ -105,6 +105,12 @@ class Backend(ABC):
         pixels); empty where frames carry no segmentation."""
         return {}
 
+    def workspace_box(self) -> tuple[np.ndarray, np.ndarray] | None:
+        """The box (world frame: lower and upper corner, metres) that every link of the arm must stay inside, where
+        the backend refuses motions that leave one (a real arm's safety limits); None where there is none. Planners
+        keep their paths inside it, so that a motion they find is one the backend will send."""
+        return None
+
     # --- for people watching ---
 
     def render(self, camera: str, width: int, height: int) -> np.ndarray:

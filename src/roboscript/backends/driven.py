@@ -128,6 +128,10 @@ class DriverBackend(Backend):
 
     # --- motion ---
 
+    def workspace_box(self) -> tuple[np.ndarray, np.ndarray]:
+        workspace = self.config.workspace
+        return np.array(workspace.lower, dtype=float), np.array(workspace.upper, dtype=float)
+
     def check_trajectory(self, trajectory: JointTrajectory) -> JointTrajectory:
         """The trajectory as it will be sent (slowed to the speed scale), or :class:`MotionRefused` saying which
         limit it would break and where."""

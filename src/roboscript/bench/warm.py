@@ -11,6 +11,7 @@ imported here once, where it is installed, instead of in every trial that looks.
 
 from __future__ import annotations
 
+import contextlib
 import ctypes
 import importlib.util
 import os
@@ -58,10 +59,9 @@ def _after_fork() -> None:
     """In a forked trial: OpenMP's threads as many as the user chose, else as many as this process may use."""
     chosen = os.environ.get(OMP_THREADS, "")
     threads = int(chosen) if chosen.isdigit() and int(chosen) > 0 else len(os.sched_getaffinity(0))
-    try:
+    # Another OpenMP runtime than GNU's: the trial fuses on one thread, slower but sound.
+    with contextlib.suppress(OSError, AttributeError):
         ctypes.CDLL(OPENMP_LIBRARY).omp_set_num_threads(threads)
-    except (OSError, AttributeError):  # another OpenMP runtime: the trial fuses on one thread, slower but sound
-        pass
 
 
 warm_robot_meshes()

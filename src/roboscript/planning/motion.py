@@ -77,7 +77,9 @@ class MotionPlanner:
             raise ValueError("a motion planner needs a planning scene or a source of one")
         self._scene = scene
         self.kinematics = kinematics
-        self._planner = JointPlanner(scene) if scene is not None else None
+        self._planner = None
+        if scene is not None:
+            self._take(scene)
         self._world_state = world_state
         self.scene_source = scene_source
         self.speed_scale = speed_scale
@@ -93,10 +95,17 @@ class MotionPlanner:
         if self.scene_source is not None:
             fresh = self.scene_source.current()
             if self._scene is None:
-                self._scene, self._planner = fresh, JointPlanner(fresh)
+                self._take(fresh)
             elif fresh is not self._scene:
                 self._adopt(fresh)
         return self._scene
+
+    def _take(self, scene: PlanningScene) -> None:
+        """Plans in ``scene`` from now on, kept inside the backend's workspace box where it has one."""
+        box = self.backend.workspace_box()
+        if box is not None:
+            scene.keep_inside(*box)
+        self._scene, self._planner = scene, JointPlanner(scene)
 
     @property
     def planner(self) -> JointPlanner:
@@ -125,8 +134,7 @@ class MotionPlanner:
         for a, b in old.leaving_names():  # measured anew in the new scene, where the surfaces may differ a little
             if fresh.has(a) and fresh.has(b):
                 fresh.allow_leaving(a, b, q)
-        self._scene = fresh
-        self._planner = JointPlanner(fresh)
+        self._take(fresh)
 
     def world_changed(self) -> None:
         """Something was let go or moved: a scene built from observations is rebuilt before it is next used."""

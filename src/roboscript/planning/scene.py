@@ -27,6 +27,9 @@ from roboscript.robots.mujoco_model import RobotBinding, is_descendant
 
 REGRASP_LIMIT = 0.05  # metres a held object may have shifted in the hand and still be where the scene holds it
 LEAVING_TOLERANCE = 0.002  # metres a contact being left may go deeper than it started (or than touching)
+WORKSPACE_MARGIN = 0.02  # metres the arm's links keep inside a workspace box: a timed trajectory between two
+# checked configurations, and the backend's own check, must not find a link just outside it
+WORKSPACE = "workspace box"  # what a link leaving the box is reported in collision with
 
 # contype/conaffinity bits. Two geoms collide if the type of either shares a bit with the affinity of the other.
 # Moving arm links collide with everything; the environment only with the robot and held objects (objects resting on
@@ -103,8 +106,26 @@ class PlanningScene:
         self._attached_allowed: dict[str, set[int]] = {}
         self._lower, self._upper = robot.joint_lower - 1e-9, robot.joint_upper + 1e-9
         self._finger_qpos, self._finger_open = _open_finger_positions(model, robot, self._gripper_bodies)
+        self._moving_bodies = np.flatnonzero(self._is_robot & moved)  # the base stays where it is mounted
+        self._workspace: tuple[np.ndarray, np.ndarray] | None = None
 
     # --- state -----------------------------------------------------------------------------------------------
+
+    def keep_inside(self, lower: np.ndarray, upper: np.ndarray, margin: float = WORKSPACE_MARGIN) -> None:
+        """Makes configurations that put the origin of any moving link of the robot outside the box ``lower`` ..
+        ``upper`` (shrunk by ``margin``) invalid, as a real arm's safety limits would refuse them."""
+        lower, upper = np.asarray(lower, dtype=float) + margin, np.asarray(upper, dtype=float) - margin
+        if lower.shape != (3,) or upper.shape != (3,) or np.any(lower >= upper):
+            raise ValueError(f"a workspace box needs lower < upper on x, y and z (after a {margin} m margin)")
+        self._workspace = (lower, upper)
+
+    def _links_outside(self) -> list[int]:
+        """The robot's moving bodies whose origin is outside the workspace box (after :meth:`_place`)."""
+        if self._workspace is None:
+            return []
+        points = self.data.xpos[self._moving_bodies]
+        outside = np.any((points < self._workspace[0]) | (points > self._workspace[1]), axis=1)
+        return self._moving_bodies[outside].tolist()
 
     @property
     def dof(self) -> int:
@@ -172,6 +193,8 @@ class PlanningScene:
     def is_free(self, q: np.ndarray) -> bool:
         """True if nothing collides with the arm at ``q`` (joint limits not checked)."""
         self._place(q)
+        if self._workspace is not None and self._links_outside():
+            return False
         mujoco.mj_collision(self.model, self.data)
         ncon = self.data.ncon
         if ncon == 0:
@@ -198,8 +221,8 @@ class PlanningScene:
     def collisions(self, q: np.ndarray) -> list[tuple[str, str]]:
         """The pairs of named things in collision (closer than the padding) with the arm at ``q``."""
         self._place(q)
+        pairs = [(self.model.body(b).name, WORKSPACE) for b in self._links_outside()][:1]
         mujoco.mj_collision(self.model, self.data)
-        pairs = []
         moving = self._is_robot.copy()  # the robot and what it holds come first in each pair
         moving[[attachment.body for attachment in self._attached.values()]] = True
         distances = self.data.contact.dist
