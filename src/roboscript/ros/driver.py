@@ -34,6 +34,7 @@ _NODE_STARTED = False
 LABELS_TOPIC = "/roboscript/segmentation_labels"
 CONNECT_TIMEOUT = 10.0  # seconds to connect to an action server the master knows of (a busy machine is slow)
 FRAME_HISTORY = 4  # messages kept a camera topic: enough to find a complete frame when one topic lags the others
+LABELS_WAIT = 10.0  # seconds to wait for the latched labels: a busy machine delays a new subscriber's first message
 ENCODINGS = {"rgb8": (np.uint8, 3), "bgr8": (np.uint8, 3), "32FC1": (np.float32, 1), "16UC1": (np.uint16, 1)}
 ENCODINGS["32SC1"] = (np.int32, 1)
 _STATES = {  # actionlib's GoalStatus codes
@@ -281,8 +282,8 @@ class RosDriver(Driver):
         )
 
     def segmentation_labels(self) -> dict[int, str]:
-        """The labels' latched message, waited for (up to the server timeout) where cameras publish segmentation."""
-        deadline = time.monotonic() + self.config.server_timeout
+        """The labels' latched message, waited for (up to :data:`LABELS_WAIT`) where cameras publish segmentation."""
+        deadline = time.monotonic() + max(self.config.server_timeout, LABELS_WAIT)
         wanted = any(c.segmentation for c in self.config.cameras)
         while True:
             with self._lock:
