@@ -73,18 +73,19 @@ def _try_master(port: int, ros_home: str | None) -> tuple[subprocess.Popen | Non
             pid = None
         if pid == process.pid:
             return process, uri, ""
-        if pid is not None or process.poll() is not None or time.monotonic() > deadline:
-            process.kill()
-            process.wait()
-            why = (
-                f"port {port} is another master's (pid {pid})"
-                if pid is not None
-                else f"rosmaster on port {port} exited with {process.returncode}"
-                if process.returncode is not None and process.returncode >= 0
-                else f"rosmaster on port {port} did not answer within 30 s"
-            )
-            return None, uri, why
-        time.sleep(0.05)
+        exit_code = process.poll()
+        if pid is not None:
+            why = f"port {port} is another master's (pid {pid})"
+        elif exit_code is not None:
+            why = f"rosmaster on port {port} exited with {exit_code}"
+        elif time.monotonic() > deadline:
+            why = f"rosmaster on port {port} did not answer within 30 s"
+        else:
+            time.sleep(0.05)
+            continue
+        process.kill()
+        process.wait()
+        return None, uri, why
 
 
 @dataclass
