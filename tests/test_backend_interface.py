@@ -110,3 +110,24 @@ def test_a_capture_without_colour_has_the_same_depth_and_segmentation(backend):
     assert plain.rgb is None and full.rgb is not None
     assert np.array_equal(plain.depth, full.depth) and np.array_equal(plain.segmentation, full.segmentation)
     assert np.allclose(plain.extrinsics.matrix(), full.extrinsics.matrix())
+
+
+def test_depth_and_segmentation_from_one_pass_equal_those_of_their_own_passes_with_or_without_antialiasing(backend):
+    from roboscript.sim.cameras import Renderer
+
+    data, world = backend.sim_world.data, backend.sim_world
+    smooth = Renderer(world.model, world.geom_entity, 640, 480, antialiasing=True)
+    jagged = Renderer(world.model, world.geom_entity, 640, 480, antialiasing=False)
+    try:
+        for camera in backend.camera_names():
+            depth, segmentation = smooth.depth_and_segmentation(data, camera)
+            assert np.array_equal(depth, smooth.depth(data, camera))
+            assert np.array_equal(segmentation, smooth.segmentation(data, camera))
+            assert (segmentation >= 0).mean() > 0.5  # the table and the furniture fill most of every view
+            plain_depth, plain_segmentation = jagged.depth_and_segmentation(data, camera)
+            assert np.array_equal(plain_depth, depth) and np.array_equal(plain_segmentation, segmentation)
+        # The model's own offscreen settings are left as they were (renders of other sizes need them).
+        assert world.model.vis.quality.offsamples > 0 and world.model.vis.global_.offwidth > 640
+    finally:
+        smooth.close()
+        jagged.close()

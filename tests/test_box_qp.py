@@ -76,3 +76,16 @@ def test_an_interior_optimum_is_the_unconstrained_one():
 def test_crossed_bounds_are_refused():
     with pytest.raises(ValueError, match="lower bound is above its upper bound"):
         solve_box_qp(np.eye(2), np.zeros(2), np.array([0.1, -1.0]), np.array([0.0, 1.0]))
+
+
+def test_an_optimum_clear_of_every_bound_is_the_unconstrained_one_and_a_bound_in_the_way_is_respected():
+    rng = np.random.default_rng(3)
+    hessian, linear, _, _ = _problem(rng, 7)
+    free = np.linalg.solve(hessian, -linear)
+    wide = np.abs(free) + 1.0
+    np.testing.assert_allclose(solve_box_qp(hessian, linear, -wide, wide), free, rtol=1e-12)
+    upper = wide.copy()
+    upper[0] = free[0] - 0.5 if free[0] > -0.5 else -1.0  # joint 1's unconstrained step is cut off
+    lower = np.minimum(-wide, upper - 1.0)
+    x = solve_box_qp(hessian, linear, lower, upper)
+    assert x[0] <= upper[0] + 1e-9 and not np.allclose(x, free)

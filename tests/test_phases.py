@@ -55,3 +55,24 @@ def test_unknown_phases_are_refused_with_the_known_ones():
         pass
     with pytest.raises(ValueError, match="unknown phase"):
         timed("thinking")
+
+
+def test_a_decorated_call_inside_its_own_phase_keeps_charging_it_and_another_phase_resumes_after(clock):
+    @timed("planning")
+    def check():
+        clock(0.5)
+
+    @timed("ik")
+    def solve():
+        check()  # charged to planning from within ik
+        clock(1.0)
+
+    stopwatch = PhaseClock()
+    with phase("planning"):
+        for _ in range(4):
+            check()
+        solve()
+        clock(0.25)
+    spent = stopwatch.read()
+    assert spent["planning"] == 4 * 0.5 + 0.5 + 0.25 and spent["ik"] == 1.0 and spent["rest"] == 0.0
+    assert not phases._open  # every phase opened was closed

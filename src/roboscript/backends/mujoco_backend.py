@@ -46,7 +46,7 @@ class MujocoBackend(Backend):
         self.sim_world: SimWorld = build_world(spec, robot)
         self.simulator = Simulator(self.sim_world)
         self._ground_truth = GroundTruth(self.sim_world)
-        self._renderers: dict[tuple[int, int], Renderer] = {}
+        self._renderers: dict[tuple[int, int, bool], Renderer] = {}  # (width, height, colour)
         self._cameras = {c.name: c for c in spec.cameras}
         self._read_joints = robot_joint_readings(self.sim_world)
         self._base_pose = robot_mount(spec, self.sim_world.robot.description)
@@ -108,18 +108,22 @@ class MujocoBackend(Backend):
     def camera_names(self) -> list[str]:
         return list(self._cameras)
 
-    def renderer(self, width: int, height: int) -> Renderer:
-        """A renderer of the given size, created once and reused."""
-        key = (width, height)
-        if key not in self._renderers:
-            self._renderers[key] = Renderer(self.sim_world.model, self.sim_world.geom_entity, width, height)
-        return self._renderers[key]
+    def renderer(self, width: int, height: int, color: bool = True) -> Renderer:
+        """A renderer of the given size, created once and reused. One for depth and segmentation only
+        (``color`` false) renders without anti-aliasing, faster, unless one for colour is there already."""
+        for key in [(width, height, True)] if color else [(width, height, True), (width, height, False)]:
+            if key in self._renderers:
+                return self._renderers[key]
+        model, entities = self.sim_world.model, self.sim_world.geom_entity
+        renderer = self._renderers[(width, height, color)] = Renderer(model, entities, width, height, color)
+        return renderer
 
     def capture(self, camera: str, color: bool = True) -> CameraFrame:
         if camera not in self._cameras:
             raise BackendError(f"no camera named {camera!r}; cameras: {', '.join(self._cameras)}")
         spec = self._cameras[camera]
-        return self.renderer(spec.width, spec.height).capture(self.sim_world.data, camera, spec, color=color)
+        renderer = self.renderer(spec.width, spec.height, color)
+        return renderer.capture(self.sim_world.data, camera, spec, color=color)
 
     def segmentation_labels(self) -> dict[int, str]:
         return {e.index: e.name for e in self.sim_world.entities}

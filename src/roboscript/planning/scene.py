@@ -12,6 +12,7 @@ its state; :mod:`roboscript.planning.perceived_scene` builds a model of the same
 from __future__ import annotations
 
 import contextlib
+import dataclasses
 import functools
 import itertools
 from collections.abc import Iterable, Iterator
@@ -54,6 +55,7 @@ class Attachment:
     name: str
     body: int
     tcp_to_object: np.ndarray  # 4x4
+    qpos_address: int  # where the object's free joint keeps its pose in qpos
 
 
 class PlanningScene:
@@ -108,6 +110,7 @@ class PlanningScene:
         self._finger_qpos, self._finger_open = _open_finger_positions(model, robot, self._gripper_bodies)
         self._moving_bodies = np.flatnonzero(self._is_robot & moved)  # the base stays where it is mounted
         self._workspace: tuple[np.ndarray, np.ndarray] | None = None
+        self._tcp = np.eye(4)  # the TCP's pose while placing held objects, kept to spare an allocation a query
 
     # --- state -----------------------------------------------------------------------------------------------
 
@@ -175,7 +178,7 @@ class PlanningScene:
             pose = Transform.from_rotation(self.data.xpos[body], self.data.xmat[body].reshape(3, 3))
             in_hand = tcp.inverse().compose(pose).matrix()
             if np.linalg.norm(in_hand[:3, 3] - attachment.tcp_to_object[:3, 3]) < REGRASP_LIMIT:
-                self._attached[name] = Attachment(name, body, in_hand)
+                self._attached[name] = dataclasses.replace(attachment, tcp_to_object=in_hand)
 
     def arm_positions(self) -> np.ndarray:
         return self.data.qpos[self._qpos].copy()
@@ -282,7 +285,8 @@ class PlanningScene:
         q = self.arm_positions() if q is None else np.asarray(q, dtype=float)
         tcp = self.tcp_pose(q)
         obj = Transform.from_rotation(self.data.xpos[body], self.data.xmat[body].reshape(3, 3))
-        attachment = Attachment(name, body, tcp.inverse().compose(obj).matrix())
+        address = int(self.model.jnt_qposadr[self.model.body_jntadr[body]])
+        attachment = Attachment(name, body, tcp.inverse().compose(obj).matrix(), address)
         self._set_bits(self._body_mask(body), "held", self.padding)
         mujoco.mj_collision(self.model, self.data)
         touching = {b for pair in self._contact_bodies() if body in pair for b in pair} - {body}
@@ -405,19 +409,21 @@ class PlanningScene:
 
     def _place(self, q: np.ndarray) -> None:
         """Kinematics with the arm at ``q`` and every held object carried along."""
-        self._kinematics(q)
+        data = self.data
+        data.qpos[self._qpos] = q
+        mujoco.mj_kinematics(self.model, data)
         if not self._attached:
             return
-        site = self.robot.tcp_site
-        tcp = np.eye(4)
-        tcp[:3, :3] = self.data.site_xmat[site].reshape(3, 3)
-        tcp[:3, 3] = self.data.site_xpos[site]
+        # Called by the ten thousand while something is held: plain arrays, no transform objects.
+        site, tcp = self.robot.tcp_site, self._tcp
+        tcp[:3, :3] = data.site_xmat[site].reshape(3, 3)
+        tcp[:3, 3] = data.site_xpos[site]
         for attachment in self._attached.values():
             pose = tcp @ attachment.tcp_to_object
-            adr = self.model.jnt_qposadr[self.model.body_jntadr[attachment.body]]
-            self.data.qpos[adr : adr + 3] = pose[:3, 3]
-            mujoco.mju_mat2Quat(self.data.qpos[adr + 3 : adr + 7], pose[:3, :3].flatten())
-        mujoco.mj_kinematics(self.model, self.data)
+            adr = attachment.qpos_address
+            data.qpos[adr : adr + 3] = pose[:3, 3]
+            mujoco.mju_mat2Quat(data.qpos[adr + 3 : adr + 7], pose[:3, :3].ravel())
+        mujoco.mj_kinematics(self.model, data)
 
     def _contact_bodies(self) -> list[tuple[int, int]]:
         ncon = self.data.ncon

@@ -79,13 +79,34 @@ class Renderer:
     """Renders RGB, depth and segmentation from named cameras; create once per world and reuse (costly to make).
 
     ``geom_to_entity`` maps each geom id to an entity index (or -1); segmentation pixels carry those indices.
+    Without ``antialiasing`` the colour images have jagged edges, depth and segmentation are the same (they are
+    rendered without multisampling either way), and the renderer is made in about half the time and renders a
+    third faster on a CPU rasteriser: the choice for depth and segmentation alone.
     """
 
-    def __init__(self, model: mujoco.MjModel, geom_to_entity: np.ndarray, width: int = 640, height: int = 480):
+    def __init__(
+        self,
+        model: mujoco.MjModel,
+        geom_to_entity: np.ndarray,
+        width: int = 640,
+        height: int = 480,
+        antialiasing: bool = True,
+    ):
         self._model = model
         self._geom_to_entity = np.asarray(geom_to_entity, dtype=np.int32)
         self.width, self.height = width, height
-        self._renderer = mujoco.Renderer(model, height=height, width=width)
+        self.antialiasing = antialiasing
+        if antialiasing:
+            self._renderer = mujoco.Renderer(model, height=height, width=width)
+        else:
+            # The offscreen buffer is sized and sampled from the model when the context is made, and only then.
+            quality, buffer = model.vis.quality, model.vis.global_
+            saved = (quality.offsamples, buffer.offwidth, buffer.offheight)
+            quality.offsamples, buffer.offwidth, buffer.offheight = 0, width, height
+            try:
+                self._renderer = mujoco.Renderer(model, height=height, width=width)
+            finally:
+                quality.offsamples, buffer.offwidth, buffer.offheight = saved
         self._option = mujoco.MjvOption()
 
     def close(self) -> None:
@@ -129,6 +150,58 @@ class Renderer:
         out[is_geom] = self._geom_to_entity[ids[is_geom]]
         return out
 
+    @timed("render")
+    def depth_and_segmentation(
+        self, data: mujoco.MjData, camera: str | int | mujoco.MjvCamera
+    ) -> tuple[np.ndarray, np.ndarray]:
+        """Depth and segmentation from one render pass: the same as :meth:`depth` and :meth:`segmentation`, at
+        half their cost (MuJoCo renders both in its segmentation mode; its Renderer reads one buffer a pass)."""
+        self._update(data, camera)
+        renderer = self._renderer
+        scene = renderer.scene
+        flags = scene.flags.copy()
+        scene.flags[mujoco.mjtRndFlag.mjRND_SEGMENT] = True
+        scene.flags[mujoco.mjtRndFlag.mjRND_IDCOLOR] = True
+        colour = np.empty((self.height, self.width, 3), dtype=np.uint8)
+        depth = np.empty((self.height, self.width), dtype=np.float32)
+        # mujoco.Renderer has no call that reads both buffers; its context and viewport are used as it uses them.
+        try:
+            if renderer._gl_context:
+                renderer._gl_context.make_current()
+            mujoco.mjr_render(renderer._rect, scene, renderer._mjr_context)
+            mujoco.mjr_readPixels(colour, depth, renderer._rect, renderer._mjr_context)
+        finally:
+            np.copyto(scene.flags, flags)
+        if renderer._gl_context:  # offscreen GL reads bottom row first
+            colour, depth = np.flipud(colour), np.flipud(depth)
+        return self._metric_depth(depth, scene), self._entities(colour, scene)
+
+    def _metric_depth(self, buffer: np.ndarray, scene: mujoco.MjvScene) -> np.ndarray:
+        """Metres along the optical axis from the depth buffer (reversed Z, as MuJoCo renders), 0 where far."""
+        extent = self._model.stat.extent
+        near, far = np.float32(self._model.vis.map.znear * extent), np.float32(self._model.vis.map.zfar * extent)
+        z = buffer.astype(np.float64)
+        if scene.camera[0].orthographic:
+            metric = far - z * (far - near)
+        else:
+            c = -(far + near) / (far - near)
+            d = -(np.float32(2) * far * near) / (far - near)
+            metric = (np.float32(-0.5) * d) / (z + (np.float32(-0.5) * c - np.float32(0.5)))
+        depth = metric.astype(np.float32)
+        depth[depth >= self._model.vis.map.zfar * extent * 0.999] = 0.0
+        return depth
+
+    def _entities(self, colour: np.ndarray, scene: mujoco.MjvScene) -> np.ndarray:
+        """Entity indices from an ID-coloured image: colour -> scene geom -> model geom -> entity, -1 elsewhere."""
+        segment = colour[..., 0].astype(np.int64) | (colour[..., 1].astype(np.int64) << 8)
+        segment |= colour[..., 2].astype(np.int64) << 16
+        # Segment 0 is the background; a colour past the last segment (none is expected) is read as background.
+        lookup = np.full(scene.ngeom + 2, -1, dtype=np.int32)
+        for g in scene.geoms[: scene.ngeom]:
+            if g.segid != -1 and g.objtype == int(mujoco.mjtObj.mjOBJ_GEOM) and g.objid >= 0:
+                lookup[g.segid + 1] = self._geom_to_entity[g.objid]
+        return lookup[np.minimum(segment, scene.ngeom + 1)]
+
     def capture(
         self,
         data: mujoco.MjData,
@@ -144,11 +217,15 @@ class Renderer:
                 f"{self.width}x{self.height}; create a Renderer of that size"
             )
         intrinsics = pinhole_intrinsics(float(self._model.cam(camera).fovy[0]), self.width, self.height)
+        if segmentation:
+            depth, entities = self.depth_and_segmentation(data, camera)
+        else:
+            depth, entities = self.depth(data, camera), None
         return CameraFrame(
             name=camera,
             rgb=self.rgb(data, camera) if color else None,
-            depth=self.depth(data, camera),
-            segmentation=self.segmentation(data, camera) if segmentation else None,
+            depth=depth,
+            segmentation=entities,
             intrinsics=intrinsics,
             extrinsics=camera_pose_opencv(self._model, data, camera),
         )
