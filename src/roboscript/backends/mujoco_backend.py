@@ -111,12 +111,13 @@ class MujocoBackend(Backend):
     def renderer(self, width: int, height: int, color: bool = True) -> Renderer:
         """A renderer of the given size, created once and reused. One for depth and segmentation only
         (``color`` false) renders without anti-aliasing, faster, unless one for colour is there already."""
-        for key in [(width, height, True)] if color else [(width, height, True), (width, height, False)]:
-            if key in self._renderers:
-                return self._renderers[key]
-        model, entities = self.sim_world.model, self.sim_world.geom_entity
-        renderer = self._renderers[(width, height, color)] = Renderer(model, entities, width, height, color)
-        return renderer
+        smooth = self._renderers.get((width, height, True))
+        if smooth is not None:  # it renders depth and segmentation as well as the other would
+            return smooth
+        key = (width, height, color)
+        if key not in self._renderers:
+            self._renderers[key] = Renderer(self.sim_world.model, self.sim_world.geom_entity, width, height, color)
+        return self._renderers[key]
 
     def capture(self, camera: str, color: bool = True) -> CameraFrame:
         if camera not in self._cameras:

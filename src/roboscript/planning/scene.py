@@ -409,13 +409,11 @@ class PlanningScene:
 
     def _place(self, q: np.ndarray) -> None:
         """Kinematics with the arm at ``q`` and every held object carried along."""
-        data = self.data
-        data.qpos[self._qpos] = q
-        mujoco.mj_kinematics(self.model, data)
+        self._kinematics(q)
         if not self._attached:
             return
         # Called by the ten thousand while something is held: plain arrays, no transform objects.
-        site, tcp = self.robot.tcp_site, self._tcp
+        data, site, tcp = self.data, self.robot.tcp_site, self._tcp
         tcp[:3, :3] = data.site_xmat[site].reshape(3, 3)
         tcp[:3, 3] = data.site_xpos[site]
         for attachment in self._attached.values():

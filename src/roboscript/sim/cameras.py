@@ -125,56 +125,50 @@ class Renderer:
 
     @timed("render")
     def depth(self, data: mujoco.MjData, camera: str | int | mujoco.MjvCamera) -> np.ndarray:
-        self._renderer.enable_depth_rendering()
-        try:
-            self._update(data, camera)
-            depth = self._renderer.render().astype(np.float32)
-        finally:
-            self._renderer.disable_depth_rendering()
-        # Far-plane pixels (nothing hit) are reported as 0, as RGB-D sensors report missing depth.
-        far = self._model.vis.map.zfar * self._model.stat.extent
-        depth[depth >= far * 0.999] = 0.0
-        return depth
+        """Metres along each pixel's optical axis; 0 where nothing was hit, as RGB-D sensors report it."""
+        _, buffer, scene = self._id_pass(data, camera, colour=False)
+        return self._metric_depth(buffer, scene)
 
     @timed("render")
     def segmentation(self, data: mujoco.MjData, camera: str | int | mujoco.MjvCamera) -> np.ndarray:
-        self._renderer.enable_segmentation_rendering()
-        try:
-            self._update(data, camera)
-            seg = self._renderer.render()
-        finally:
-            self._renderer.disable_segmentation_rendering()
-        ids, types = seg[..., 0], seg[..., 1]
-        out = np.full(ids.shape, -1, dtype=np.int32)
-        is_geom = (types == int(mujoco.mjtObj.mjOBJ_GEOM)) & (ids >= 0)
-        out[is_geom] = self._geom_to_entity[ids[is_geom]]
-        return out
+        """The entity index seen at each pixel, -1 where none."""
+        colour, _, scene = self._id_pass(data, camera, colour=True)
+        return self._entities(colour, scene)
 
     @timed("render")
     def depth_and_segmentation(
         self, data: mujoco.MjData, camera: str | int | mujoco.MjvCamera
     ) -> tuple[np.ndarray, np.ndarray]:
-        """Depth and segmentation from one render pass: the same as :meth:`depth` and :meth:`segmentation`, at
-        half their cost (MuJoCo renders both in its segmentation mode; its Renderer reads one buffer a pass)."""
+        """:meth:`depth` and :meth:`segmentation` from one render pass, at the cost of either."""
+        colour, buffer, scene = self._id_pass(data, camera, colour=True)
+        return self._metric_depth(buffer, scene), self._entities(colour, scene)
+
+    def _id_pass(
+        self, data: mujoco.MjData, camera: str | int | mujoco.MjvCamera, colour: bool
+    ) -> tuple[np.ndarray | None, np.ndarray, mujoco.MjvScene]:
+        """One render in MuJoCo's segmentation mode (each geom in a colour of its own, depth as rendered): the
+        ID colours if asked, the raw depth buffer, and the scene that maps colours back to geoms."""
         self._update(data, camera)
         renderer = self._renderer
         scene = renderer.scene
         flags = scene.flags.copy()
         scene.flags[mujoco.mjtRndFlag.mjRND_SEGMENT] = True
         scene.flags[mujoco.mjtRndFlag.mjRND_IDCOLOR] = True
-        colour = np.empty((self.height, self.width, 3), dtype=np.uint8)
+        ids = np.empty((self.height, self.width, 3), dtype=np.uint8) if colour else None
         depth = np.empty((self.height, self.width), dtype=np.float32)
-        # mujoco.Renderer has no call that reads both buffers; its context and viewport are used as it uses them.
+        # mujoco.Renderer reads one buffer a pass; both are read here, with its context and viewport as it uses
+        # them (mujoco is pinned; tests/test_backend_interface.py compares with its own passes).
         try:
             if renderer._gl_context:
                 renderer._gl_context.make_current()
             mujoco.mjr_render(renderer._rect, scene, renderer._mjr_context)
-            mujoco.mjr_readPixels(colour, depth, renderer._rect, renderer._mjr_context)
+            mujoco.mjr_readPixels(ids, depth, renderer._rect, renderer._mjr_context)
         finally:
             np.copyto(scene.flags, flags)
         if renderer._gl_context:  # offscreen GL reads bottom row first
-            colour, depth = np.flipud(colour), np.flipud(depth)
-        return self._metric_depth(depth, scene), self._entities(colour, scene)
+            ids = None if ids is None else np.flipud(ids)
+            depth = np.flipud(depth)
+        return ids, depth, scene
 
     def _metric_depth(self, buffer: np.ndarray, scene: mujoco.MjvScene) -> np.ndarray:
         """Metres along the optical axis from the depth buffer (reversed Z, as MuJoCo renders), 0 where far."""
@@ -188,6 +182,7 @@ class Renderer:
             d = -(np.float32(2) * far * near) / (far - near)
             metric = (np.float32(-0.5) * d) / (z + (np.float32(-0.5) * c - np.float32(0.5)))
         depth = metric.astype(np.float32)
+        # Far-plane pixels (nothing hit) are reported as 0, as RGB-D sensors report missing depth.
         depth[depth >= self._model.vis.map.zfar * extent * 0.999] = 0.0
         return depth
 
