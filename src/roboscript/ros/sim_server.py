@@ -30,6 +30,7 @@ from roboscript.sim.cameras import camera_pose_opencv
 from roboscript.trajectory import JointTrajectory
 
 FEEDBACK_RATE = 20.0  # Hz of simulated time: trajectory feedback
+MAX_LAG = 0.1  # seconds of wall time the simulation may fall behind its pace before the pace starts afresh
 # A push on the arm, for fault tests (a collision, a person's hand): JSON {"force": [fx, fy, fz], "duration": s},
 # newtons on the body that carries the TCP, world frame, for that many simulated seconds.
 DISTURB_TOPIC = "/roboscript/disturb"
@@ -325,9 +326,14 @@ class RosSimServer:
         current = self._current
         if current is not None and current.cancelled.is_set():
             raise _Preempted()
-        ahead = (now - self._sim_start) / self.rtf - (time.monotonic() - self._wall_start)
+        wall = time.monotonic()
+        ahead = (now - self._sim_start) / self.rtf - (wall - self._wall_start)
         if ahead > 0:
             time.sleep(ahead)
+        elif ahead < -MAX_LAG:
+            # Behind the pace (a busy machine): from here on, not racing to make the time up. A robot never runs
+            # faster to catch up, and a race ran whole trajectories in a fraction of their wall time.
+            self._wall_start, self._sim_start = wall, now
 
     def _push(self, simulator, now: float) -> None:
         force, until = self._disturbance
