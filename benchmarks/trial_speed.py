@@ -1,10 +1,12 @@
 """Where a benchmark trial's wall time goes, and its ratio to the time spent stepping the physics.
 
-Each trial runs in a fresh process, as the benchmark's runner runs it (forked from a process that has imported the
-tools and, where the code has one, warmed its caches with ``roboscript.bench.warm``); ``mujoco.mj_step`` is
-wrapped to time the physics. Per task and perception mode the medians are printed: wall time, physics time, their
-ratio, and (for code that marks them, see ``roboscript.phases``) the time spent building, rendering, perceiving,
-searching grasps and placements, in IK, planning, physics and the rest.
+Each trial runs as the benchmark's runner runs it: for code with trial workers (``roboscript.bench.workers``),
+forked from one worker kept across the run (what it makes for a world's first trial serves the next: its time is
+the ``elapsed`` beyond ``wall`` in the results file, not a trial's wall time); for older code, in a fresh process
+that has imported the tools and, where the code has one, warmed its caches with ``roboscript.bench.warm``.
+``mujoco.mj_step`` is wrapped to time the physics. Per task and perception mode the medians are printed: wall time,
+physics time, their ratio, and (for code that marks them, see ``roboscript.phases``) the time spent building,
+rendering, perceiving, searching grasps and placements, in IK, planning, physics and the rest.
 
 With ``--baseline REV`` the same trials also run on that git revision's code (checked out in a temporary worktree)
 in the same run, each trial of the baseline right before the same trial of the current code, so that both meet
@@ -61,16 +63,70 @@ print("RESULT " + json.dumps({"success": record.success, "outcome": record.outco
 """
 
 
-def run_one(source: Path, task: str, robot: str, seed: int, mode: str) -> dict:
-    """One trial in a fresh process on the code under ``source``; its measurements."""
-    env = dict(os.environ, PYTHONPATH=str(source))
-    done = subprocess.run(
-        [sys.executable, "-c", CHILD, task, robot, str(seed), mode], env=env, capture_output=True, text=True
-    )
-    for line in done.stdout.splitlines():
-        if line.startswith("RESULT "):
-            return json.loads(line[len("RESULT ") :])
-    raise RuntimeError(f"{task} seed {seed} ({mode}) on {source} failed:\n{done.stderr[-2000:]}")
+# A driver for code that has trial workers (roboscript.bench.workers): trials run as the benchmark's runner runs
+# them, each forked from a worker kept across them (one job), the stepping timed by _timed_trial.run.
+DRIVER = r"""
+import json, sys, time
+import roboscript  # chooses the GL backend before MuJoCo is imported
+from roboscript.bench.runner import TrialPool
+from roboscript.bench.tasks import get_task
+from roboscript.bench.trial import TrialSpec
+import _timed_trial
+
+with TrialPool(1, serve_args=(_timed_trial.run,)) as pool:
+    for line in sys.stdin:
+        task, robot, seed, mode = line.split()
+        spec = TrialSpec(task, robot, int(seed), int(seed), get_task(task).reference_program(), perception=mode)
+        started = time.perf_counter()
+        (record,) = pool.run([spec])
+        elapsed = time.perf_counter() - started
+        phases = dict(record.phases)
+        print("RESULT " + json.dumps({"success": record.success, "outcome": record.outcome, "sim": record.sim_time_s,
+                                      "wall": phases.pop("wall", record.wall_time_s), "elapsed": elapsed,
+                                      "stepping": phases.pop(_timed_trial.STEPPING, 0.0), "phases": phases,
+                                      "error": record.error}), flush=True)
+"""
+
+
+class Runner:
+    """Runs one code tree's trials: in a fresh process each (code without trial workers, as its runner did), or
+    through one driver process that keeps a trial worker across them (code with workers, as its runner does)."""
+
+    def __init__(self, source: Path):
+        self.source = source
+        self.pooled = (source / "roboscript" / "bench" / "workers.py").exists()
+        self.env = dict(os.environ, PYTHONPATH=f"{source}{os.pathsep}{Path(__file__).parent}")
+        self.driver = None
+
+    def run(self, task: str, robot: str, seed: int, mode: str) -> dict:
+        if not self.pooled:
+            done = subprocess.run(
+                [sys.executable, "-c", CHILD, task, robot, str(seed), mode],
+                env=self.env,
+                capture_output=True,
+                text=True,
+            )
+            lines = done.stdout.splitlines()
+            problem = done.stderr[-2000:]
+        else:
+            if self.driver is None:
+                self.driver = subprocess.Popen(
+                    [sys.executable, "-c", DRIVER], env=self.env, stdin=subprocess.PIPE, stdout=subprocess.PIPE,
+                    text=True,
+                )  # fmt: skip
+            self.driver.stdin.write(f"{task} {robot} {seed} {mode}\n")
+            self.driver.stdin.flush()
+            lines = [self.driver.stdout.readline()]
+            problem = "the driver stopped; its errors are above"
+        for line in lines:
+            if line.startswith("RESULT "):
+                return json.loads(line[len("RESULT ") :])
+        raise RuntimeError(f"{task} seed {seed} ({mode}) on {self.source} failed:\n{problem}")
+
+    def close(self) -> None:
+        if self.driver is not None:
+            self.driver.stdin.close()
+            self.driver.wait(60)
 
 
 def _key(r: dict) -> tuple:
@@ -96,17 +152,18 @@ def measure(args: argparse.Namespace, out: Path) -> list[dict]:
             capture_output=True,
         )
         trees = {f"baseline {args.baseline}": worktree / "src", **trees}
+    runners = {code: Runner(source) for code, source in trees.items()}
     try:
         with out.open("a") as sink:
             for mode in args.modes.split(","):
                 for task in args.tasks.split(","):
                     for seed in range(args.trials):
-                        for code, source in trees.items():
+                        for code, runner in runners.items():
                             key = (code, mode, task, seed)
                             if key in done:
                                 continue
                             result = {"code": code, "mode": mode, "task": task, "seed": seed}
-                            result.update(run_one(source, task, args.robot, seed, mode))
+                            result.update(runner.run(task, args.robot, seed, mode))
                             sink.write(json.dumps(result) + "\n")
                             sink.flush()
                             done[key] = result
@@ -118,6 +175,8 @@ def measure(args: argparse.Namespace, out: Path) -> list[dict]:
                                 flush=True,
                             )
     finally:
+        for runner in runners.values():
+            runner.close()
         if worktree is not None:
             subprocess.run(
                 ["git", "-C", str(REPO), "worktree", "remove", "--force", str(worktree)], capture_output=True

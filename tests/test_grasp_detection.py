@@ -10,6 +10,7 @@ from roboscript.perception.base import ObjectPoints, Receptacle
 from roboscript.perception.grasp_detection import (
     GraspPreferences,
     GripperGeometry,
+    _gripper_reach,
     collides,
     detect_grasps,
     falls_free,
@@ -262,3 +263,14 @@ def test_the_middle_of_a_box_seen_from_one_side_is_the_middle_of_its_top():
     assert abs(float(np.median(cloud.points[:, 0]))) > 0.01  # what the median of every point gives
     middle, _ = object_middle(cloud)
     assert np.linalg.norm(middle[:2] - center[:2]) < 0.003, middle
+
+
+def test_no_point_beyond_the_gripper_reach_can_collide():
+    # detect_grasps leaves out what is farther than this from a pair's middle: nothing there may ever count.
+    for gripper in (GripperGeometry(0.08), GripperGeometry(0.085, hand_lower=(-0.04, -0.12, -0.15))):
+        reach = _gripper_reach(gripper)
+        points = np.random.default_rng(0).uniform(-2 * reach, 2 * reach, size=(400_000, 3))
+        distance = np.linalg.norm(points, axis=1)
+        for width in (0.0, 0.04, gripper.max_width - 0.003):
+            assert not collides(np.eye(3), np.zeros(3), points[distance > reach], gripper, width)
+            assert collides(np.eye(3), np.zeros(3), points[distance < reach], gripper, width)

@@ -1,9 +1,12 @@
 """Every packaged world loads with both robots, settles and renders."""
 
+import mujoco
 import numpy as np
 import pytest
 
 from roboscript.backends.mujoco_backend import MujocoBackend
+from roboscript.sim import world as world_module
+from roboscript.sim.world import build_world
 from roboscript.sim.world_catalog import load_world, world_names
 
 ROBOTS = ("panda", "ur5e")
@@ -68,3 +71,31 @@ def test_cabinet_parts_follow_the_api_names():
         "cabinet.door_0",
         "cabinet.handle_3",
     ]
+
+
+def _model_arrays(model: mujoco.MjModel) -> dict[str, np.ndarray]:
+    arrays = {name: getattr(model, name) for name in dir(model) if not name.startswith("_")}
+    arrays = {name: value.copy() for name, value in arrays.items() if isinstance(value, np.ndarray)}
+    arrays["stat.extent"] = np.array([model.stat.extent])  # the renderer's clipping planes scale with it
+    return arrays
+
+
+def test_a_world_is_the_same_whichever_build_of_it_came_first():
+    # A process keeps each world compiled and moves the objects for the next build (another seed): the model must
+    # not depend on which layout was compiled.
+    spec = load_world("world_3_mug_to_empty_plate")  # objects on the table and on other objects
+    layouts = [spec.randomized(seed) for seed in (0, 1, 2)]
+    built = []
+    for first in layouts[:2]:
+        world_module._compiled.clear()
+        build_world(first, "panda")
+        built.append(build_world(layouts[2], "panda"))
+    world_module._compiled.clear()
+    alone = build_world(layouts[2], "panda")
+    for other in built:
+        for name, value in _model_arrays(alone.model).items():
+            np.testing.assert_array_equal(_model_arrays(other.model)[name], value, err_msg=name)
+        np.testing.assert_array_equal(other.data.qpos, alone.data.qpos)
+    # and the objects are where this layout put them, not where the compiled one had them
+    moved = alone.model.body(next(o.name for o in spec.objects if o.support_kind == "table")).id
+    assert not np.allclose(alone.model.body_pos[moved], build_world(layouts[0], "panda").model.body_pos[moved])

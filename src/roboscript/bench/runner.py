@@ -1,12 +1,14 @@
 """Runs trials in child processes, a few at a time, and hands each record over as soon as it is finished.
 
-Each trial runs in its own process (forked from a clean fork server): a program that crashes the interpreter,
-exhausts memory or never returns costs that trial only. The child enforces the program's time limit itself (so the
-world is still judged); the parent kills a child that outlives its budget (stuck in native code) and records it.
+Each trial runs in its own process, forked from a trial worker (:mod:`roboscript.bench.workers`, itself started
+from a clean fork server) that keeps what trials share: a program that crashes the interpreter, exhausts memory or
+never returns costs that trial only. The trial enforces the program's time limit itself (so the world is still
+judged); the runner kills a trial that outlives its budget (stuck in native code), with its worker, and records it.
 """
 
 from __future__ import annotations
 
+import contextlib
 import multiprocessing as mp
 import os
 import signal
@@ -15,7 +17,8 @@ import time
 from collections.abc import Callable, Iterable
 from multiprocessing.connection import wait
 
-from roboscript.bench.trial import TrialRecord, TrialSpec, run_trial
+from roboscript.bench import workers
+from roboscript.bench.trial import TrialRecord, TrialSpec
 from roboscript.codegen.outcomes import Outcome
 from roboscript.load import load_factor
 
@@ -27,18 +30,6 @@ def wall_budget(spec: TrialSpec) -> float:
     """How long a trial may take before its process is killed: each attempt's limit and margins."""
     per_attempt = spec.timeout + KILL_GRACE + (LLM_GRACE if spec.llm is not None else 0.0)
     return spec.attempts() * per_attempt
-
-
-def _child(spec: TrialSpec, conn) -> None:
-    try:
-        record = run_trial(spec)
-        conn.send(("ok", record.to_dict()))
-    except BaseException as exc:  # the world could not be built, or judging failed: report, do not hang
-        import traceback
-
-        conn.send(("error", f"{type(exc).__name__}: {exc}\n{traceback.format_exc(limit=4)}"))
-    finally:
-        conn.close()
 
 
 def _failed(spec: TrialSpec, error: str, started: float, outcome: Outcome = Outcome.RUNTIME_ERROR) -> TrialRecord:
@@ -63,13 +54,19 @@ def _death(spec: TrialSpec, exitcode: int | None, started: float) -> TrialRecord
 
 
 def trial_context() -> mp.context.BaseContext:
-    """Trials start from a fork server: a clean process that has imported the simulator and the tools but run
-    nothing but compile each robot once (:mod:`roboscript.bench.warm`: a trial then builds its world in a third
+    """Trial workers start from a fork server: a clean process that has imported the simulator and the tools but
+    run nothing but compile each robot once (:mod:`roboscript.bench.warm`: a trial then builds its world in a tenth
     of a second instead of four). Forking the caller itself would copy whatever state it is in, and a process that
     has run OpenMP code (Open3D's fusion) hangs its forked children the moment they run OpenMP code too."""
     context = mp.get_context("forkserver")
     context.set_forkserver_preload(
-        ["roboscript.bench.trial", "roboscript.api", "roboscript.backends.mujoco_backend", "roboscript.bench.warm"]
+        [
+            "roboscript.bench.trial",
+            "roboscript.bench.workers",
+            "roboscript.api",
+            "roboscript.backends.mujoco_backend",
+            "roboscript.bench.warm",
+        ]
     )
     return context
 
@@ -78,65 +75,124 @@ def default_jobs() -> int:
     return max(1, min(os.cpu_count() or 1, 8))
 
 
+class _Worker:
+    """The runner's handle on one trial worker (:mod:`roboscript.bench.workers`) and the trial it runs."""
+
+    def __init__(self, context: mp.context.BaseContext, serve_args: tuple):
+        self.conn, theirs = context.Pipe(duplex=True)
+        sys.stdout.flush()
+        sys.stderr.flush()
+        self.process = context.Process(target=workers.serve, args=(theirs, *serve_args), daemon=True)
+        self.process.start()
+        theirs.close()
+        self.spec: TrialSpec | None = None
+        self.started = 0.0
+        self.trial_pid: int | None = None
+
+    def give(self, spec: TrialSpec) -> None:
+        self.spec, self.started, self.trial_pid = spec, time.perf_counter(), None
+        self.conn.send(spec)
+
+    def kill(self) -> None:
+        """Kills the trial and the worker (a trial dies with its worker anyway; this does not wait for that)."""
+        for pid in (self.trial_pid, self.process.pid):
+            if pid is not None:
+                with contextlib.suppress(ProcessLookupError):
+                    os.kill(pid, signal.SIGKILL)
+        self.process.join(5)
+
+    def stop(self) -> None:
+        with contextlib.suppress(OSError):
+            self.conn.send(None)
+        self.process.join(5)
+        if self.process.is_alive():
+            self.kill()
+
+
 def run_isolated(
     specs: Iterable[TrialSpec], jobs: int = 1, on_record: Callable[[TrialRecord], None] | None = None
 ) -> list[TrialRecord]:
-    """Runs every trial in a child process, at most ``jobs`` at once; ``on_record`` gets each as it ends."""
-    if jobs < 1:
-        raise ValueError(f"jobs must be at least 1, got {jobs}")
-    context = trial_context()
-    pending = list(specs)
-    running: dict[object, tuple[TrialSpec, object, float]] = {}
-    records: list[TrialRecord] = []
+    """Runs every trial in a process of its own, at most ``jobs`` at once; ``on_record`` gets each as it ends."""
+    with TrialPool(jobs) as pool:
+        return pool.run(specs, on_record)
 
-    def finish(record: TrialRecord) -> None:
-        records.append(record)
-        if on_record is not None:
-            on_record(record)
 
-    try:
-        while pending or running:
-            while pending and len(running) < jobs:
-                spec = pending.pop(0)
-                receiver, sender = context.Pipe(duplex=False)
-                process = context.Process(target=_child, args=(spec, sender), daemon=True)
-                sys.stdout.flush()
-                sys.stderr.flush()
-                process.start()
-                sender.close()
-                running[receiver] = (spec, process, time.perf_counter())
-            ready = wait(list(running), timeout=1.0)
-            for receiver in ready:
-                spec, process, started = running.pop(receiver)
-                try:
-                    status, payload = receiver.recv()
-                except EOFError:
-                    process.join(5)
-                    finish(_death(spec, process.exitcode, started))
-                    continue
-                process.join(5)
-                if status == "ok":
-                    finish(TrialRecord(**payload))
-                else:
-                    finish(_failed(spec, f"the trial could not be run: {payload}", started))
-            now = time.perf_counter()
-            for receiver, (spec, process, started) in list(running.items()):
-                if now - started > wall_budget(spec) * load_factor():  # the trial's own limit scaled alike
-                    process.kill()
-                    process.join(5)
-                    running.pop(receiver)
-                    finish(
-                        _failed(
-                            spec,
-                            f"TimeoutError: the program ran longer than its {spec.timeout:g} s limit (killed)",
-                            started,
-                            Outcome.TIMEOUT,
-                        )
-                    )
-    finally:
-        # An interrupted run (Ctrl-C, SIGTERM, an error here) leaves no trial running: each one's master and twin
-        # go with it (see roboscript.ros.launch).
-        for _, process, _ in running.values():
-            process.kill()
-            process.join(5)
-    return records
+class TrialPool:
+    """Up to ``jobs`` trial workers (:mod:`roboscript.bench.workers`), kept across :meth:`run` calls so that what
+    they have made for earlier trials serves later ones. ``serve_args`` go to
+    :func:`roboscript.bench.workers.serve` (the runner's tests give it trials that crash or hang)."""
+
+    def __init__(self, jobs: int = 1, serve_args: tuple = ()):
+        if jobs < 1:
+            raise ValueError(f"jobs must be at least 1, got {jobs}")
+        self.jobs, self._serve_args = jobs, serve_args
+        self._context = trial_context()
+        self._idle: list[_Worker] = []
+
+    def __enter__(self) -> TrialPool:
+        return self
+
+    def __exit__(self, *exc) -> None:
+        self.close()
+
+    def close(self) -> None:
+        """Stops the idle workers."""
+        while self._idle:
+            self._idle.pop().stop()
+
+    def run(
+        self, specs: Iterable[TrialSpec], on_record: Callable[[TrialRecord], None] | None = None
+    ) -> list[TrialRecord]:
+        """Runs every trial, at most ``jobs`` at once; ``on_record`` gets each as it ends. Returns the records in
+        the order they ended."""
+        pending = list(specs)
+        busy: dict[object, _Worker] = {}
+        records: list[TrialRecord] = []
+
+        def finish(record: TrialRecord) -> None:
+            records.append(record)
+            if on_record is not None:
+                on_record(record)
+
+        try:
+            while pending or busy:
+                while pending and len(busy) < self.jobs:
+                    worker = self._idle.pop() if self._idle else _Worker(self._context, self._serve_args)
+                    worker.give(pending.pop(0))
+                    busy[worker.conn] = worker
+                for conn in wait(list(busy), timeout=1.0):
+                    worker = busy[conn]
+                    spec, started = worker.spec, worker.started
+                    try:
+                        status, payload = conn.recv()
+                    except (EOFError, OSError):  # the worker itself died: its trial is lost, a new one takes over
+                        del busy[conn]
+                        worker.kill()
+                        error = f"the trial's worker died (exit code {worker.process.exitcode})"
+                        finish(_failed(spec, error, started))
+                        continue
+                    if status == "started":
+                        worker.trial_pid = payload
+                        continue
+                    del busy[conn]
+                    self._idle.append(worker)
+                    if status == "ok":
+                        finish(TrialRecord(**payload))
+                    elif status == "died":
+                        finish(_death(spec, payload, started))
+                    else:
+                        finish(_failed(spec, f"the trial could not be run: {payload}", started))
+                now = time.perf_counter()
+                for conn, worker in list(busy.items()):
+                    spec = worker.spec
+                    if now - worker.started > wall_budget(spec) * load_factor():  # the trial's limit scaled alike
+                        del busy[conn]
+                        worker.kill()  # a trial stuck in native code; its worker goes too, a fresh one takes over
+                        error = f"TimeoutError: the program ran longer than its {spec.timeout:g} s limit (killed)"
+                        finish(_failed(spec, error, worker.started, Outcome.TIMEOUT))
+        finally:
+            # An interrupted run (Ctrl-C, SIGTERM, an error here) leaves no trial running: each one's master and
+            # twin go with it (see roboscript.ros.launch).
+            for worker in busy.values():
+                worker.kill()
+        return records

@@ -13,6 +13,8 @@ import numpy as np
 
 from roboscript.backends.base import Backend
 
+VIDEO_SIZE = (480, 360)  # width, height of a trial's video
+
 
 class VideoRecorder:
     """Renders ``camera`` at ``fps`` (simulated time) into ``path`` while it is open."""
@@ -23,8 +25,8 @@ class VideoRecorder:
         path: str | Path,
         camera: str = "camera_left",
         fps: int = 15,
-        width: int = 480,
-        height: int = 360,
+        width: int = VIDEO_SIZE[0],
+        height: int = VIDEO_SIZE[1],
     ):
         try:
             import imageio_ffmpeg

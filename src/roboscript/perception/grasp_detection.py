@@ -61,6 +61,7 @@ GRASP_DEPTHS = (0.025, 0.015, 0.0)  # how far past the contact pair, along the a
 # The open fingers must clear an object by this much in all (a 7.6 cm apple in the Panda's 8 cm passes); the box
 # grasps use the same margin.
 WIDTH_MARGIN = 0.003
+SURFACE_ALLOWANCE = 0.006  # metres beyond a contact where points still count as the object's own surface
 SWEEP_CLEARANCE = 0.0025  # metres what the open fingers pass on the way in must clear them by
 SWEEP_ABOVE = 0.003  # metres above the fingertips where that starts (below it: the contacts themselves)
 UPWARD = 0.7  # normal's z above which a point faces up (within 45 degrees)
@@ -127,11 +128,34 @@ def collides(
 ) -> bool:
     """Whether the fingers, closing from fully open to ``width`` (plus a margin), or the hand behind them would
     contain any scene point."""
-    local = (scene - center) @ rotation
+    return _collides_local(_in_gripper_slab((scene - center) @ rotation, gripper), gripper, width)
+
+
+def _in_gripper_slab(local: np.ndarray, gripper: GripperGeometry) -> np.ndarray:
+    """The points (in the TCP frame) no further along x than the fingers' or the hand's sides: only these can be
+    in either. Most of a scene is outside that slab, and every test after it is on the few inside."""
+    half = max(gripper.finger_breadth / 2, -gripper.hand_lower[0], gripper.hand_upper[0])
+    return local[np.abs(local[:, 0]) < half]
+
+
+def _gripper_reach(gripper: GripperGeometry) -> float:
+    """How far from the TCP any point :func:`collides` tests for can be: the farthest corner of the hand's box and
+    of the fingers' (as wide open as any grasp's margin makes them)."""
+    fingers_y = gripper.max_width / 2 + SURFACE_ALLOWANCE + gripper.finger_thickness
+    fingers_z = max(gripper.finger_length, gripper.tip_length)
+    corners = [
+        np.array([gripper.finger_breadth / 2, fingers_y, fingers_z]),
+        np.maximum(np.abs(np.asarray(gripper.hand_lower)), np.abs(np.asarray(gripper.hand_upper))),
+    ]
+    return float(max(np.linalg.norm(c) for c in corners))
+
+
+def _collides_local(local: np.ndarray, gripper: GripperGeometry, width: float) -> bool:
+    """:func:`collides` with the scene's points already in the TCP frame."""
     x, y, z = local[:, 0], local[:, 1], local[:, 2]
     # Points just beyond the contacts are the object's own surface; but no further out than the open fingers'
     # inner faces, which pass that close to whatever stands beside a nearly full-width grasp (a cup's handle).
-    inner = width / 2 + min(0.006, max(gripper.max_width - width, 0.0) / 2 - 0.0005)
+    inner = width / 2 + min(SURFACE_ALLOWANCE, max(gripper.max_width - width, 0.0) / 2 - 0.0005)
     outer = max(inner, gripper.max_width / 2) + gripper.finger_thickness
     in_finger_x = np.abs(x) < gripper.finger_breadth / 2
     fingers = in_finger_x & (np.abs(y) > inner) & (np.abs(y) < outer)
@@ -210,15 +234,19 @@ def detect_grasps(
         # Thinned, but never the object's own points: a rim the fingers pass must not be thinned away.
         near = np.vstack([cloud.points, near[rng.choice(len(near), size=6000, replace=False)]])
     out: list[GraspCandidate] = []
+    reach = _gripper_reach(gripper) + max(GRASP_DEPTHS)  # nothing farther from a pair's middle can touch the hand
     for center, closing, quality, width in pairs:
         if width > gripper.max_width - WIDTH_MARGIN:
             continue
+        around = near[np.einsum("ij,ij->i", near - center, near - center) < reach**2]
         for rotation in grasp_frames(center, closing):
             # As deep as the fingers go without touching anything: more of the pads on the object (a mug's rim
-            # held by its top few millimetres slips out).
+            # held by its top few millimetres slips out). The scene in the frame at the contacts' middle once; a
+            # TCP deeper along the approach (z) only shifts it.
+            local = _in_gripper_slab((around - center) @ rotation, gripper)
             for depth in GRASP_DEPTHS:
                 tcp = center + depth * rotation[:, 2]
-                if not collides(rotation, tcp, near, gripper, width):
+                if not _collides_local(local - np.array([0.0, 0.0, depth]), gripper, width):
                     break
             else:
                 continue

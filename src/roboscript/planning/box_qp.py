@@ -26,12 +26,13 @@ def solve_box_qp(hessian: np.ndarray, linear: np.ndarray, lower: np.ndarray, upp
             f"solve_box_qp: expected a {n}x{n} Hessian and {n} bounds each, got {hessian.shape}, "
             f"{lower.shape} and {upper.shape}"
         )
+    # Most IK steps stay clear of the limits: the unconstrained minimiser is then feasible, hence the solution.
+    # (Crossed bounds admit no point at all, so they are caught below, after this quick way out.)
+    free = np.linalg.solve(hessian, -linear)
+    if ((free >= lower) & (free <= upper)).all():
+        return free
     if np.any(lower > upper):
         raise ValueError(f"solve_box_qp: a lower bound is above its upper bound: {lower} > {upper}")
-    # Most IK steps stay clear of the limits: the unconstrained minimiser is then feasible, hence the solution.
-    free = np.linalg.solve(hessian, -linear)
-    if np.all(free >= lower) and np.all(free <= upper):
-        return free
     x, _, exitflag, _ = daqp.solve(
         np.ascontiguousarray(hessian, dtype=float),
         np.ascontiguousarray(linear, dtype=float),

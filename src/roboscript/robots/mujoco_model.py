@@ -7,6 +7,7 @@ what the simulator steps.
 
 from __future__ import annotations
 
+from collections import OrderedDict
 from dataclasses import dataclass
 
 import mujoco
@@ -102,16 +103,34 @@ def is_descendant(model: mujoco.MjModel, body: int, root: int) -> bool:
     return False
 
 
+COMPILED_ROBOTS_KEPT = 8  # robot models compiled alone that a process keeps (a robot, a mount each)
+_compiled_robots: OrderedDict[tuple, mujoco.MjModel] = OrderedDict()
+
+
+def compiled_robot(description: RobotDescription, mount: Transform) -> mujoco.MjModel:
+    """The robot alone at ``mount``, compiled once per process for each robot and mount (a benchmark's trials ask for
+    the same few again and again). The model is shared: read it, never write it."""
+    key = (description.name, *np.asarray(mount.position, float).tolist(), *np.asarray(mount.quaternion, float).tolist())
+    model = _compiled_robots.get(key)
+    if model is None:
+        spec = mujoco.MjSpec()
+        configure_options(spec)
+        attach_robot(spec, description, mount)
+        model = spec.compile()
+        _compiled_robots[key] = model
+        while len(_compiled_robots) > COMPILED_ROBOTS_KEPT:
+            _compiled_robots.popitem(last=False)
+    _compiled_robots.move_to_end(key)
+    return model
+
+
 class RobotModel:
     """The robot alone at its mount: where its TCP and links are at a joint configuration (forward kinematics),
     for backends that read only joint positions off a real arm."""
 
     def __init__(self, description: RobotDescription, mount: Transform):
-        spec = mujoco.MjSpec()
-        configure_options(spec)
-        attach_robot(spec, description, mount)
         self.description, self.mount = description, mount
-        self.model = spec.compile()
+        self.model = compiled_robot(description, mount)
         self.data = mujoco.MjData(self.model)
         q = RobotDescription.qualified
         self._qpos = np.array([self.model.joint(q(j)).qposadr[0] for j in description.arm_joints])

@@ -17,6 +17,7 @@ import numpy as np
 from roboscript.geometry import Transform, matrix_to_quat, quat_to_mujoco
 from roboscript.phases import timed
 from roboscript.robot_io import CameraFrame
+from roboscript.sim.shared_gl import gl_renderer
 
 
 @dataclass(frozen=True)
@@ -96,23 +97,18 @@ class Renderer:
         self._geom_to_entity = np.asarray(geom_to_entity, dtype=np.int32)
         self.width, self.height = width, height
         self.antialiasing = antialiasing
-        if antialiasing:
-            self._renderer = mujoco.Renderer(model, height=height, width=width)
-        else:
-            # The offscreen buffer is sized and sampled from the model when the context is made, and only then.
-            quality, buffer = model.vis.quality, model.vis.global_
-            saved = (quality.offsamples, buffer.offwidth, buffer.offheight)
-            quality.offsamples, buffer.offwidth, buffer.offheight = 0, width, height
-            try:
-                self._renderer = mujoco.Renderer(model, height=height, width=width)
-            finally:
-                quality.offsamples, buffer.offwidth, buffer.offheight = saved
+        # Where the process shares renderers, the GL side may be one made for another build of the same world.
+        self._renderer, self._shared = gl_renderer(
+            model, width, height, antialiasing, lambda: _make_gl(model, width, height, antialiasing)
+        )
         self._option = mujoco.MjvOption()
 
     def close(self) -> None:
-        self._renderer.close()
+        if not self._shared:
+            self._renderer.close()
 
     def _update(self, data: mujoco.MjData, camera: str | int | mujoco.MjvCamera) -> None:
+        self._renderer._model = self._model  # mujoco.Renderer builds the scene from it (a shared one: anyone's)
         self._renderer.update_scene(data, camera=camera, scene_option=self._option)
         # Shadows and reflections cost 6-10x the render time on a CPU rasteriser and help no perception code.
         self._renderer.scene.flags[mujoco.mjtRndFlag.mjRND_SHADOW] = False
@@ -224,3 +220,16 @@ class Renderer:
             intrinsics=intrinsics,
             extrinsics=camera_pose_opencv(self._model, data, camera),
         )
+
+
+def _make_gl(model: mujoco.MjModel, width: int, height: int, antialiasing: bool) -> mujoco.Renderer:
+    if antialiasing:
+        return mujoco.Renderer(model, height=height, width=width)
+    # The offscreen buffer is sized and sampled from the model when the context is made, and only then.
+    quality, buffer = model.vis.quality, model.vis.global_
+    saved = (quality.offsamples, buffer.offwidth, buffer.offheight)
+    quality.offsamples, buffer.offwidth, buffer.offheight = 0, width, height
+    try:
+        return mujoco.Renderer(model, height=height, width=width)
+    finally:
+        quality.offsamples, buffer.offwidth, buffer.offheight = saved

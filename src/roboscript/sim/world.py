@@ -6,9 +6,11 @@ the table, the robot) that ground truth, segmentation and the backend use.
 
 from __future__ import annotations
 
+import copy
 import math
+from collections import OrderedDict
 from collections.abc import Callable
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from typing import Literal
 
 import mujoco
@@ -150,12 +152,52 @@ def robot_joint_readings(world: SimWorld) -> Callable[[], dict[str, float]]:
     return lambda: {name: float(world.data.qpos[adr]) for name, adr in joints}
 
 
+COMPILED_WORLDS_KEPT = 8  # worlds (a layout of furniture and objects, a robot) a process keeps compiled
+
+
+@dataclass(frozen=True)
+class _Compiled:
+    model: mujoco.MjModel  # objects wherever the first build of the world put them: moved by _placed
+    drawer_frames: dict[str, tuple[np.ndarray, np.ndarray, tuple[np.ndarray, np.ndarray]]]
+
+
+_compiled: OrderedDict[tuple, _Compiled] = OrderedDict()
+
+
 def build_world(world: WorldSpec, robot: str | None = None) -> SimWorld:
     """Compiles ``world`` with ``robot`` (default: the world's own) into a ready-to-step :class:`SimWorld`.
 
     The robot is at its home configuration and every object at its listed pose; nothing has been stepped yet.
-    """
+    The compiled model is kept for the process: another build of the same world with its objects elsewhere (a
+    benchmark's next seed) copies it and moves the objects, rather than compiling again. Every build is made that
+    way, so a world is the same whichever build of it came first."""
     description = get_robot(robot or world.robot)
+    key = (_without_layout(world), description.name)
+    compiled = _compiled.get(key)
+    if compiled is None:
+        compiled = _compiled[key] = _compile(world, description)
+        while len(_compiled) > COMPILED_WORLDS_KEPT:
+            _compiled.popitem(last=False)
+    _compiled.move_to_end(key)
+    model = _placed(copy.copy(compiled.model), _object_poses(world, compiled.drawer_frames))
+    data = mujoco.MjData(model)
+    binding = RobotBinding.bind(model, description)
+    data.qpos[binding.qpos] = description.home_array()
+    data.ctrl[binding.actuators] = description.home_array()
+    data.ctrl[binding.gripper_actuator] = description.gripper.open_ctrl
+    for joint, value in zip(description.gripper.joints, description.gripper.open_qpos, strict=True):
+        data.qpos[model.joint(ROBOT_PREFIX + joint).qposadr[0]] = value
+    mujoco.mj_forward(model, data)
+    entities, geom_entity = _index_entities(model, world, binding)
+    return SimWorld(world, model, data, entities, binding, geom_entity)
+
+
+def _without_layout(world: WorldSpec) -> WorldSpec:
+    """``world`` with every object at the origin of its support, unturned: what its compiled model depends on."""
+    return replace(world, objects=tuple(replace(o, position=(0.0,) * len(o.position), yaw=0.0) for o in world.objects))
+
+
+def _compile(world: WorldSpec, description: RobotDescription) -> _Compiled:
     spec = mujoco.MjSpec()
     spec.modelname = world.name
     configure_options(spec)
@@ -170,19 +212,9 @@ def build_world(world: WorldSpec, robot: str | None = None) -> SimWorld:
 
     # Drawers hold objects: their interiors need the compiled geometry, so compile the furniture first.
     drawer_frames = _drawer_frames(spec, world) if any(o.support_kind == "inside" for o in world.objects) else {}
-    placed: dict[str, tuple[np.ndarray, float, ObjectPlacement]] = {}
+    poses = _object_poses(world, drawer_frames)
     for o in world.objects:
-        if o.support_kind == "table":
-            pos = np.array([o.position[0], o.position[1], world.table.height + 0.001])
-            yaw = o.yaw
-        elif o.support_kind == "on":
-            pos, yaw = _support_height(placed, o)
-        else:
-            pos, yaw = _inside_drawer(world, drawer_frames[o.support], o)
-        # The object's frame origin is its bottom centre, but part bounds may dip slightly below it.
-        pos = pos - np.array([0.0, 0.0, min(0.0, float(o.type.bounds[0][2]))])
-        _add_object(spec, o, pos, yaw)
-        placed[o.name] = (pos, yaw, o)
+        _add_object(spec, o, *poses[o.name])
 
     for a, b in excludes:
         spec.add_exclude(bodyname1=a, bodyname2=b)
@@ -196,16 +228,39 @@ def build_world(world: WorldSpec, robot: str | None = None) -> SimWorld:
         model = spec.compile()
     except ValueError as exc:
         raise WorldFileError(world.source, "world", f"MuJoCo could not compile it: {exc}") from exc
-    data = mujoco.MjData(model)
-    binding = RobotBinding.bind(model, description)
-    data.qpos[binding.qpos] = description.home_array()
-    data.ctrl[binding.actuators] = description.home_array()
-    data.ctrl[binding.gripper_actuator] = description.gripper.open_ctrl
-    for joint, value in zip(description.gripper.joints, description.gripper.open_qpos, strict=True):
-        data.qpos[model.joint(ROBOT_PREFIX + joint).qposadr[0]] = value
-    mujoco.mj_forward(model, data)
-    entities, geom_entity = _index_entities(model, world, binding)
-    return SimWorld(world, model, data, entities, binding, geom_entity)
+    return _Compiled(model, drawer_frames)
+
+
+def _object_poses(world: WorldSpec, drawer_frames: dict) -> dict[str, tuple[np.ndarray, float]]:
+    """Each object's position (its frame's origin) and yaw in the world, from where it stands on its support."""
+    placed: dict[str, tuple[np.ndarray, float, ObjectPlacement]] = {}
+    for o in world.objects:
+        if o.support_kind == "table":
+            pos = np.array([o.position[0], o.position[1], world.table.height + 0.001])
+            yaw = o.yaw
+        elif o.support_kind == "on":
+            pos, yaw = _support_height(placed, o)
+        else:
+            pos, yaw = _inside_drawer(world, drawer_frames[o.support], o)
+        # The object's frame origin is its bottom centre, but part bounds may dip slightly below it.
+        pos = pos - np.array([0.0, 0.0, min(0.0, float(o.type.bounds[0][2]))])
+        placed[o.name] = (pos, yaw, o)
+    return {name: (pos, yaw) for name, (pos, yaw, _) in placed.items()}
+
+
+def _placed(model: mujoco.MjModel, poses: dict[str, tuple[np.ndarray, float]]) -> mujoco.MjModel:
+    """``model`` with each object (a free body) at its pose, and the constants that depend on the initial
+    configuration (the model's extent, which the renderer's clipping planes scale with, among them) set anew."""
+    for name, (pos, yaw) in poses.items():
+        body = model.body(name).id
+        quat = np.asarray(quat_to_mujoco(quat_from_yaw(yaw)), dtype=float)
+        mujoco.mju_normalize4(quat)
+        adr = int(model.jnt_qposadr[model.body_jntadr[body]])
+        model.body_pos[body], model.body_quat[body] = pos, quat
+        model.qpos0[adr : adr + 3] = model.qpos_spring[adr : adr + 3] = pos
+        model.qpos0[adr + 3 : adr + 7] = model.qpos_spring[adr + 3 : adr + 7] = quat
+    mujoco.mj_setConst(model, mujoco.MjData(model))
+    return model
 
 
 def _drawer_frames(spec: mujoco.MjSpec, world: WorldSpec) -> dict[str, tuple[np.ndarray, np.ndarray, np.ndarray]]:

@@ -1,0 +1,167 @@
+"""Trial workers: long-lived processes, one per job, that keep what trials share and fork each trial from there.
+
+Every trial still runs in a process of its own: a program that crashes the interpreter or never returns costs that
+trial only, and OMPL's sampling is seeded afresh in each. But the trial is forked from a worker that has already
+made what the trials of a world ask for and can keep: the world compiled (:func:`roboscript.sim.world.build_world`
+keeps it), the robot's model compiled alone at the world's mount (for the kinematics), and, where the GL driver
+allows keeping GL state across a fork (:func:`roboscript.sim.shared_gl.fork_safe`), the renderers of the world's
+cameras with their shaders compiled. A trial then finds them made instead of spending half a second on them.
+
+The worker and the runner speak over one pipe. The runner sends a :class:`TrialSpec` (or ``None``: stop); the
+worker answers ``("started", pid)`` with the trial's process id, then ``("ok", record)``, ``("error", text)`` or
+``("died", exit code)``.
+"""
+
+from __future__ import annotations
+
+import contextlib
+import os
+import pickle
+import select
+import struct
+import sys
+import traceback
+from collections.abc import Callable
+
+from roboscript.bench.trial import TrialSpec, run_trial
+from roboscript.processes import die_with_parent
+
+SOFTWARE_GL_THREADS = "LP_NUM_THREADS"  # Mesa's software rasteriser's thread count; 0 keeps GL state forkable
+LENGTH = struct.Struct("<Q")  # the length of a trial's message, before it
+POLL_INTERVAL = 0.5  # seconds between looks at whether a trial that has not reported has ended
+
+
+def serve(conn, run: Callable[[TrialSpec], dict] | None = None, warm: Callable[[TrialSpec], None] | None = None):
+    """A worker's loop: for each spec from ``conn``, warm this process for it, fork the trial, report.
+
+    ``run`` (default: :func:`run_trial`, as a dict) runs a trial in the forked process, ``warm`` (default:
+    :func:`warm_for`) prepares this one; both are parameters for the runner's tests."""
+    run = run or _run_trial
+    warm = warm or warm_for
+    os.environ.setdefault(SOFTWARE_GL_THREADS, "0")  # before any GL is made here; a user's own choice stands
+    from roboscript.sim import shared_gl
+
+    if shared_gl.fork_safe():
+        shared_gl.share_renderers()
+    try:
+        while True:
+            try:
+                spec = conn.recv()
+            except EOFError:  # the runner is gone
+                return
+            if spec is None:
+                return
+            with contextlib.suppress(Exception):  # the trial meets the same problem and reports it as its own
+                warm(spec)
+            _fork_trial(conn, spec, run)
+    except KeyboardInterrupt:  # Ctrl-C reaches the whole process group; the runner cleans up
+        return
+
+
+def _fork_trial(conn, spec: TrialSpec, run: Callable[[TrialSpec], dict]) -> None:
+    reader, writer = os.pipe()
+    parent = os.getpid()
+    sys.stdout.flush()
+    sys.stderr.flush()
+    pid = os.fork()
+    if pid == 0:
+        os.close(reader)
+        die_with_parent(parent=parent)
+        _trial_child(spec, run, writer)
+    os.close(writer)
+    conn.send(("started", pid))
+    payload, status = _outcome(reader, pid)
+    if payload is not None:
+        conn.send(pickle.loads(payload))
+    else:
+        conn.send(("died", os.waitstatus_to_exitcode(status)))
+
+
+def _outcome(reader: int, pid: int) -> tuple[bytes | None, int]:
+    """The trial's message (None if it ended without one) and its wait status. Reads until the message is whole
+    or the trial has ended, not until the pipe's end: a process the trial started may still hold the pipe open."""
+    received = bytearray()
+    status = None
+    try:
+        while status is None:
+            if select.select([reader], [], [], POLL_INTERVAL)[0]:
+                chunk = os.read(reader, 1 << 20)
+                received += chunk
+                if _whole(received) or not chunk:
+                    break
+                continue
+            done, reaped = os.waitpid(pid, os.WNOHANG)
+            if done:
+                status = reaped
+                while select.select([reader], [], [], 0)[0] and (chunk := os.read(reader, 1 << 20)):
+                    received += chunk  # what it wrote just before it ended
+    finally:
+        os.close(reader)
+    if status is None:
+        status = os.waitpid(pid, 0)[1]
+    return (bytes(received[LENGTH.size :]) if _whole(received) else None), status
+
+
+def _whole(received: bytearray) -> bool:
+    return len(received) >= LENGTH.size and len(received) - LENGTH.size >= LENGTH.unpack_from(received)[0]
+
+
+def _trial_child(spec: TrialSpec, run: Callable[[TrialSpec], dict], writer: int) -> None:
+    """In the forked trial: run it, write the outcome to the worker, and leave without the worker's clean-up."""
+    code = 1
+    try:
+        try:
+            message = ("ok", run(spec))
+        except BaseException as exc:  # the world could not be built, or judging failed: report, do not hang
+            message = ("error", f"{type(exc).__name__}: {exc}\n{traceback.format_exc(limit=4)}")
+        data = pickle.dumps(message)
+        view = memoryview(LENGTH.pack(len(data)) + data)
+        while view:
+            view = view[os.write(writer, view) :]
+        code = 0
+    finally:
+        sys.stdout.flush()
+        sys.stderr.flush()
+        os._exit(code)
+
+
+def _run_trial(spec: TrialSpec) -> dict:
+    return run_trial(spec).to_dict()
+
+
+def warm_for(spec: TrialSpec) -> None:
+    """Makes in this process, once, what the trial of ``spec`` will ask for and may keep: the world compiled, the
+    robot compiled alone at the world's mount and, where renderers are shared, the renderers its cameras and video
+    will use. Any build of the world will do: the trial's seed only moves its objects."""
+    if spec.backend != "mujoco":
+        return
+    from roboscript.bench.tasks import get_task
+    from roboscript.robots import get_robot
+    from roboscript.robots.mujoco_model import compiled_robot
+    from roboscript.sim.shared_gl import sharing
+    from roboscript.sim.world import build_world, robot_mount
+    from roboscript.sim.world_catalog import load_world
+
+    world = load_world(spec.world if spec.world else get_task(spec.task, spec.suite).world)
+    description = get_robot(spec.robot or world.robot)
+    compiled_robot(description, robot_mount(world, description))
+    built = build_world(world, spec.robot)
+    if sharing():
+        _warm_renderers(spec, built)
+
+
+def _warm_renderers(spec: TrialSpec, built) -> None:
+    """The renderers a trial in ``built``'s world will ask for, each used once (the rasteriser compiles its
+    shaders at the first renders)."""
+    from roboscript.bench.video import VIDEO_SIZE
+    from roboscript.sim.cameras import Renderer
+
+    colour = spec.perception.observed_objects  # the camera pipeline captures colour; ground truth, depth only
+    sizes = {(c.width, c.height, colour): c.name for c in built.spec.cameras}
+    if spec.video:
+        sizes[(*VIDEO_SIZE, True)] = spec.video_camera
+    for (width, height, smooth), camera in sizes.items():
+        renderer = Renderer(built.model, built.geom_entity, width, height, antialiasing=smooth)
+        renderer.depth_and_segmentation(built.data, camera)
+        if smooth:
+            renderer.rgb(built.data, camera)
