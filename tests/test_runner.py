@@ -6,6 +6,7 @@ from __future__ import annotations
 import os
 import signal
 import time
+from pathlib import Path
 
 import numpy as np
 import pytest
@@ -15,6 +16,7 @@ from roboscript.bench import runner
 from roboscript.bench.runner import TrialPool
 from roboscript.bench.trial import TrialRecord, TrialSpec
 from roboscript.codegen.outcomes import Outcome
+from roboscript.processes import at_process_exit
 from roboscript.sim import shared_gl
 from roboscript.sim.cameras import Renderer
 
@@ -28,6 +30,8 @@ def _fake_trial(spec: TrialSpec) -> dict:
         time.sleep(3600)
     if spec.task == "raise":
         raise RuntimeError("no world here")
+    if spec.task == "clean up":  # what a trial's process must do before it ends (a ROS trial stops its master)
+        at_process_exit(lambda: Path(spec.program).write_text("cleaned up"))
     if spec.task == "linger":  # leaves a process behind that holds the trial's end of the pipe to the worker
         lingering = os.fork()
         if lingering == 0:
@@ -71,6 +75,14 @@ def test_a_trial_is_over_when_it_has_reported_though_a_process_it_left_holds_its
         (record,) = pool.run([_spec("linger", timeout=20.0)])  # waiting for the pipe's end would reach the limit
     os.kill(int(record.output), signal.SIGKILL)
     assert record.ok and record.outcome == Outcome.OK.value
+
+
+def test_what_a_trial_registered_for_its_process_end_runs_when_it_ends(tmp_path):
+    marker = tmp_path / "marker"
+    spec = TrialSpec("clean up", "panda", 0, 0, str(marker))
+    with TrialPool(1, serve_args=(_fake_trial, _no_warm)) as pool:
+        (record,) = pool.run([spec])
+    assert record.ok and marker.read_text() == "cleaned up"
 
 
 def test_jobs_must_be_positive():

@@ -8,7 +8,6 @@ verdict.
 
 from __future__ import annotations
 
-import multiprocessing.util
 import os
 import shutil
 import subprocess
@@ -17,6 +16,7 @@ import tempfile
 from roboscript.bench.tasks import Task
 from roboscript.codegen.sandbox import ExecutionResult
 from roboscript.perception.modes import SEGMENTATION, PerceptionMode, perception_mode
+from roboscript.processes import at_process_exit
 from roboscript.robot_config import DEFAULT_CONFIGS
 
 REAL_TIME_FACTOR = 2.0
@@ -33,8 +33,7 @@ def _process_master() -> str:
         home = tempfile.mkdtemp(prefix="roboscript_ros_")
         process, uri = start_master(home)
         _MASTER = (process, uri, home)
-        # multiprocessing's finalizers run at the end of a trial process too, where atexit handlers do not.
-        multiprocessing.util.Finalize(None, _stop_master, args=(process, home), exitpriority=10)
+        at_process_exit(lambda: _stop_master(process, home))  # a trial's process runs these before it leaves
         os.environ.update(ROS_MASTER_URI=uri, ROS_IP="127.0.0.1", ROS_HOME=home)
     return _MASTER[1]
 

@@ -24,7 +24,7 @@ import traceback
 from collections.abc import Callable
 
 from roboscript.bench.trial import TrialSpec, run_trial
-from roboscript.processes import die_with_parent
+from roboscript.processes import die_with_parent, run_exit_hooks
 
 SOFTWARE_GL_THREADS = "LP_NUM_THREADS"  # Mesa's software rasteriser's thread count; 0 keeps GL state forkable
 LENGTH = struct.Struct("<Q")  # the length of a trial's message, before it
@@ -120,6 +120,7 @@ def _trial_child(spec: TrialSpec, run: Callable[[TrialSpec], dict], writer: int)
             view = view[os.write(writer, view) :]
         code = 0
     finally:
+        run_exit_hooks()  # what the trial started that ends with its process (a ROS trial's master and its home)
         sys.stdout.flush()
         sys.stderr.flush()
         os._exit(code)

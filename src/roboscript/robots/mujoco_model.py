@@ -110,7 +110,7 @@ _compiled_robots: OrderedDict[tuple, mujoco.MjModel] = OrderedDict()
 def compiled_robot(description: RobotDescription, mount: Transform) -> mujoco.MjModel:
     """The robot alone at ``mount``, compiled once per process for each robot and mount (a benchmark's trials ask for
     the same few again and again). The model is shared: read it, never write it."""
-    key = (description.name, *np.asarray(mount.position, float).tolist(), *np.asarray(mount.quaternion, float).tolist())
+    key = (description, *np.asarray(mount.position, float).tolist(), *np.asarray(mount.quaternion, float).tolist())
     model = _compiled_robots.get(key)
     if model is None:
         spec = mujoco.MjSpec()

@@ -172,7 +172,7 @@ def build_world(world: WorldSpec, robot: str | None = None) -> SimWorld:
     benchmark's next seed) copies it and moves the objects, rather than compiling again. Every build is made that
     way, so a world is the same whichever build of it came first."""
     description = get_robot(robot or world.robot)
-    key = (_without_layout(world), description.name)
+    key = (_without_layout(world), description)
     compiled = _compiled.get(key)
     if compiled is None:
         compiled = _compiled[key] = _compile(world, description)
