@@ -25,7 +25,7 @@ import mujoco
 
 SOFTWARE_RENDERERS = ("llvmpipe", "softpipe")  # Mesa's CPU rasterisers, as glGetString(GL_RENDERER) names them
 PROBE_TIMEOUT = 30.0  # seconds a probe may take to make a context before GL counts as unsafe to fork
-KEPT_RENDERERS = 16  # renderers a sharing process keeps; the oldest is closed past that
+KEPT_RENDERERS = 8  # renderers a sharing process keeps (some 80 MB each); the oldest is closed past that
 
 _shared: dict[tuple, mujoco.Renderer] | None = None  # None: renderers are not shared in this process
 
