@@ -38,28 +38,21 @@ PHASES = (*MARKED_PHASES, "rest")
 CHILD = r"""
 import importlib, json, sys, time
 import roboscript  # chooses the GL backend before MuJoCo is imported
-import mujoco
 try:
     importlib.import_module("roboscript.bench.warm")  # what the runner's fork server does, where it exists
 except ImportError:
     pass
 from roboscript.bench.tasks import get_task
 from roboscript.bench.trial import TrialSpec, run_trial
+from _timed_trial import stepping_timed
 
 task, robot, seed, mode = sys.argv[1], sys.argv[2], int(sys.argv[3]), sys.argv[4]
-stepping = [0.0]
-step = mujoco.mj_step
-def timed_step(*args, **kwargs):
-    started = time.perf_counter()
-    step(*args, **kwargs)
-    stepping[0] += time.perf_counter() - started
-mujoco.mj_step = timed_step
 program = get_task(task).reference_program()
 started = time.perf_counter()
-record = run_trial(TrialSpec(task, robot, seed, seed, program, perception=mode))
+record, stepping = stepping_timed(lambda: run_trial(TrialSpec(task, robot, seed, seed, program, perception=mode)))
 wall = time.perf_counter() - started
 print("RESULT " + json.dumps({"success": record.success, "outcome": record.outcome, "sim": record.sim_time_s,
-                              "wall": wall, "stepping": stepping[0], "phases": getattr(record, "phases", {})}))
+                              "wall": wall, "stepping": stepping, "phases": getattr(record, "phases", {})}))
 """
 
 

@@ -26,7 +26,6 @@ from collections.abc import Callable
 from roboscript.bench.trial import TrialSpec, run_trial
 from roboscript.processes import die_with_parent, run_exit_hooks
 
-SOFTWARE_GL_THREADS = "LP_NUM_THREADS"  # Mesa's software rasteriser's thread count; 0 keeps GL state forkable
 LENGTH = struct.Struct("<Q")  # the length of a trial's message, before it
 POLL_INTERVAL = 0.5  # seconds between looks at whether a trial that has not reported has ended
 
@@ -38,8 +37,9 @@ def serve(conn, run: Callable[[TrialSpec], dict] | None = None, warm: Callable[[
     :func:`warm_for`) prepares this one; both are parameters for the runner's tests."""
     run = run or _run_trial
     warm = warm or warm_for
-    os.environ.setdefault(SOFTWARE_GL_THREADS, "0")  # before any GL is made here; a user's own choice stands
     from roboscript.sim import shared_gl
+
+    os.environ.setdefault(shared_gl.SOFTWARE_GL_THREADS, "0")  # before any GL is made here; a user's choice stands
 
     if shared_gl.fork_safe():
         shared_gl.share_renderers()

@@ -7,13 +7,13 @@ what the simulator steps.
 
 from __future__ import annotations
 
-from collections import OrderedDict
 from dataclasses import dataclass
 
 import mujoco
 import numpy as np
 
 from roboscript.geometry import Transform, quat_to_mujoco
+from roboscript.kept import Kept
 from roboscript.robots.description import ROBOT_PREFIX, RobotDescription
 
 TIMESTEP = 0.002  # 500 Hz physics
@@ -104,24 +104,21 @@ def is_descendant(model: mujoco.MjModel, body: int, root: int) -> bool:
 
 
 COMPILED_ROBOTS_KEPT = 8  # robot models compiled alone that a process keeps (a robot, a mount each)
-_compiled_robots: OrderedDict[tuple, mujoco.MjModel] = OrderedDict()
+_compiled_robots: Kept[mujoco.MjModel] = Kept(COMPILED_ROBOTS_KEPT)
 
 
 def compiled_robot(description: RobotDescription, mount: Transform) -> mujoco.MjModel:
     """The robot alone at ``mount``, compiled once per process for each robot and mount (a benchmark's trials ask for
     the same few again and again). The model is shared: read it, never write it."""
     key = (description, *np.asarray(mount.position, float).tolist(), *np.asarray(mount.quaternion, float).tolist())
-    model = _compiled_robots.get(key)
-    if model is None:
-        spec = mujoco.MjSpec()
-        configure_options(spec)
-        attach_robot(spec, description, mount)
-        model = spec.compile()
-        _compiled_robots[key] = model
-        while len(_compiled_robots) > COMPILED_ROBOTS_KEPT:
-            _compiled_robots.popitem(last=False)
-    _compiled_robots.move_to_end(key)
-    return model
+    return _compiled_robots.get(key, lambda: _compile_robot(description, mount))
+
+
+def _compile_robot(description: RobotDescription, mount: Transform) -> mujoco.MjModel:
+    spec = mujoco.MjSpec()
+    configure_options(spec)
+    attach_robot(spec, description, mount)
+    return spec.compile()
 
 
 class RobotModel:

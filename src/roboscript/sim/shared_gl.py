@@ -23,11 +23,14 @@ from collections.abc import Callable
 
 import mujoco
 
+from roboscript.kept import Kept
+
+SOFTWARE_GL_THREADS = "LP_NUM_THREADS"  # Mesa's software rasteriser's thread count; 0 keeps GL state forkable
 SOFTWARE_RENDERERS = ("llvmpipe", "softpipe")  # Mesa's CPU rasterisers, as glGetString(GL_RENDERER) names them
 PROBE_TIMEOUT = 30.0  # seconds a probe may take to make a context before GL counts as unsafe to fork
-KEPT_RENDERERS = 8  # renderers a sharing process keeps (some 80 MB each); the oldest is closed past that
+KEPT_RENDERERS = 8  # renderers a sharing process keeps (some 80 MB each); the least recently used is closed past that
 
-_shared: dict[tuple, mujoco.Renderer] | None = None  # None: renderers are not shared in this process
+_shared: Kept[mujoco.Renderer] | None = None  # None: renderers are not shared in this process
 
 
 def geometry_key(model: mujoco.MjModel) -> str:
@@ -47,15 +50,15 @@ def share_renderers() -> None:
     """From now on, :func:`gl_renderer` keeps the renderers it makes in this process and hands them out again."""
     global _shared
     if _shared is None:
-        _shared = {}
+        _shared = Kept(KEPT_RENDERERS, give_up=lambda renderer: renderer.close())
 
 
 def stop_sharing() -> None:
     """Closes the renderers kept and makes them afresh for each user again."""
     global _shared
-    kept, _shared = _shared or {}, None
-    for renderer in kept.values():
-        renderer.close()
+    if _shared is not None:
+        _shared.clear()
+    _shared = None
 
 
 def sharing() -> bool:
@@ -72,20 +75,14 @@ def gl_renderer(
     A shared renderer's model is whichever its last user rendered: the user sets it before each render."""
     if _shared is None:
         return make(), False
-    key = (geometry_key(model), width, height, antialiasing)
-    renderer = _shared.get(key)
-    if renderer is None:
-        renderer = _shared[key] = make()
-        while len(_shared) > KEPT_RENDERERS:
-            _shared.pop(next(iter(_shared))).close()
-    return renderer, True
+    return _shared.get((geometry_key(model), width, height, antialiasing), make), True
 
 
 def fork_safe() -> bool:
     """Whether GL state made in this process still works in a child forked from it: MuJoCo renders offscreen with
     Mesa's software rasteriser (EGL or OSMesa) and ``LP_NUM_THREADS`` is 0. Found out in a throwaway child, which
     makes a small context and reads the renderer's name, so that this process starts no GL driver."""
-    if os.environ.get("MUJOCO_GL") not in ("egl", "osmesa") or os.environ.get("LP_NUM_THREADS") != "0":
+    if os.environ.get("MUJOCO_GL") not in ("egl", "osmesa") or os.environ.get(SOFTWARE_GL_THREADS) != "0":
         return False
     reader, writer = os.pipe()
     pid = os.fork()

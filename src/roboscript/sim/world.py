@@ -8,7 +8,6 @@ from __future__ import annotations
 
 import copy
 import math
-from collections import OrderedDict
 from collections.abc import Callable
 from dataclasses import dataclass, field, replace
 from typing import Literal
@@ -17,6 +16,7 @@ import mujoco
 import numpy as np
 
 from roboscript.geometry import Transform, quat_from_yaw, quat_to_mujoco
+from roboscript.kept import Kept
 from roboscript.names import kind_of
 from roboscript.objects import ObjectType
 from roboscript.robots import ROBOT_PREFIX, RobotDescription, get_robot
@@ -161,7 +161,7 @@ class _Compiled:
     drawer_frames: dict[str, tuple[np.ndarray, np.ndarray, tuple[np.ndarray, np.ndarray]]]
 
 
-_compiled: OrderedDict[tuple, _Compiled] = OrderedDict()
+_compiled: Kept[_Compiled] = Kept(COMPILED_WORLDS_KEPT)
 
 
 def build_world(world: WorldSpec, robot: str | None = None) -> SimWorld:
@@ -172,13 +172,7 @@ def build_world(world: WorldSpec, robot: str | None = None) -> SimWorld:
     benchmark's next seed) copies it and moves the objects, rather than compiling again. Every build is made that
     way, so a world is the same whichever build of it came first."""
     description = get_robot(robot or world.robot)
-    key = (_without_layout(world), description)
-    compiled = _compiled.get(key)
-    if compiled is None:
-        compiled = _compiled[key] = _compile(world, description)
-        while len(_compiled) > COMPILED_WORLDS_KEPT:
-            _compiled.popitem(last=False)
-    _compiled.move_to_end(key)
+    compiled = _compiled.get((_without_layout(world), description), lambda: _compile(world, description))
     model = _placed(copy.copy(compiled.model), _object_poses(world, compiled.drawer_frames))
     data = mujoco.MjData(model)
     binding = RobotBinding.bind(model, description)
