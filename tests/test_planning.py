@@ -21,7 +21,15 @@ from roboscript.planning import (
     time_parameterize,
 )
 from roboscript.planning.ground_truth_scene import ground_truth_motion
-from roboscript.planning.planner import JointPlanner, densify
+from roboscript.planning.ik import TCP_POSE_COLLIDES
+from roboscript.planning.planner import (
+    JointPlanner,
+    densify,
+    pose_distance,
+    same_pose,
+    whole_turn_equivalents,
+    whole_turns,
+)
 from roboscript.sim.world_file import parse_world
 
 ROBOTS = ("panda", "ur5e")
@@ -67,10 +75,10 @@ def test_planned_paths_are_collision_free_under_exact_dense_checking(table_world
         goal = motion.ik(Transform(p, DOWN), start)
         path = motion.planner.plan(start, goal)
         np.testing.assert_allclose(path.start, start)
-        np.testing.assert_allclose(path.goal, goal)
+        assert same_pose(path.goal, goal, 1e-9)  # the goal, or it turned a whole turn about a joint
         exact.validate(path.waypoints)
         assert np.all(np.isfinite(path.waypoints))
-        start, planned = goal, planned + 1
+        start, planned = path.goal, planned + 1
     assert planned == 6
 
 
@@ -187,14 +195,42 @@ def test_failures_are_typed_and_explained():
     with pytest.raises(StateInCollisionError, match="tea") as collision:
         motion.planner.plan(inside, home)
     assert collision.value.which == "start"
-    with pytest.raises(IKError, match="collision"):
+    with pytest.raises(IKError, match=TCP_POSE_COLLIDES) as collision:
         motion.ik(Transform(np.array([0.0, 0.0, TABLE + 0.03]), DOWN))
+    assert any("tea" in pair for pair in collision.value.colliding)
+    assert motion.scene.collides_wherever_the_tcp_is(inside)
+    assert not motion.scene.collides_wherever_the_tcp_is(home)
     side_a = motion.ik(Transform(np.array([0.0, -0.2, TABLE + 0.05]), DOWN))
     side_b = motion.ik(Transform(np.array([0.0, 0.2, TABLE + 0.05]), DOWN), side_a)
     with pytest.raises(PlannerTimeoutError, match="RRTConnect"):
         motion.planner.plan(side_a, side_b, timeout=1e-5)
     with pytest.raises(ValueError, match="7 joint values"):
         motion.planner.plan(home[:3], home)
+
+
+def test_whole_turns_of_a_joint_are_the_same_pose():
+    lower, upper = np.array([-2 * np.pi, -np.pi]), np.array([2 * np.pi, np.pi])
+    q = np.array([1.0, 0.5])
+    equivalents = whole_turn_equivalents(q, lower, upper)
+    np.testing.assert_allclose(equivalents, [[1.0, 0.5], [1.0 - 2 * np.pi, 0.5]])  # joint 2 has one turn of range
+    np.testing.assert_allclose(whole_turns(q, equivalents[1]), [-2 * np.pi, 0.0])
+    assert same_pose(q, equivalents[1], 1e-9)
+    assert pose_distance(q, q + np.array([0.0, 0.3])) == pytest.approx(0.3)
+
+
+def test_a_goal_walled_off_one_way_round_is_reached_the_other_way():
+    """A UR5e's shoulder housing cannot pan past a basket beside its base (pan -0.67 .. -0.46 collides whatever
+    the other joints do): a goal across it is reached by panning the other way round, a whole turn from it."""
+    world = objects_world({"name": "basket", "type": "basket_with_fabric_liner", "position": [-0.2, 0.28]})
+    backend, motion = planner_for(world, "ur5e")
+    start = np.array([0.39, -2.21, 2.17, -1.53, -1.57, 1.79])
+    goal = np.array([-1.1, -1.5, 2.03, -2.11, -1.57, -0.15])
+    upright = np.array([-0.56, -1.57, 0.0, -1.57, -1.57, 0.0])
+    assert ("robot/upper_arm_link", "basket") in motion.scene.collisions(upright)
+    path = motion.planner.plan(start, goal, timeout=2.0)
+    np.testing.assert_allclose(path.goal, goal + np.array([2 * np.pi, 0, 0, 0, 0, 0]))
+    JointPlanner(motion.scene, validation_step=0.002).validate(path.waypoints)
+    backend.close()
 
 
 def test_every_listed_planner_solves_a_simple_query():
@@ -378,13 +414,18 @@ def test_a_path_that_fails_the_dense_validation_is_planned_again_and_screens_the
 
 def test_ik_tries_the_given_seeds_before_random_ones(table_world):
     """A configuration chosen for a pose nearby seeds the IK: with one attempt allowed, the only solutions found
-    are those the reference and the seed lead to."""
+    are those the reference and the seed lead to. An arm with a closed form needs no seeds: one attempt finds
+    every branch."""
     backend, motion = table_world
     home = backend.joint_positions()
     target = Transform(np.array([0.0, -0.3, TABLE + 0.1]), DOWN)
     branches = ik_solutions(motion.kinematics, target, home, motion.scene, wanted_solutions=4)
     far = branches[-1]  # the branch farthest from home: not the one IK from home converges to
     alone = ik_solutions(motion.kinematics, target, home, motion.scene, attempts=1, max_attempts=1, wanted_solutions=4)
+    if motion.kinematics.closed_form is not None:
+        assert len(alone) == len(branches) == 4
+        assert all(np.allclose(a, b) for a, b in zip(alone, branches, strict=True))
+        return
     assert not any(np.allclose(q, far, atol=1e-2) for q in alone)
     seeded = ik_solutions(
         motion.kinematics, target, home, motion.scene, attempts=1, max_attempts=1, wanted_solutions=4, seeds=[far]

@@ -8,8 +8,10 @@ import numpy as np
 
 from roboscript.geometry import Transform
 from roboscript.planning.errors import IKError
-from roboscript.planning.kinematics import ArmKinematics
+from roboscript.planning.kinematics import ArmKinematics, nearest_equivalent
 from roboscript.planning.scene import PlanningScene
+
+TCP_POSE_COLLIDES = "the hand or what it holds collides at this pose, whatever the arm's configuration"
 
 
 def solve_ik(
@@ -46,8 +48,22 @@ def ik_solutions(
 ) -> list[np.ndarray]:
     """Up to ``wanted_solutions`` collision-free solutions, nearest ``reference`` first; see :func:`solve_ik`.
     ``seeds``: configurations tried right after ``reference``, before the random ones (near the edge of the
-    arm's reach, random seeds may all miss a pose that a configuration chosen for a pose nearby reaches)."""
+    arm's reach, random seeds may all miss a pose that a configuration chosen for a pose nearby reaches).
+
+    An arm with a closed form (:attr:`ArmKinematics.closed_form`) has all its solutions at once, and the nearest
+    free ones are returned with no seeds drawn. Where it has none within the limits and tolerances, one iterative
+    run from ``reference`` decides a pose at the very edge of reach and says how near the arm came: a hundred
+    random seeds could find nothing the closed form missed."""
     reference = np.asarray(reference, dtype=float)
+    if kinematics.closed_form is not None:
+        found = _closed_form_solutions(kinematics, target, reference, scene, wanted_solutions)
+        if found:
+            return found
+        attempts = max_attempts = 1
+        seeds = ()
+    searched = f"{max(attempts, max_attempts)} seeds"
+    if kinematics.closed_form is not None:
+        searched = "no closed-form solution"
     rng = np.random.default_rng(seed)
     starts = [reference, *(np.asarray(q, dtype=float) for q in seeds)]
     solutions: list[np.ndarray] = []
@@ -63,11 +79,14 @@ def ik_solutions(
             best_position, best_angle = result.position_error, result.angle_error
         if not result.converged:
             continue
-        q = _nearest_equivalent(result.q, reference, kinematics.lower, kinematics.upper)
+        q = nearest_equivalent(result.q, reference, kinematics.lower, kinematics.upper)
         if scene is not None and not scene.is_valid(q):
             for pair in scene.collisions(q):
                 if pair not in colliding:
                     colliding.append(pair)
+            if not solutions and scene.collides_wherever_the_tcp_is(q):
+                # The hand (or what it holds) collides at the pose itself: no other seed can help.
+                raise IKError(target.position, 0.0, 0.0, TCP_POSE_COLLIDES, colliding)
             continue
         if any(np.allclose(q, other, atol=1e-3) for other in solutions):
             continue
@@ -82,16 +101,34 @@ def ik_solutions(
         target.position,
         best_position,
         best_angle,
-        f"not reachable within the joint limits ({max(attempts, max_attempts)} seeds)",
+        f"not reachable within the joint limits ({searched})",
     )
 
 
-def _nearest_equivalent(q: np.ndarray, reference: np.ndarray, lower: np.ndarray, upper: np.ndarray) -> np.ndarray:
-    """Moves joints by whole turns towards ``reference`` where the limits allow (wrist joints with +-2 pi range)."""
-    q = q.copy()
-    for j in range(len(q)):
-        for shift in (-2 * np.pi, 2 * np.pi):
-            candidate = q[j] + shift
-            if lower[j] <= candidate <= upper[j] and abs(candidate - reference[j]) < abs(q[j] - reference[j]):
-                q[j] = candidate
-    return q
+def _closed_form_solutions(
+    kinematics: ArmKinematics,
+    target: Transform,
+    reference: np.ndarray,
+    scene: PlanningScene | None,
+    wanted: int,
+) -> list[np.ndarray]:
+    """The closed form's collision-free solutions, nearest ``reference`` first, at most ``wanted``. Raises
+    :class:`IKError` with the collisions if it has solutions but every one collides."""
+    results = kinematics.closed_form_solutions(target, reference)
+    solutions: list[np.ndarray] = []
+    colliding: list[tuple[str, str]] = []
+    for result in sorted(results, key=lambda r: float(np.sum((r.q - reference) ** 2))):
+        q = result.q
+        if scene is not None and not scene.is_valid(q):
+            colliding.extend(pair for pair in scene.collisions(q) if pair not in colliding)
+            if scene.collides_wherever_the_tcp_is(q):
+                break
+            continue
+        if any(np.allclose(q, other, atol=1e-3) for other in solutions):
+            continue
+        solutions.append(q)
+        if len(solutions) >= wanted:
+            break
+    if not solutions and colliding:
+        raise IKError(target.position, 0.0, 0.0, "every solution is in collision", colliding)
+    return solutions

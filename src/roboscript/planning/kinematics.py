@@ -1,5 +1,6 @@
-"""Arm kinematics on a robot-only MuJoCo model: forward kinematics of the TCP and inverse kinematics
-(mink's frame task, its quadratic program solved directly).
+"""Arm kinematics on a robot-only MuJoCo model: forward kinematics of the TCP and inverse kinematics, in closed
+form for arms of the UR family (:mod:`roboscript.planning.closed_form_ik`), else iterative (mink's frame task, its
+quadratic program solved directly).
 
 The model holds just the robot at its mount, so IK works on the arm's few joints rather than on every object of
 the world. Collision-aware choice among solutions is :mod:`roboscript.planning.ik`'s job.
@@ -10,11 +11,13 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 import mink
+import mujoco
 import numpy as np
 
-from roboscript.geometry import Transform, quat_to_matrix
+from roboscript.geometry import Transform, quat_to_matrix, rotation_angle_between
 from roboscript.phases import timed
 from roboscript.planning.box_qp import solve_box_qp
+from roboscript.planning.closed_form_ik import ClosedFormIK, NotClosedFormError
 from roboscript.robots import ROBOT_PREFIX, RobotDescription
 from roboscript.robots.mujoco_model import RobotModel
 
@@ -58,6 +61,19 @@ class ArmKinematics:
         )
         self._cost = np.array([POSITION_COST] * 3 + [ORIENTATION_COST] * 3)
         self._arm_dofs = np.array([self.model.joint(q(j)).dofadr[0] for j in description.arm_joints])
+        self.closed_form, self.closed_form_absent = self._closed_form()
+
+    def _closed_form(self) -> tuple[ClosedFormIK | None, str]:
+        """The arm's closed-form IK, read off its joint axes at the zero configuration; or None and why not."""
+        self.data.qpos[:] = self.model.qpos0
+        self.data.qpos[self._qpos] = 0.0
+        mujoco.mj_kinematics(self.model, self.data)
+        joints = [self.model.joint(RobotDescription.qualified(j)).id for j in self.description.arm_joints]
+        axes, points = self.data.xaxis[joints].copy(), self.data.xanchor[joints].copy()
+        try:
+            return ClosedFormIK.from_zero_configuration(axes, points, self.fk(np.zeros(self.dof))), ""
+        except NotClosedFormError as exc:
+            return None, str(exc)
 
     @property
     def dof(self) -> int:
@@ -76,7 +92,8 @@ class ArmKinematics:
         position_tolerance: float = 2e-4,
         angle_tolerance: float = 2e-3,
     ) -> IKResult:
-        """Runs IK from ``seed`` towards ``target``, within joint limits; returns where it ended."""
+        """Runs iterative IK from ``seed`` towards ``target``, within joint limits; returns where it ended. (From a
+        seed near the answer, as along a Cartesian line, this is quicker than :meth:`closed_form_solutions`.)"""
         qpos = self.model.qpos0.copy()
         qpos[self._qpos] = np.clip(seed, self.lower, self.upper)
         self._configuration.update(qpos)
@@ -101,6 +118,33 @@ class ArmKinematics:
         converged = position_error < position_tolerance and angle_error < angle_tolerance
         return IKResult(np.clip(q, self.lower, self.upper), position_error, angle_error, converged)
 
+    @timed("ik")
+    def closed_form_solutions(
+        self,
+        target: Transform,
+        reference: np.ndarray,
+        position_tolerance: float = 2e-4,
+        angle_tolerance: float = 2e-3,
+    ) -> list[IKResult]:
+        """Every solution of the closed form within the joint limits, each joint turned by whole turns towards
+        ``reference`` where its range allows, and each checked by forward kinematics (a pose at the very edge of
+        reach may be missed by a hair: the iterative solver then decides). Raises ValueError for an arm without
+        one (see :attr:`closed_form_absent`)."""
+        if self.closed_form is None:
+            raise ValueError(f"the {self.description.name} has no closed-form IK: {self.closed_form_absent}")
+        reference = np.asarray(reference, dtype=float)
+        out = []
+        for q in self.closed_form.solutions(target, reference):
+            q = nearest_equivalent(q, reference, self.lower, self.upper)
+            if np.any(q < self.lower) or np.any(q > self.upper):
+                continue
+            reached = self.fk(q)
+            position_error = float(np.linalg.norm(reached.position - target.position))
+            angle_error = rotation_angle_between(reached.quaternion, target.quaternion)
+            if position_error < position_tolerance and angle_error < angle_tolerance:
+                out.append(IKResult(q, position_error, angle_error, True))
+        return out
+
     def _step(self, error: np.ndarray) -> np.ndarray:
         """One damped least-squares step towards the target, each joint kept within a share of the way to its
         limits: the quadratic program mink poses (a frame task with Levenberg-Marquardt damping, a configuration
@@ -119,3 +163,14 @@ class ArmKinematics:
         step = np.zeros(self.model.nv)
         step[self._arm_dofs] = solve_box_qp(hessian, linear, lower, upper)
         return step
+
+
+def nearest_equivalent(q: np.ndarray, reference: np.ndarray, lower: np.ndarray, upper: np.ndarray) -> np.ndarray:
+    """Moves joints by whole turns towards ``reference`` where the limits allow (wrist joints with +-2 pi range)."""
+    q = q.copy()
+    for j in range(len(q)):
+        for shift in (-2 * np.pi, 2 * np.pi):
+            candidate = q[j] + shift
+            if lower[j] <= candidate <= upper[j] and abs(candidate - reference[j]) < abs(q[j] - reference[j]):
+                q[j] = candidate
+    return q

@@ -24,7 +24,7 @@ from roboscript.planning.errors import (
 )
 from roboscript.planning.ik import ik_solutions, solve_ik
 from roboscript.planning.kinematics import ArmKinematics
-from roboscript.planning.planner import JointPath, JointPlanner, seed_sampling
+from roboscript.planning.planner import JointPath, JointPlanner, pose_distance, same_pose, seed_sampling, whole_turns
 from roboscript.planning.scene import PlanningScene
 from roboscript.planning.timing import time_parameterize
 from roboscript.planning.transfer import plan_transfer
@@ -305,11 +305,14 @@ class MotionPlanner:
         """Moves in along the option's straight line to ``target``; where it had none, or the line is blocked now
         (the world moved), straight if that has become feasible, else planned."""
         goal, line = option
+        q = self.sync()
         if line is not None:
-            line = line.copy()
-            line[0] = self.sync()
-            self.execute(line)
-            return
+            # The path here may have ended at the line's start turned a whole turn about a joint (planner.py).
+            line = line + whole_turns(line[0], q)
+            line[0] = q
+            if self.scene.within_limits(line.min(axis=0)) and self.scene.within_limits(line.max(axis=0)):
+                self.execute(line)
+                return
         straight = self.cartesian([target])
         self.execute(straight.waypoints if straight.fraction >= 1.0 else self.plan_to_joints(goal))
 
@@ -318,7 +321,7 @@ class MotionPlanner:
         where the planner runs out of time, executes it, and returns the index of the goal reached."""
         path = self.plan(self.sync(), list(goals), planner, None)
         self.execute(path)
-        return int(np.argmin([float(np.max(np.abs(path.goal - g))) for g in goals]))
+        return int(np.argmin([pose_distance(path.goal, g) for g in goals]))
 
     def prefer_goal(self, pose: Transform, q: np.ndarray) -> None:
         """Makes ``q`` the goal of the next motion to ``pose`` (a place pose chosen because the hand can leave it
@@ -386,7 +389,7 @@ class MotionPlanner:
         one is), else a planned collision-free motion."""
         line = self.cartesian([pose])
         preferred = self._preferred_for(pose)
-        if line.fraction >= 1.0 and (preferred is None or np.max(np.abs(line.waypoints[-1] - preferred)) < 0.2):
+        if line.fraction >= 1.0 and (preferred is None or same_pose(line.waypoints[-1], preferred, 0.2)):
             path = line.waypoints
         else:
             path = self.plan_to_pose(pose, planner)

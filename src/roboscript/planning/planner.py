@@ -3,6 +3,10 @@
 Every returned path has been simplified and then validated densely: consecutive checks are at most
 ``validation_step`` metres of motion apart for any point of the arm (a bound from each joint's lever arm), and the
 scene's padding is at least that step, so no point of the arm can pass through an obstacle between two checks.
+
+A goal is a pose of the arm: where a joint can turn more than once (a UR arm's joints have two turns of range), the
+path may end at the goal turned a whole turn about such a joint (:func:`whole_turn_equivalents`). A UR5e whose
+shoulder housing cannot pan past a basket beside its base reaches the same configuration by panning the other way.
 """
 
 from __future__ import annotations
@@ -125,6 +129,40 @@ def densify(waypoints: np.ndarray, lever: np.ndarray, step: float) -> np.ndarray
     return np.array(out)
 
 
+TURN = 2 * np.pi
+
+
+def whole_turn_equivalents(q: np.ndarray, lower: np.ndarray, upper: np.ndarray) -> list[np.ndarray]:
+    """``q`` first, then each configuration one joint's whole turn away from it within the limits: the same pose
+    of the arm, reached by turning that joint the other way round."""
+    out = [q]
+    for j in range(len(q)):
+        for turn in (-TURN, TURN):
+            if lower[j] <= q[j] + turn <= upper[j]:
+                other = q.copy()
+                other[j] += turn
+                out.append(other)
+    return out
+
+
+def whole_turns(a: np.ndarray, b: np.ndarray) -> np.ndarray:
+    """The whole turns per joint (multiples of 2 pi) nearest ``b - a``: add them to a path from ``a`` to continue
+    it from ``b`` where ``b`` is ``a``'s pose turned whole turns."""
+    return TURN * np.round((np.asarray(b, dtype=float) - np.asarray(a, dtype=float)) / TURN)
+
+
+def same_pose(a: np.ndarray, b: np.ndarray, tolerance: float) -> bool:
+    """Whether configurations ``a`` and ``b`` put every joint within ``tolerance`` radians of the same angle,
+    whole turns aside."""
+    return pose_distance(a, b) < tolerance
+
+
+def pose_distance(a: np.ndarray, b: np.ndarray) -> float:
+    """The largest joint angle between configurations ``a`` and ``b``, whole turns aside (radians)."""
+    difference = np.asarray(b, dtype=float) - np.asarray(a, dtype=float)
+    return float(np.max(np.abs(difference - whole_turns(np.zeros_like(difference), difference))))
+
+
 def first_collision(scene: PlanningScene, points: np.ndarray) -> int:
     """Index of the first point in collision or outside the joint limits, or -1."""
     # Points between in-limit points are within the limits too (the limits are a box); test only the ends.
@@ -202,7 +240,8 @@ class JointPlanner:
         simplify: bool = True,
         optimize: bool = False,
     ) -> JointPath:
-        """A validated collision-free path from ``start`` to ``goal``.
+        """A validated collision-free path from ``start`` to ``goal``, or to ``goal`` turned a whole turn about a
+        joint that can turn more than once (see :func:`whole_turn_equivalents`; ``JointPath.goal`` says which).
 
         Optimising planners stop at their first exact solution unless ``optimize`` is set (then they use the
         whole ``timeout``). Raises :class:`StateInCollisionError`, :class:`PlannerTimeoutError` or
@@ -260,10 +299,19 @@ class JointPlanner:
         setup.setStateValidityChecker(valid)
         info = setup.getSpaceInformation()
         info.setStateValidityCheckingResolution(min(1.0, check_step / space.getMaximumExtent()))
-        start_state, goal_state = space.allocState(), space.allocState()
+        start_state = space.allocState()
         for j in range(dof):
-            start_state[j], goal_state[j] = float(start[j]), float(goal[j])
-        setup.setStartAndGoalStates(start_state, goal_state)
+            start_state[j] = float(start[j])
+        setup.setStartState(start_state)
+        # The goal itself first: RRTConnect grows its goal tree from the goals in order, adding the others as it
+        # grows, so a goal that connects directly is still the one reached.
+        goals = ob.GoalStates(info)
+        for equivalent in whole_turn_equivalents(goal, self.scene.joint_lower, self.scene.joint_upper):
+            state = space.allocState()
+            for j in range(dof):
+                state[j] = float(equivalent[j])
+            goals.addState(state)
+        setup.setGoal(goals)
         setup.setPlanner(getattr(og, _PLANNER_CLASSES[name])(info))
         if name in _OPTIMIZING and not optimize:
             # Any path is good enough: the optimising planners then stop at their first solution.

@@ -86,6 +86,9 @@ class PlanningScene:
         self._is_robot[list(robot.body_ids)] = True
         tcp_body = model.site_bodyid[robot.tcp_site]
         self._gripper_bodies = np.array([b for b in robot.body_ids if is_descendant(model, b, tcp_body)])
+        # The last arm joint's body and all it carries: the TCP's pose alone places them.
+        wrist = model.dof_bodyid[robot.dof[-1]]
+        self._placed_by_tcp = np.array([is_descendant(model, b, wrist) for b in range(model.nbody)])
         self._collides = (model.geom_contype | model.geom_conaffinity) > 0
         moved = np.array([_moved_by_arm(model, b, robot) for b in range(nbody)])
         base = self._is_robot & ~moved
@@ -219,6 +222,27 @@ class PlanningScene:
             if floor is None or distances[k] < floor - LEAVING_TOLERANCE:
                 return False
         return True
+
+    @timed("planning")
+    def collides_wherever_the_tcp_is(self, q: np.ndarray) -> bool:
+        """Whether, with the arm at ``q``, something the TCP's pose alone places (the last link, the gripper, what
+        it holds) collides with something the arm does not move: then every configuration that puts the TCP where
+        ``q`` puts it collides too, and an IK search for that pose can stop."""
+        self._place(q)
+        mujoco.mj_collision(self.model, self.data)
+        placed = self._placed_by_tcp.copy()
+        placed[[attachment.body for attachment in self._attached.values()]] = True
+        still = ~self._is_robot & ~placed
+        distances = self.data.contact.dist
+        for k, (a, b) in enumerate(self._contact_bodies()):
+            if self._allowed[a, b]:
+                continue
+            floor = self._leaving.get((a, b))
+            if floor is not None and distances[k] >= floor - LEAVING_TOLERANCE:
+                continue
+            if (placed[a] and still[b]) or (placed[b] and still[a]):
+                return True
+        return False
 
     @timed("planning")
     def collisions(self, q: np.ndarray) -> list[tuple[str, str]]:

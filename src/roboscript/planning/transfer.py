@@ -15,7 +15,7 @@ from roboscript.geometry import Transform
 from roboscript.planning.cartesian import cartesian_path
 from roboscript.planning.errors import PlanningError
 from roboscript.planning.kinematics import ArmKinematics
-from roboscript.planning.planner import JointPath, JointPlanner
+from roboscript.planning.planner import JointPath, JointPlanner, whole_turns
 from roboscript.planning.scene import PlanningScene
 
 HELD_CLEARANCE = 0.02  # metres a held object keeps from everything while it is carried
@@ -57,5 +57,9 @@ def plan_transfer(
     lower = to_clearance(kinematics, scene, goal)[::-1]
     with scene.held_clearance(HELD_CLEARANCE):
         carried = planner.plan(lift[-1], lower[0], name, timeout)
+    # The carried part may end at the lowering line's start turned a whole turn about a joint.
+    lower = lower + whole_turns(lower[0], carried.goal)
+    if not (scene.within_limits(lower.min(axis=0)) and scene.within_limits(lower.max(axis=0))):
+        raise PlanningError("the lowering line, turned as the carried path arrives, leaves the joint limits")
     waypoints = np.vstack([lift[:-1], carried.waypoints, lower[1:]])
     return JointPath(waypoints, carried.planner, carried.planning_time, carried.validation_time, carried.replans)
