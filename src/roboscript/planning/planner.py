@@ -299,19 +299,20 @@ class JointPlanner:
         setup.setStateValidityChecker(valid)
         info = setup.getSpaceInformation()
         info.setStateValidityCheckingResolution(min(1.0, check_step / space.getMaximumExtent()))
-        start_state = space.allocState()
-        for j in range(dof):
-            start_state[j] = float(start[j])
-        setup.setStartState(start_state)
-        # The goal itself first: RRTConnect grows its goal tree from the goals in order, adding the others as it
-        # grows, so a goal that connects directly is still the one reached.
-        goals = ob.GoalStates(info)
-        for equivalent in whole_turn_equivalents(goal, self.scene.joint_lower, self.scene.joint_upper):
-            state = space.allocState()
-            for j in range(dof):
-                state[j] = float(equivalent[j])
-            goals.addState(state)
-        setup.setGoal(goals)
+        start_state = self._state(space, start)
+        equivalents = whole_turn_equivalents(goal, self.scene.joint_lower, self.scene.joint_upper)
+        if len(equivalents) == 1:
+            # One goal state: OMPL's own single-goal set-up (RRTConnect draws its random numbers otherwise, and
+            # the paths of an arm with no whole turns stay what they were).
+            setup.setStartAndGoalStates(start_state, self._state(space, goal))
+        else:
+            setup.setStartState(start_state)
+            # The goal itself first: RRTConnect grows its goal tree from the goals in order, adding the others as
+            # it grows, so a goal that connects directly is still the one reached.
+            goals = ob.GoalStates(info)
+            for equivalent in equivalents:
+                goals.addState(self._state(space, equivalent))
+            setup.setGoal(goals)
         setup.setPlanner(getattr(og, _PLANNER_CLASSES[name])(info))
         if name in _OPTIMIZING and not optimize:
             # Any path is good enough: the optimising planners then stop at their first solution.
@@ -325,3 +326,11 @@ class JointPlanner:
         if simplify:
             simplify_path(og, info, path)
         return np.array([[path.getState(i)[j] for j in range(dof)] for i in range(path.getStateCount())])
+
+    @staticmethod
+    def _state(space, q: np.ndarray):
+        """An OMPL state of ``space`` at ``q``."""
+        state = space.allocState()
+        for j in range(len(q)):
+            state[j] = float(q[j])
+        return state
