@@ -24,6 +24,7 @@ import math
 
 import numpy as np
 
+from roboscript.errors import UsageError
 from roboscript.geometry import Transform
 
 # Where the wrist is singular (axis 6 along joints 2-4's axis), joints 2-4 and 6 turn about the same axis and only
@@ -32,7 +33,7 @@ SINGULAR = 1e-9
 PARALLEL = 1e-6  # how far (sine of the angle, or metres) the model may be from the shape above
 
 
-class NotClosedFormError(ValueError):
+class NotClosedFormError(UsageError, ValueError):
     """The arm does not have the shape this solver needs; says which part differs."""
 
 
