@@ -123,9 +123,11 @@ def cartesian_path(
             reason = f"joint {j + 1} would jump {abs(result.q[j] - q[j]):.2f} rad (near a singularity or a joint limit)"
         elif scene is not None:
             points = densify(np.array([q, *steps]), scene.lever_arms, scene.padding)
-            index = first_collision(scene, points)
+            # Each step starts where the one before ended, already checked: only the first step checks its start.
+            skip = 0 if len(waypoints) == 1 else 1
+            index = first_collision(scene, points[skip:])
             if index >= 0:
-                pairs = scene.collisions(points[index])
+                pairs = scene.collisions(points[index + skip])
                 if pairs:
                     reason = "collision: " + ", ".join(f"{a} with {b}" for a, b in pairs[:4])
                 else:
