@@ -4,7 +4,7 @@ import numpy as np
 import pytest
 
 from roboscript.geometry import Transform
-from roboscript.perception.points import entities_points, normal_map, point_map
+from roboscript.perception.points import entities_points, normal_map, point_map, surface_points
 from roboscript.robot_io import CameraFrame
 
 
@@ -67,3 +67,15 @@ def test_pixels_on_the_image_edge_and_beside_a_hole_are_left_out():
     assert np.isfinite(block).all()
     # Not the block's outline, not the 5x5 hole, nor the 20 pixels beside it whose normals would need its depth.
     assert len(block) == 18 * 28 - 5 * 5 - 4 * 5
+
+
+@pytest.mark.parametrize("stride", [1, 2, 3])
+def test_surface_points_are_the_dense_map_strided_less_the_hidden_pixels(stride):
+    frame = _frame()
+    hidden = frame.segmentation == 1  # as if block 1 were the robot
+    found = surface_points([frame, frame], [hidden, None], stride)
+    masked = point_map(frame, hidden)[::stride, ::stride].reshape(-1, 3)
+    whole = point_map(frame)[::stride, ::stride].reshape(-1, 3)
+    expected = np.vstack([masked[np.isfinite(masked).all(axis=1)], whole[np.isfinite(whole).all(axis=1)]])
+    assert len(masked[np.isfinite(masked).all(axis=1)]) < len(whole[np.isfinite(whole).all(axis=1)])
+    np.testing.assert_allclose(found, expected, atol=1e-12)

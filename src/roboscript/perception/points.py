@@ -37,8 +37,13 @@ def surface_points(
     millimetres high around objects' feet, which a finger reaching down beside a low box would find in its way."""
     clouds = []
     for k, frame in enumerate(frames):
-        world = point_map(frame, None if masks is None else masks[k])[::stride, ::stride]
-        clouds.append(world[np.isfinite(world).all(axis=-1)])
+        # Only the pixels kept are back-projected: a full frame costs some 100 ms, a quarter of it a quarter.
+        keep = frame.depth[::stride, ::stride] > 0
+        hidden = None if masks is None else masks[k]
+        if hidden is not None:
+            keep &= ~hidden[::stride, ::stride]
+        rows, cols = np.nonzero(keep)
+        clouds.append(_pixels_to_world(frame, rows * stride, cols * stride))
     return np.concatenate(clouds) if clouds else np.zeros((0, 3))
 
 

@@ -15,7 +15,7 @@ import numpy as np
 from roboscript.geometry import Transform, quat_from_axis_angle, rotation_angle_between
 from roboscript.phases import timed
 from roboscript.planning.kinematics import ArmKinematics
-from roboscript.planning.planner import densify, first_collision
+from roboscript.planning.path_checks import first_blocked
 from roboscript.planning.scene import PlanningScene
 
 
@@ -122,12 +122,10 @@ def cartesian_path(
             j = int(np.argmax(np.abs(result.q - q)))
             reason = f"joint {j + 1} would jump {abs(result.q[j] - q[j]):.2f} rad (near a singularity or a joint limit)"
         elif scene is not None:
-            points = densify(np.array([q, *steps]), scene.lever_arms, scene.padding)
             # Each step starts where the one before ended, already checked: only the first step checks its start.
-            skip = 0 if len(waypoints) == 1 else 1
-            index = first_collision(scene, points[skip:])
-            if index >= 0:
-                pairs = scene.collisions(points[index + skip])
+            blocked = first_blocked(scene, np.array([q, *steps]), scene.padding, check_start=len(waypoints) == 1)
+            if blocked is not None:
+                pairs = scene.collisions(blocked.q)
                 if pairs:
                     reason = "collision: " + ", ".join(f"{a} with {b}" for a, b in pairs[:4])
                 else:

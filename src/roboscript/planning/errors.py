@@ -63,10 +63,10 @@ class PlannerTimeoutError(PlanningError):
 class PathInCollisionError(PlanningError):
     """A path failed dense validation (should not happen for planner output; raised rather than executed)."""
 
-    def __init__(self, index: int, count: int, pairs: Sequence[tuple[str, str]]):
-        self.index, self.count, self.pairs = index, count, tuple(pairs)
-        listed = ", ".join(f"{a} with {b}" for a, b in self.pairs[:4])
-        super().__init__(f"the path collides at sample {index} of {count}: {listed}")
+    def __init__(self, segment: int, count: int, pairs: Sequence[tuple[str, str]]):
+        self.segment, self.count, self.pairs = segment, count, tuple(pairs)
+        listed = ", ".join(f"{a} with {b}" for a, b in self.pairs[:4]) or "a joint limit"
+        super().__init__(f"the path collides in its segment {segment + 1} of {count}: {listed}")
 
 
 class CartesianPathIncompleteError(PlanningError):

@@ -1,8 +1,9 @@
 """Joint-space motion planning with OMPL's planners, MuJoCo as the collision checker.
 
 Every returned path has been simplified and then validated densely: consecutive checks are at most
-``validation_step`` metres of motion apart for any point of the arm (a bound from each joint's lever arm), and the
-scene's padding is at least that step, so no point of the arm can pass through an obstacle between two checks.
+``validation_step`` metres of travel apart for any point of the arm (bounded from where its bodies are at the ends of
+each segment: :mod:`roboscript.planning.path_checks`), and the scene's padding is at least that step, so no point of
+the arm can pass through an obstacle between two checks.
 
 A goal is a pose of the arm: where a joint can turn more than once (a UR arm's joints have two turns of range), the
 path may end at the goal turned a whole turn about such a joint (:func:`whole_turn_equivalents`). A UR5e whose
@@ -25,6 +26,7 @@ from roboscript.planning.errors import (
     StateInCollisionError,
     UnknownPlannerError,
 )
+from roboscript.planning.path_checks import first_blocked
 from roboscript.planning.scene import PlanningScene
 
 _OMPL = None
@@ -163,18 +165,6 @@ def pose_distance(a: np.ndarray, b: np.ndarray) -> float:
     return float(np.max(np.abs(difference - whole_turns(np.zeros_like(difference), difference))))
 
 
-def first_collision(scene: PlanningScene, points: np.ndarray) -> int:
-    """Index of the first point in collision or outside the joint limits, or -1."""
-    # Points between in-limit points are within the limits too (the limits are a box); test only the ends.
-    for index in (0, len(points) - 1):
-        if not scene.within_limits(points[index]):
-            return index
-    for index, q in enumerate(points):
-        if not scene.is_free(q):
-            return index
-    return -1
-
-
 def simplify_path(og, info, path) -> None:
     """Shortens an OMPL path in place with a fixed amount of work: vertices that can be skipped are, close ones
     merge, and corners are shortcut (OMPL's "rope" shortcut).
@@ -225,10 +215,9 @@ class JointPlanner:
 
     def validate(self, waypoints: np.ndarray) -> None:
         """Dense validation; raises :class:`PathInCollisionError` at the first colliding point."""
-        points = densify(waypoints, self.lever, self.validation_step)
-        index = first_collision(self.scene, points)
-        if index >= 0:
-            raise PathInCollisionError(index, len(points), self.scene.collisions(points[index]))
+        blocked = first_blocked(self.scene, waypoints, self.validation_step)
+        if blocked is not None:
+            raise PathInCollisionError(blocked.segment, len(waypoints) - 1, self.scene.collisions(blocked.q))
 
     @timed("planning")
     def plan(
@@ -259,14 +248,13 @@ class JointPlanner:
             # again with checks four times finer (rare: a graze between two coarse checks).
             waypoints = self._solve(name, start, goal, timeout, simplify, optimize, check_step)
             checked = time.perf_counter()
-            points = densify(waypoints, self.lever, self.validation_step)
-            index = first_collision(self.scene, points)
+            blocked = first_blocked(self.scene, waypoints, self.validation_step)
             validation += time.perf_counter() - checked
-            if index < 0:
+            if blocked is None:
                 total = time.perf_counter() - began
                 return JointPath(waypoints, name, total - validation, validation, attempt)
             check_step /= 4
-        raise PathInCollisionError(index, len(points), self.scene.collisions(points[index]))
+        raise PathInCollisionError(blocked.segment, len(waypoints) - 1, self.scene.collisions(blocked.q))
 
     def _solve(
         self,

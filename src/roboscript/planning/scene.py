@@ -189,6 +189,25 @@ class PlanningScene:
     def within_limits(self, q: np.ndarray) -> bool:
         return bool(((q >= self._lower) & (q <= self._upper)).all())
 
+    @property
+    def moving_bodies(self) -> np.ndarray:
+        """The robot's bodies that the arm's joints move (the base stays where it is mounted)."""
+        return self._moving_bodies
+
+    @property
+    def held_bodies(self) -> list[int]:
+        """The bodies of the objects attached to the gripper."""
+        return [a.body for a in self._attached.values()]
+
+    @property
+    def finger_positions(self) -> np.ndarray:
+        """The gripper joints' positions the scene's queries use."""
+        return self.data.qpos[self._finger_qpos]
+
+    def place(self, q: np.ndarray) -> None:
+        """Puts the arm at ``q``, what it holds with it, without asking anything (:attr:`data` then shows it)."""
+        self._place(np.asarray(q, dtype=float))
+
     # --- queries ---------------------------------------------------------------------------------------------
 
     def is_valid(self, q: np.ndarray) -> bool:
