@@ -101,7 +101,9 @@ class PlanningScene:
         model.geom_contype[planes], model.geom_conaffinity[planes] = 0, 0
         self._set_bits(self._is_robot & moved & ~first_link & ~gripper, "arm", padding)
         self._set_bits(base, "base", 0.0)
-        self._set_bits(first_link, "first_link", padding)
+        # The first link only turns about the base's axis, and it may be mounted closer to the table than the
+        # padding (a UR5e's shoulder, 3 mm): with the padding it would collide in every configuration.
+        self._set_bits(first_link, "first_link", 0.0)
         self._set_bits(gripper, "gripper", padding)
 
         self._allowed = np.zeros((nbody, nbody), dtype=bool)
@@ -385,10 +387,12 @@ class PlanningScene:
         geoms = np.isin(self.model.geom_bodyid, [a.body for a in self._attached.values()]) & self._collides
         saved = self.model.geom_margin[geoms].copy()
         self.model.geom_margin[geoms] = np.maximum(saved, clearance)
+        self._sync_body_margins()
         try:
             yield
         finally:
             self.model.geom_margin[geoms] = saved
+            self._sync_body_margins()
 
     def allow(self, a: str, b: str, allowed: bool = True) -> None:
         """Allows (or forbids again) contact between two named things, e.g. the fingers and an object to grasp.
@@ -489,6 +493,16 @@ class PlanningScene:
         geoms = bodies[self.model.geom_bodyid] & self._collides
         self.model.geom_contype[geoms], self.model.geom_conaffinity[geoms] = _BITS[role]
         self.model.geom_margin[geoms] = margin
+        self._sync_body_margins()
+
+    def _sync_body_margins(self) -> None:
+        """Each body's margin, the largest of its colliding geoms'. MuJoCo's midphase prunes pairs of bodies of
+        several geoms each by the body margins compiled into the model (zero here), not by the geoms': without
+        this a gripper link 2.7 mm above the table (the padding is 5 mm) passed as free."""
+        margins = np.zeros(self.model.nbody)
+        geoms = np.flatnonzero(self._collides)
+        np.maximum.at(margins, self.model.geom_bodyid[geoms], self.model.geom_margin[geoms])
+        self.model.body_margin[:] = margins
 
 
 def _moved_by_arm(model: mujoco.MjModel, body: int, robot: RobotBinding) -> bool:
