@@ -144,3 +144,24 @@ def test_a_cartesian_step_takes_a_fraction_of_the_lever_arm_checks(robot):
     # A 5 mm step of the hand is checked at its end and once between (it moves the hand a hair more than the
     # padding); the lever-arm bound asks for twice that or more.
     assert len(calls) <= 2 * 20 < lever_checks, (len(calls), lever_checks)
+
+
+def test_the_travel_is_measured_again_when_the_hand_holds_something_elsewhere():
+    motion, qa = _holding_a_box("panda")
+    scene = motion.scene
+    scene.place(qa)
+    held = arm_travel(scene)
+    assert arm_travel(scene) is held  # nothing changed: the same one
+    # The same box let go and taken again, now hanging 5 cm lower: the same body, a new bound.
+    scene.detach("held")
+    adr = scene.model.jnt_qposadr[scene.model.body_jntadr[scene.object_bodies["held"]]]
+    state = scene.data.qpos.copy()
+    state[adr + 2] -= 0.05
+    scene.update(state)
+    scene.attach("held", qa)
+    scene.place(qa)
+    lower = arm_travel(scene)
+    assert lower is not held and lower.levers[-1] > held.levers[-1] + 0.04
+    scene.detach("held")
+    scene.place(qa)
+    assert arm_travel(scene).levers[-1] < held.levers[-1]  # the bare hand reaches less far

@@ -115,9 +115,11 @@ _travels: weakref.WeakKeyDictionary = weakref.WeakKeyDictionary()  # scene -> (w
 
 
 def arm_travel(scene: PlanningScene) -> ArmTravel:
-    """The scene's :class:`ArmTravel` for what it holds and its fingers' opening now, its levers measured; made
-    again only when those change. Call with the scene placed (:meth:`PlanningScene.place` or a query)."""
-    key = (tuple(scene.held_bodies), scene.finger_positions.tobytes())
+    """The scene's :class:`ArmTravel` for what it holds (and where in the hand) and its fingers' opening now, its
+    levers measured; made again only when those change. Call with the scene placed (:meth:`PlanningScene.place`
+    or a query)."""
+    held = tuple((a.body, a.tcp_to_object.tobytes()) for a in scene.attachments)
+    key = (held, scene.finger_positions.tobytes())
     kept = _travels.get(scene)
     if kept is not None and kept[0] == key:
         return kept[1]

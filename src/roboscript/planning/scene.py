@@ -202,6 +202,11 @@ class PlanningScene:
         return [a.body for a in self._attached.values()]
 
     @property
+    def attachments(self) -> list[Attachment]:
+        """The objects attached to the gripper, each with where it sits relative to the TCP."""
+        return list(self._attached.values())
+
+    @property
     def finger_positions(self) -> np.ndarray:
         """The gripper joints' positions the scene's queries use."""
         return self.data.qpos[self._finger_qpos]
