@@ -68,9 +68,14 @@ class PlanningScene:
         body_labels: list[str],
         object_bodies: dict[str, int],
         padding: float = 0.005,
+        pad_bodies_of_several_geoms: bool = True,
     ):
+        """``pad_bodies_of_several_geoms``: whether the padding also holds between two bodies of several geoms each
+        (see :meth:`_sync_body_margins`); a scene of observed boxes leaves it off (see
+        :func:`roboscript.planning.perceived_scene.build_perceived_scene`)."""
         if padding < 0:
             raise ValueError(f"padding must be >= 0 metres, got {padding}")
+        self._pad_bodies = pad_bodies_of_several_geoms
         self.model = model
         self.data = mujoco.MjData(model)
         self.robot = robot
@@ -504,6 +509,8 @@ class PlanningScene:
         """Each body's margin, the largest of its colliding geoms'. MuJoCo's midphase prunes pairs of bodies of
         several geoms each by the body margins compiled into the model (zero here), not by the geoms': without
         this a gripper link 2.7 mm above the table (the padding is 5 mm) passed as free."""
+        if not self._pad_bodies:
+            return
         margins = np.zeros(self.model.nbody)
         geoms = np.flatnonzero(self._collides)
         np.maximum.at(margins, self.model.geom_bodyid[geoms], self.model.geom_margin[geoms])
