@@ -217,10 +217,15 @@ def test_a_motion_may_leave_a_contact_it_starts_in_but_not_make_new_ones():
     low.position.x, low.position.z = 0.3, 0.845
     low.orientation.x, low.orientation.w = 1.0, 0.0
     build_tools(backend).move_to_pose(low)
-    # A planner with a 3 cm padding sees the arm's own links 5 and 7 in collision in this configuration.
+    # A planner with a 3 cm padding sees the arm's own links 5 and 7, and the fingers 2.5 cm above the table, in
+    # collision in this configuration.
     padded = ToolAPI(backend, GroundTruthPerception(backend), ground_truth_motion(backend, padding=0.03))
     start = padded.motion.sync()
-    assert padded.motion.scene.collisions(start) == [("robot/link5", "robot/link7")]
+    assert sorted(padded.motion.scene.collisions(start)) == [
+        ("robot/left_finger", "table"),
+        ("robot/link5", "robot/link7"),
+        ("robot/right_finger", "table"),
+    ]
     padded.move_in_direction([0, 0, 1], 0.1)
     assert backend.tcp_pose().position[2] == pytest.approx(0.945, abs=0.005)
     with pytest.raises(PlanningError, match="table"):
