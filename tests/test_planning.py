@@ -127,7 +127,7 @@ def test_a_held_box_makes_the_planner_avoid_what_the_bare_gripper_clears(robot):
     height = wall_top + 0.07  # the fingers clear the wall; a box hanging 19 cm below them does not
     qa = motion.ik(Transform(np.array([0.05, -0.25, height]), DOWN))
     qb = motion.ik(Transform(np.array([0.05, 0.25, height]), qa if False else DOWN), qa)
-    straight = densify(np.array([qa, qb]), motion.planner.lever, 0.005)
+    straight = densify(np.array([qa, qb]), motion.scene.lever_arms, 0.005)
     assert all(scene.is_valid(q) for q in straight), "the bare gripper passes over the wall"
 
     # Put the box in the hand at qa (hanging below the fingers) and attach it.
@@ -344,7 +344,7 @@ def test_a_transfer_lifts_the_held_object_clear_and_carries_it_clear():
     heights = [kinematics.fk(q).position[2] for q in path.waypoints]
     assert max(heights) > center[2] + HELD_CLEARANCE
     with scene.held_clearance(HELD_CLEARANCE):
-        clear = [scene.is_valid(q) for q in densify(path.waypoints, motion.planner.lever, 0.005)]
+        clear = [scene.is_valid(q) for q in densify(path.waypoints, motion.scene.lever_arms, 0.005)]
     # Too close only along the straight lines at either end: where clear, the path stays clear until it descends.
     first, last = clear.index(True), len(clear) - 1 - clear[::-1].index(True)
     assert all(clear[first : last + 1])

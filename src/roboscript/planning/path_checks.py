@@ -32,6 +32,7 @@ import mujoco
 import numpy as np
 
 from roboscript.planning.scene import PlanningScene
+from roboscript.robots.mujoco_model import is_descendant
 
 
 @dataclass(frozen=True)
@@ -47,7 +48,8 @@ class Blocked:
 class ArmTravel:
     """Bounds on how far any point of the arm, and of what it holds, travels along a joint-space segment.
 
-    Made for the scene as it is (what it holds, the fingers' opening): make a new one when that changes.
+    Made for the scene as it is (what it holds, the fingers' opening), placed in any configuration: make a new one
+    when that changes.
     """
 
     def __init__(self, scene: PlanningScene):
@@ -59,7 +61,7 @@ class ArmTravel:
         joint_bodies = model.dof_bodyid[robot.dof]
         bodies, last_joint = [], []
         for b in scene.moving_bodies:
-            moved_by = [k for k, jb in enumerate(joint_bodies) if b == jb or _descends(model, b, jb)]
+            moved_by = [k for k, jb in enumerate(joint_bodies) if is_descendant(model, b, jb)]
             bodies.append(int(b))
             last_joint.append(max(moved_by))
         for b in scene.held_bodies:
@@ -71,14 +73,14 @@ class ArmTravel:
         self.radius = radius[keep]
         self._last_joint = np.array(last_joint, dtype=int)[keep]
         self._joints = jnt
-        self.levers: np.ndarray | None = None  # per joint, set by measure_levers
+        self.levers = self._measure_levers()
 
     def positions(self) -> tuple[np.ndarray, np.ndarray]:
         """The bodies' origins and orientations (quaternions) in the scene's present configuration."""
         data = self.scene.data
         return data.xpos[self.bodies], data.xquat[self.bodies]
 
-    def measure_levers(self) -> None:
+    def _measure_levers(self) -> np.ndarray:
         """Per arm joint ``k``, a bound ``L_k`` on the distance from its anchor to any point it moves, in every
         configuration: the chain of anchor-to-anchor distances (fixed by the links) to the joint that moves a body
         last, that joint's (fixed) distance to the body's origin, and the body's radius. Reads the scene's present
@@ -93,7 +95,7 @@ class ArmTravel:
             beyond = self._last_joint >= k
             reach = chain[self._last_joint[beyond]] - chain[k] + from_anchor[beyond]
             levers[k] = float(reach.max()) if reach.size else 0.0
-        self.levers = levers
+        return levers
 
     def curvature(self, dq: np.ndarray) -> float:
         """``K``: a bound on ``|p''|`` of any point along the segment ``dq`` (metres)."""
@@ -124,7 +126,6 @@ def arm_travel(scene: PlanningScene) -> ArmTravel:
     if kept is not None and kept[0] == key:
         return kept[1]
     travel = ArmTravel(scene)
-    travel.measure_levers()
     _travels[scene] = (key, travel)
     return travel
 
@@ -181,14 +182,6 @@ def _along_segment(
             return (end, q_end), after
         start, before = end, after
     return None, before
-
-
-def _descends(model: mujoco.MjModel, body: int, ancestor: int) -> bool:
-    while body > 0:
-        body = int(model.body_parentid[body])
-        if body == ancestor:
-            return True
-    return False
 
 
 def _collision_radius(model: mujoco.MjModel, body: int) -> float:

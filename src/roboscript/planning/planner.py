@@ -195,7 +195,6 @@ class JointPlanner:
         self.validation_step = scene.padding if validation_step is None else validation_step
         if self.validation_step <= 0:
             raise ValueError("validation_step must be > 0 metres (the scene's padding is 0: give one explicitly)")
-        self.lever = scene.lever_arms
 
     def check_state(self, q: np.ndarray, which: str) -> None:
         """Raises if ``q`` is out of limits or in collision, naming the joint or the bodies."""

@@ -369,7 +369,7 @@ class PlanningScene:
     def ignoring_held(self) -> Iterator[None]:
         """Within this block, what the gripper holds collides with nothing: for questions about the hand once it
         has let go (can it leave the place where it puts something down?)."""
-        geoms = np.isin(self.model.geom_bodyid, [a.body for a in self._attached.values()]) & self._collides
+        geoms = np.isin(self.model.geom_bodyid, self.held_bodies) & self._collides
         saved = self.model.geom_contype[geoms].copy(), self.model.geom_conaffinity[geoms].copy()
         self.model.geom_contype[geoms], self.model.geom_conaffinity[geoms] = 0, 0
         try:
@@ -394,7 +394,7 @@ class PlanningScene:
         """Within this block, what the gripper holds counts as colliding closer than ``clearance`` to anything
         (rather than the padding): for transfers, where a held object swinging a little must not graze what it
         passes."""
-        geoms = np.isin(self.model.geom_bodyid, [a.body for a in self._attached.values()]) & self._collides
+        geoms = np.isin(self.model.geom_bodyid, self.held_bodies) & self._collides
         saved = self.model.geom_margin[geoms].copy()
         self.model.geom_margin[geoms] = np.maximum(saved, clearance)
         self._sync_body_margins()
