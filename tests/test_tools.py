@@ -115,7 +115,10 @@ def test_joint_info_and_plane_normal(cabinet_tools):
 def test_grasp_parsers(tools):
     box = tools.get_3d_bbox("apple")
     lift = tools.parse_central_lift_grasp_pose(object_name="apple", description="center")
-    np.testing.assert_allclose(lift.position_array(), (box[:3] + box[3:]) / 2, atol=1e-6)
+    np.testing.assert_allclose(lift.position_array()[:2], (box[:2] + box[3:5]) / 2, atol=1e-6)
+    # Mid height, as deep as the fingers reach: the Franka hand begins 3.6 cm behind the TCP, and 8 mm are kept
+    # between it and the apple's top, which is 3.8 cm above the apple's middle.
+    assert lift.position.z == pytest.approx(box[5] - (0.036 - 0.008), abs=1e-6)
     assert lift.rotation_matrix()[2, 2] < -0.99  # approaching from above
     with pytest.raises(ValueError, match="description must be 'top' or 'center'"):
         tools.parse_central_lift_grasp_pose("apple", description="side")
@@ -132,6 +135,30 @@ def test_grasp_parsers(tools):
     assert np.all(adaptive.position_array() > plum[:3] - 0.01) and np.all(adaptive.position_array() < plum[3:] + 0.01)
     with pytest.raises(ValueError, match="preferred_approach_direction must be a non-zero direction"):
         tools.parse_adaptive_shape_grasp_pose("apple", preferred_approach_direction=[0, 0, 0])
+
+
+@pytest.mark.parametrize("robot", ["panda", "ur5e"])
+def test_a_central_grasp_of_a_tall_box_goes_no_deeper_than_the_fingers_reach(robot):
+    """Mid height of a 21 cm cracker box is 10 cm below its top, where the hand itself would sit on the box: the
+    grasp takes the box as low as the fingers reach instead, and the arm gets there and lifts it."""
+    world = parse_world({"name": "tall", "objects": [{"name": "cracker_box", "type": "cracker_box",
+                                                      "position": [-0.05, -0.2], "yaw": 90}]})  # fmt: skip
+    backend = MujocoBackend(world, robot=robot, settle=0.5)
+    try:
+        tools = build_tools(backend)
+        box = tools.get_3d_bbox("cracker_box")
+        reach = -backend.robot.gripper.hand_box[1][2]
+        for description in ("center", "top"):
+            pose = tools.parse_central_lift_grasp_pose("cracker_box", description=description)
+            assert pose.position.z == pytest.approx(box[5] - (reach - 0.008), abs=1e-6)
+        tools.open_gripper()
+        tools.grasp(pose)
+        tools.close_gripper()
+        tools.attach_object("cracker_box")
+        tools.move_in_direction([0, 0, 1], 0.1)
+        assert backend.ground_truth.box("cracker_box").lower[2] > box[2] + 0.05
+    finally:
+        backend.close()
 
 
 def test_motion_tools_reject_bad_input_and_leave_the_arm_alone(tools):

@@ -167,7 +167,9 @@ class ToolAPI:
     def parse_central_lift_grasp_pose(self, object_name: str, description: str = "top") -> Pose:
         """A top-down grasp at the box centre in x, y; z near the top ("top") or at mid height ("center")."""
         name = self._name(object_name)
-        candidates = central_lift_grasps(self.perception, name, description, self.gripper.max_width, self.base_xy)
+        candidates = central_lift_grasps(
+            self.perception, name, description, self.gripper.max_width, self.base_xy, self._finger_reach
+        )
         return Pose.from_transform(self._first_reachable(name, candidates, "central lift"))
 
     @tool
@@ -238,7 +240,9 @@ class ToolAPI:
         """The central lift and horizontal grasps that fit ``name``, in the order the preferred approach suggests
         (top-down first unless a horizontal approach is preferred)."""
         kinds = [
-            lambda: central_lift_grasps(self.perception, name, "center", self.gripper.max_width, self.base_xy),
+            lambda: central_lift_grasps(
+                self.perception, name, "center", self.gripper.max_width, self.base_xy, self._finger_reach
+            ),
             lambda: horizontal_grasps(self.perception, name, None, self.gripper.max_width, self.base_xy),
         ]
         if preferences.approach is not None and abs(float(preferences.approach[2])) < 0.5:
@@ -482,6 +486,11 @@ class ToolAPI:
             return self.perception.joints(name)
         except (UnknownObjectError, ValueError):
             return []
+
+    @property
+    def _finger_reach(self) -> float:
+        """How far the fingers reach from the TCP back to the hand (how deep a top-down grasp may take an object)."""
+        return -self.gripper.hand_upper[2]
 
     def _first_reachable(self, name: str, candidates: list[Transform], kind: str) -> Transform:
         """The first candidate whose grasp and pre-grasp poses have collision-free IK (the gripper may touch the

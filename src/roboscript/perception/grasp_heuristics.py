@@ -36,18 +36,27 @@ def _frame(closing: np.ndarray, approach: np.ndarray, outward: np.ndarray) -> np
 
 
 def central_lift_grasps(
-    perception: Perception, name: str, description: str, max_width: float, base_xy: np.ndarray
+    perception: Perception,
+    name: str,
+    description: str,
+    max_width: float,
+    base_xy: np.ndarray,
+    finger_reach: float | None = None,
 ) -> list[Transform]:
     """Top-down grasps at the centre of the object's box, closing across its narrower side.
 
     ``description`` is "top" (the TCP 3 cm below the top, or at mid height if the object is lower than 6 cm) or
-    "center" (at mid height).
+    "center" (at mid height). Either way the TCP goes no deeper below the object's top than the fingers reach
+    (``finger_reach``: from the TCP back to the hand, less a margin): on a tall box, mid height would put the hand
+    itself onto the box's top, so the grasp takes the box as low as the fingers allow.
     """
     if description not in ("top", "center"):
         raise ValueError(f"description must be 'top' or 'center', got {description!r}")
     box = perception.box(name)
     center_xy, yaw, half = perception.footprint(name)
     z = box.center[2] if description == "center" else max(box.center[2], box.upper[2] - 0.03)
+    if finger_reach is not None:
+        z = max(z, box.upper[2] - max(finger_reach - HAND_CLEARANCE, 0.0))
     axes = [np.array([math.cos(yaw), math.sin(yaw), 0.0]), np.array([-math.sin(yaw), math.cos(yaw), 0.0])]
     order = np.argsort(half)  # close across the narrow side first
     outward = np.append(center_xy - base_xy, 0.0)
@@ -63,6 +72,9 @@ def central_lift_grasps(
             f"{max_width * 100:.1f} cm opening: no top-down grasp fits; try parse_adaptive_shape_grasp_pose"
         )
     return candidates
+
+
+HAND_CLEARANCE = 0.008  # metres kept between an object's top and the hand behind the fingers
 
 
 # A given approach_direction is a preference: where the arm cannot reach it, approaches turned about the vertical
