@@ -14,9 +14,6 @@ from roboscript.objects import object_types
 from roboscript.perception.grasp_heuristics import GraspError
 from roboscript.sim.world_file import parse_world
 
-# Receptacles are what things are put in or on; no tool grasps them (a rim pinch is not among the grasps), and no
-# task asks to move one.
-RECEPTACLES = {"plate", "saucer", "bowl", "footed bowl", "basket"}
 # Shapes an arm's parallel gripper (Panda 8 cm, 2F-85 8.5 cm opening) cannot pick from a table, with the reason.
 UNGRASPABLE = {
     "panda": {
@@ -36,7 +33,7 @@ def _shapes() -> list[str]:
     """One type name per distinct pickable shape."""
     seen: dict[str, str] = {}
     for t in object_types().values():
-        if t.category in RECEPTACLES:
+        if not t.pickable:  # a receptacle: no tool grasps one, and no task asks to move one
             continue
         seen.setdefault(repr((t.parts, t.density, t.friction)), t.name)
     return list(seen.values())
@@ -49,7 +46,7 @@ def test_every_pickable_type_has_its_shape_tried():
     """Each type is a receptacle or shares its shape with a type tried below; the exceptions are real types."""
     tried = {repr((object_types()[n].parts, object_types()[n].density, object_types()[n].friction)) for n in SHAPES}
     for t in object_types().values():
-        assert t.category in RECEPTACLES or repr((t.parts, t.density, t.friction)) in tried, t.name
+        assert not t.pickable or repr((t.parts, t.density, t.friction)) in tried, t.name
     for arm_exceptions in UNGRASPABLE.values():
         assert set(arm_exceptions) <= set(SHAPES)
     assert len(SHAPES) >= 40

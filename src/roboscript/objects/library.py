@@ -15,6 +15,11 @@ from roboscript.objects import designs as shapes
 from roboscript.objects.designs import COLORS
 from roboscript.objects.shapes import RGBA, Part, parts_bounds
 
+# Shape classes, for studies of how shape decides success: balls and fruit, boxes and blocks, cans and round
+# bottles, flat bottles, mugs (a handle), cups, long things, irregular ones, toy vehicles, and the receptacles.
+SHAPES = ("round", "box", "cylinder", "bottle", "mug", "cup", "elongated", "irregular", "toy", "flat", "bowl", "basket")
+RECEPTACLE_CATEGORIES = frozenset({"plate", "saucer", "bowl", "footed bowl", "basket"})
+
 
 @dataclass(frozen=True)
 class ObjectType:
@@ -34,10 +39,20 @@ class ObjectType:
     interior: tuple[tuple[float, float, float], tuple[float, float, float]] | None = None
     friction: float = 1.0
     round: bool = False  # rolls: given rolling friction so it settles like a real, not quite round, fruit
+    # The shape class the object-shape study groups by (SHAPES); set for every type.
+    shape: str = ""
     bounds: tuple[np.ndarray, np.ndarray] = field(init=False, repr=False, compare=False)
 
     def __post_init__(self) -> None:
+        if self.shape not in SHAPES:
+            raise ValueError(f"object type {self.name!r}: shape {self.shape!r} is not one of {', '.join(SHAPES)}")
         object.__setattr__(self, "bounds", parts_bounds(self.parts))
+
+    @property
+    def pickable(self) -> bool:
+        """Whether tasks pick it up: everything but the receptacles (plates, saucers, bowls, baskets), which things
+        are put in or on and which no grasp tool takes (a rim pinch is not among the grasps)."""
+        return self.category not in RECEPTACLE_CATEGORIES
 
     @property
     def rgba(self) -> RGBA:
@@ -83,10 +98,10 @@ for _name, _category, _color, _parts, _density, _desc in [
     ("golf_ball", "golf ball", "white", shapes.sphere(0.021), 1150, "a golf ball, 4.3 cm"),
     ("softball", "softball", "yellow", shapes.sphere(0.048), 420, "a softball, 9.6 cm"),
 ]:
-    _register(ObjectType(_name, _category, _color, _parts, _density, _desc, round=True))
+    _register(ObjectType(_name, _category, _color, _parts, _density, _desc, round=True, shape="round"))
 
-_register(ObjectType("banana", "banana", "yellow", shapes.banana(), 900, "a banana, 20 cm long"))
-_register(ObjectType("pear", "pear", "light_green", shapes.pear(), 900, "a pear, 10 cm tall"))
+_register(ObjectType("banana", "banana", "yellow", shapes.banana(), 900, "a banana, 20 cm long", shape="elongated"))
+_register(ObjectType("pear", "pear", "light_green", shapes.pear(), 900, "a pear, 10 cm tall", shape="irregular"))
 
 # Boxes (cardboard packaging, sizes of the YCB food boxes, scaled to fit a drawer lying down).
 for _name, _color, _dims, _density, _desc in [
@@ -101,7 +116,7 @@ for _name, _color, _dims, _density, _desc in [
     ("yellow_box", "yellow", (0.09, 0.05, 0.045), 400, "a small yellow box, 9 x 5 x 4.5 cm"),
     ("brown_box", "brown", (0.072, 0.07, 0.055), 350, "a brown cosmetics carton, 7.2 x 7 x 5.5 cm"),
 ]:
-    _register(ObjectType(_name, "box", _color, shapes.box(*_dims), _density, _desc))
+    _register(ObjectType(_name, "box", _color, shapes.box(*_dims), _density, _desc, shape="box"))
 _register(
     ObjectType(
         "white_and_pink_box",
@@ -110,6 +125,7 @@ _register(
         shapes.two_tone_box(0.095, 0.06, 0.05, 0.015, COLORS["pink"]),
         350,
         "a white supplement carton with a pink band, 9.5 x 6 x 5 cm",
+        shape="box",
     )
 )
 
@@ -123,17 +139,31 @@ for _name, _color, _dims, _density, _desc, _cat in [
     ("rubiks_cube", "white", (0.057, 0.057, 0.057), 550, "a Rubik's cube, 5.7 cm", "cube"),
     ("sponge", "yellow", (0.09, 0.06, 0.03), 80, "a kitchen sponge, 9 x 6 x 3 cm", "sponge"),
 ]:
-    _register(ObjectType(_name, _cat, _color, shapes.box(*_dims), _density, _desc))
+    _register(ObjectType(_name, _cat, _color, shapes.box(*_dims), _density, _desc, shape="box"))
 
 # Cans and bottles.
-_register(ObjectType("soup_can", "can", "red", shapes.cylinder(0.033, 0.101), 700, "a tomato soup can, 6.6 x 10.1 cm"))
-_register(ObjectType("tuna_can", "can", "blue", shapes.cylinder(0.043, 0.034), 800, "a tuna can, 8.6 x 3.4 cm"))
+_register(
+    ObjectType(
+        "soup_can",
+        "can",
+        "red",
+        shapes.cylinder(0.033, 0.101),
+        700,
+        "a tomato soup can, 6.6 x 10.1 cm",
+        shape="cylinder",
+    )
+)
+_register(
+    ObjectType(
+        "tuna_can", "can", "blue", shapes.cylinder(0.043, 0.034), 800, "a tuna can, 8.6 x 3.4 cm", shape="cylinder"
+    )
+)
 for _name, _color, _cap, _r, _h, _desc in [
     ("medication_bottle", "orange", "white", 0.02, 0.08, "an orange medication bottle, 4 x 8 cm"),
     ("white_medication_bottle", "white", "blue", 0.022, 0.085, "a white medication bottle, 4.4 x 8.5 cm"),
     ("brown_medication_bottle", "brown", "white", 0.021, 0.08, "an amber medication bottle, 4.2 x 8 cm"),
 ]:
-    _register(ObjectType(_name, "bottle", _color, shapes.bottle(_r, _h, COLORS[_cap]), 500, _desc))
+    _register(ObjectType(_name, "bottle", _color, shapes.bottle(_r, _h, COLORS[_cap]), 500, _desc, shape="cylinder"))
 
 _register(
     ObjectType(
@@ -143,6 +173,7 @@ _register(
         shapes.flat_bottle(0.095, 0.058, 0.19, 0.014, COLORS["red"]),
         450,
         "a yellow mustard bottle, 9.5 x 5.8 x 19 cm",
+        shape="bottle",
     )
 )
 _register(
@@ -153,6 +184,7 @@ _register(
         shapes.flat_bottle(0.1, 0.067, 0.25, 0.017, COLORS["blue"]),
         450,
         "a white bleach cleanser bottle with a blue cap, 10 x 6.7 x 25 cm",
+        shape="bottle",
     )
 )
 
@@ -166,6 +198,7 @@ for _color in ("white", "red", "blue", "brown", "yellow", "green"):
             shapes.mug(0.04, 0.095),
             1800,
             f"a {_color} ceramic mug with a handle, 8 cm wide, 9.5 cm tall",
+            shape="mug",
             container=True,
             interior=shapes.interior_of_cylinder(0.034, 0.008, 0.087),
         )
@@ -179,6 +212,7 @@ for _color in ("brown", "blue", "white", "green", "red"):
             shapes.cup(0.028, 0.038, 0.09),
             1100,
             f"a {_color} plastic cup, 7.6 cm at the rim, 9 cm tall",
+            shape="cup",
             container=True,
             interior=shapes.interior_of_cylinder(0.028, 0.006, 0.084),
         )
@@ -192,6 +226,7 @@ _register(
         shapes.mug(0.04, 0.095, accent=COLORS["yellow"]),
         1800,
         "a white ceramic mug, yellow inside and on its handle, 8 cm wide, 9.5 cm tall",
+        shape="mug",
         container=True,
         interior=shapes.interior_of_cylinder(0.034, 0.008, 0.087),
     )
@@ -204,6 +239,7 @@ _register(
         shapes.mug(0.04, 0.095),
         2000,
         "a white porcelain coffee mug with a handle, 8 cm wide, 9.5 cm tall",
+        shape="mug",
         container=True,
         interior=shapes.interior_of_cylinder(0.034, 0.008, 0.087),
     )
@@ -216,6 +252,7 @@ _register(
         shapes.cup(0.028, 0.038, 0.09),
         1500,
         "a brown ceramic cup without a handle, 7.6 cm at the rim, 9 cm tall",
+        shape="cup",
         container=True,
         interior=shapes.interior_of_cylinder(0.028, 0.006, 0.084),
     )
@@ -231,6 +268,7 @@ for _color in ("white", "blue", "red", "green", "yellow"):
             shapes.plate(0.11),
             1800,
             f"a {_color} plate, 22 cm across",
+            shape="flat",
             container=True,
             interior=((-0.08, -0.08, 0.008), (0.08, 0.08, 0.1)),
         )
@@ -243,6 +281,7 @@ _register(
         shapes.plate(0.16, rim=0.026),
         1800,
         "a large white serving plate, 32 cm across",
+        shape="flat",
         container=True,
         interior=((-0.12, -0.12, 0.008), (0.12, 0.12, 0.1)),
     )
@@ -255,6 +294,7 @@ _register(
         shapes.square_plate(0.265, 0.22, 0.012),
         2000,
         "a white porcelain dinner plate with a square rim, 26.5 cm square",
+        shape="flat",
         container=True,
         interior=((-0.11, -0.11, 0.008), (0.11, 0.11, 0.1)),
     )
@@ -267,6 +307,7 @@ _register(
         shapes.plate(0.105, rim=0.02),
         1800,
         "a turquoise salad plate, 21 cm across",
+        shape="flat",
         container=True,
         interior=((-0.075, -0.075, 0.008), (0.075, 0.075, 0.1)),
     )
@@ -279,6 +320,7 @@ _register(
         shapes.plate(0.1, rim=0.02, rim_height=0.02),
         1200,
         "an avocado-green plant saucer plate, 20 cm across",
+        shape="flat",
         container=True,
         interior=((-0.07, -0.07, 0.008), (0.07, 0.07, 0.1)),
     )
@@ -291,6 +333,7 @@ _register(
         shapes.square_saucer(0.19, 0.025, 0.006),
         1200,
         "a coral-red square plant saucer, 19 cm square, 2.5 cm deep",
+        shape="flat",
         container=True,
         interior=((-0.088, -0.088, 0.006), (0.088, 0.088, 0.1)),
     )
@@ -304,6 +347,7 @@ for _color in ("white", "blue", "pink"):
             shapes.plate(0.075, rim=0.015, rim_height=0.012),
             1800,
             f"a {_color} saucer, 15 cm across",
+            shape="flat",
             container=True,
             interior=((-0.05, -0.05, 0.008), (0.05, 0.05, 0.08)),
         )
@@ -317,6 +361,7 @@ for _color in ("white", "blue", "green", "red"):
             shapes.bowl(0.05, 0.085, 0.065),
             1800,
             f"a {_color} bowl, 17 cm across, 6.5 cm deep",
+            shape="bowl",
             container=True,
             interior=((-0.055, -0.055, 0.008), (0.055, 0.055, 0.1)),
         )
@@ -329,6 +374,7 @@ _register(
         shapes.bowl(0.04, 0.079, 0.053),
         1100,
         "a red plastic bowl, 16 cm across, 5.3 cm deep",
+        shape="bowl",
         container=True,
         interior=((-0.05, -0.05, 0.008), (0.05, 0.05, 0.09)),
     )
@@ -341,6 +387,7 @@ _register(
         shapes.footed_bowl(),
         1800,
         "a sand-coloured footed bowl on a short stem, 19 cm across, 8.5 cm deep",
+        shape="bowl",
         container=True,
         interior=((-0.06, -0.06, 0.058), (0.06, 0.06, 0.18)),
     )
@@ -353,6 +400,7 @@ _register(
         shapes.basket(),
         500,
         "a woven basket, 34 x 26 x 13 cm",
+        shape="basket",
         container=True,
         interior=((-0.16, -0.12, 0.008), (0.16, 0.12, 0.2)),
     )
@@ -366,6 +414,7 @@ _register(
         shapes.lined_basket(0.28, 0.21, 0.13),
         500,
         "a small natural-finish basket with a fabric liner, 28 x 21 x 13 cm",
+        shape="basket",
         container=True,
         interior=((-0.13, -0.095, 0.008), (0.13, 0.095, 0.2)),
     )
@@ -380,6 +429,7 @@ _register(
         shapes.toy_vehicle(0.14, 0.05, 0.06, 0.012, cabin=False),
         400,
         "a yellow toy bus, 14 cm long",
+        shape="toy",
     )
 )
 _register(
@@ -390,6 +440,7 @@ _register(
         shapes.toy_vehicle(0.1, 0.045, 0.045, 0.011, cabin=True),
         400,
         "a red toy car, 10 cm long",
+        shape="toy",
     )
 )
 
