@@ -22,7 +22,7 @@ LLAMA_PIN = $(shell grep -o 'llama-cpp-python==[0-9.]*' pyproject.toml | head -1
 
 test-deps:
 	CMAKE_ARGS="$(LLAMA_CMAKE_ARGS)" $(PY) -m pip install -q --no-cache-dir "$(LLAMA_PIN)"
-	$(PY) -m pip install -q -e ".[dev,perception,detectors,slowtests]"
+	$(PY) -m pip install -q -e ".[dev,perception,detectors,slowtests,ray,report,record]"
 
 test: test-deps
 	$(VENV)/bin/ruff check src tests benchmarks

@@ -29,10 +29,12 @@ def cmd_worlds(args: argparse.Namespace) -> int:
 def cmd_objects(args: argparse.Namespace) -> int:
     from roboscript.objects import object_types
 
-    print(f"{'type':26s} {'category':12s} {'colour':12s} size (cm)")
+    print(f"{'type':26s} {'category':12s} {'colour':12s} {'shape':10s} size (cm)")
     for name, obj in sorted(object_types().items()):
         size = " x ".join(f"{v * 100:.1f}" for v in obj.size)
-        print(f"{name:26s} {obj.category:12s} {obj.color:12s} {size}{'  (container)' if obj.container else ''}")
+        notes = [k for k, v in (("container", obj.container), ("not picked", not obj.pickable)) if v]
+        extra = f"  ({', '.join(notes)})" if notes else ""
+        print(f"{name:26s} {obj.category:12s} {obj.color:12s} {obj.shape:10s} {size}{extra}")
     return 0
 
 
@@ -157,6 +159,7 @@ def cmd_exec(args: argparse.Namespace) -> int:
         robot_config=args.robot_config,
         world=args.world,
         instruction="run the program" if args.world else None,
+        record=args.record,
     )
     records = run_isolated(specs, args.jobs, None if args.json else progress_printer(len(specs)))
     result = task_result(label, args.robot, records)
@@ -235,6 +238,7 @@ def cmd_run(args: argparse.Namespace) -> int:
         suite=args.suite,
         backend=args.backend,
         robot_config=args.robot_config,
+        record=args.record,
     )
     records = run_isolated(specs, args.jobs)
     result = task_result(label, args.robot, records)
@@ -299,9 +303,13 @@ def cmd_demo(args: argparse.Namespace) -> int:
 
 
 def cmd_report(args: argparse.Namespace) -> int:
-    from roboscript.bench.compare import compare_runs
+    from roboscript.report.write import write_report
 
-    print(compare_runs([Path(d) for d in args.runs], args.metric))
+    report = write_report(args.runs, args.out, args.metric)
+    print(report.markdown)
+    for note in report.notes:
+        print(note, file=sys.stderr)
+    print(f"report of {len(report.runs)} runs: {', '.join(str(p) for p in report.files)}")
     return 0
 
 
@@ -408,9 +416,16 @@ def _resolve_perception(args: argparse.Namespace) -> None:
     args.perception = perception_mode(mode, detector)
 
 
+RECORD_HELP = (
+    "record the trial into this MCAP file for Foxglove: camera images, perceived boxes, planning scene, planned "
+    "and executed paths, and every tool call with its answer (needs roboscript[record])"
+)
+
+
 def build_parser() -> argparse.ArgumentParser:
     from roboscript.bench.metrics import METRICS
     from roboscript.cli_robot import add_replay_command, add_robot_options
+    from roboscript.cli_studies import add_study_commands
     from roboscript.demo import DEMO_TASK
 
     parser = argparse.ArgumentParser(prog="roboscript", description=__doc__)
@@ -456,6 +471,7 @@ def build_parser() -> argparse.ArgumentParser:
     scene.add_argument("--task", help="a task id (see `roboscript tasks`): its world, and its checks")
     scene.add_argument("--world", help="a world name or file to act in; without a task nothing is checked")
     run.add_argument("--video", default=None, help="record camera_left into this MP4 file")
+    run.add_argument("--record", default=None, help=RECORD_HELP)
     _add_run_options(run)
     add_robot_options(run)
     run.set_defaults(func=cmd_exec)
@@ -478,18 +494,23 @@ def build_parser() -> argparse.ArgumentParser:
         help="rounds of feeding checker, runtime and planning errors back to the LLM",
     )
     ask.add_argument("--video", default=None, help="record camera_left into this MP4 file")
+    ask.add_argument("--record", default=None, help=RECORD_HELP)
     _add_run_options(ask)
     add_robot_options(ask)
     ask.set_defaults(func=cmd_run, trials=1)
     add_replay_command(sub)
-    report = sub.add_parser("report", help="benchmark runs side by side (policies, perception modes, robots)")
-    report.add_argument("runs", nargs="+", help="run directories written by `roboscript bench`")
+    report = sub.add_parser("report", help="runs side by side: markdown, CSV, plots and an HTML page with videos")
+    report.add_argument(
+        "runs", nargs="+", help="run directories (`roboscript bench`), or folders of them (a sweep's, a study's)"
+    )
+    report.add_argument("--out", default="out/report", help="where the markdown, CSV, plots and index.html go")
     report.add_argument(
         "--metric",
         default="all",
         choices=["all", *METRICS],
     )
     report.set_defaults(func=cmd_report)
+    add_study_commands(sub)
     demo = sub.add_parser(
         "demo", help="one task end to end (the configured LLM, else the reference program) with a video and a report"
     )
@@ -530,7 +551,10 @@ def _exit_on_sigterm(signum, frame) -> None:
 
 def main(argv: list[str] | None = None) -> int:
     args = build_parser().parse_args(argv)
-    if args.command in ("exec", "run", "bench") and threading.current_thread() is threading.main_thread():
+    if (
+        args.command in ("exec", "run", "bench", "sweep", "study")
+        and threading.current_thread() is threading.main_thread()
+    ):
         signal.signal(signal.SIGTERM, _exit_on_sigterm)
     from roboscript.errors import RoboScriptError, error_message
 

@@ -82,8 +82,10 @@ def trial_specs(
     suite: str = DEFAULT_SUITE,
     backend: str = "mujoco",
     robot_config: str | None = None,
+    record: str | None = None,
 ) -> list[TrialSpec]:
-    """Trial ``i`` uses seed ``seed + i``; with several trials, videos get a ``_trial<i>`` suffix."""
+    """Trial ``i`` uses seed ``seed + i``; with several trials, videos and recordings get a ``_trial<i>``
+    suffix."""
     if trials < 1:
         raise ValueError(f"trials must be at least 1, got {trials}")
     source = None
@@ -91,11 +93,7 @@ def trial_specs(
         program, source = program.program, program.source
     specs = []
     for i in range(trials):
-        path = None
-        if video:
-            path = (
-                video if trials == 1 else str(Path(video).with_name(f"{Path(video).stem}_trial{i}{Path(video).suffix}"))
-            )
+        path, recording = _numbered(video, i, trials), _numbered(record, i, trials)
         specs.append(
             TrialSpec(
                 task,
@@ -114,9 +112,17 @@ def trial_specs(
                 program_source=source,
                 backend=backend,
                 robot_config=robot_config,
+                record=recording,
             )
         )
     return specs
+
+
+def _numbered(path: str | None, trial: int, trials: int) -> str | None:
+    """``path`` itself for one trial; ``<stem>_trial<i><suffix>`` for each of several."""
+    if path is None or trials == 1:
+        return path
+    return str(Path(path).with_name(f"{Path(path).stem}_trial{trial}{Path(path).suffix}"))
 
 
 def progress_printer(total: int, stream=sys.stderr) -> Callable[[TrialRecord], None]:
@@ -135,29 +141,24 @@ def progress_printer(total: int, stream=sys.stderr) -> Callable[[TrialRecord], N
     return report
 
 
-def run_benchmark(
+def open_run(
+    out: str | Path,
     policy: str,
-    tasks: list[str] | None,
+    tasks: list[str],
     robot: str,
     trials: int,
     seed: int,
-    out: str | Path,
-    jobs: int,
     timeout: float = 300.0,
-    progress: bool = True,
     repair_rounds: int = 0,
     perception: PerceptionMode | str = GROUND_TRUTH,
     suite: str = DEFAULT_SUITE,
     backend: str = "mujoco",
     robot_config: str | None = None,
-) -> dict:
-    """Runs (or resumes) the benchmark of ``suite`` in ``out``; returns ``{"tasks": {id: exec object},
-    "wall_time_s"}``."""
-    tasks = list(tasks or load_suite(suite))
-    for t in tasks:
-        get_task(t, suite)
-    started = time.perf_counter()
-    programs = policy_programs(policy, tasks, suite)
+    programs: dict[str, StoredProgram] | None = None,
+) -> tuple[RunDirectory, list[TrialSpec]]:
+    """Opens (or reopens, refusing other settings or programs) the run directory ``out`` and lists the trials it
+    still needs; ``programs`` are the policy's (looked up here where not given)."""
+    programs = programs if programs is not None else policy_programs(policy, tasks, suite)
     texts = {t: p.program for t, p in programs.items()}
     run = RunDirectory(
         out,
@@ -185,6 +186,34 @@ def run_benchmark(
         )
         if (s.task, s.robot, s.trial) not in done
     ]
+    return run, specs
+
+
+def run_benchmark(
+    policy: str,
+    tasks: list[str] | None,
+    robot: str,
+    trials: int,
+    seed: int,
+    out: str | Path,
+    jobs: int,
+    timeout: float = 300.0,
+    progress: bool = True,
+    repair_rounds: int = 0,
+    perception: PerceptionMode | str = GROUND_TRUTH,
+    suite: str = DEFAULT_SUITE,
+    backend: str = "mujoco",
+    robot_config: str | None = None,
+) -> dict:
+    """Runs (or resumes) the benchmark of ``suite`` in ``out``; returns ``{"tasks": {id: exec object},
+    "wall_time_s"}``."""
+    tasks = list(tasks or load_suite(suite))
+    for t in tasks:
+        get_task(t, suite)
+    started = time.perf_counter()
+    run, specs = open_run(
+        out, policy, tasks, robot, trials, seed, timeout, repair_rounds, perception, suite, backend, robot_config
+    )
     printer = progress_printer(len(specs)) if progress else None
 
     def on_record(record: TrialRecord) -> None:

@@ -142,8 +142,10 @@ class RunDirectory:
         return {(r.task, r.robot, r.trial) for r in self.records()}
 
     def append(self, record: TrialRecord) -> None:
-        with self.results.open("a") as f:
-            f.write(json.dumps(record.to_dict()) + "\n")
+        with self.results.open("a+b") as f:
+            # A line cut short by a kill is ignored when read; the next record must not be glued onto it.
+            cut = f.tell() > 0 and f.seek(f.tell() - 1) is not None and f.read(1) != b"\n"
+            f.write((("\n" if cut else "") + json.dumps(record.to_dict()) + "\n").encode())
             f.flush()
 
     def write_summary(self, tasks: Iterable[str]) -> dict:

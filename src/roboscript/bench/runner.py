@@ -141,18 +141,23 @@ class TrialPool:
             self._idle.pop().stop()
 
     def run(
-        self, specs: Iterable[TrialSpec], on_record: Callable[[TrialRecord], None] | None = None
+        self,
+        specs: Iterable[TrialSpec],
+        on_record: Callable[[TrialRecord], None] | None = None,
+        on_result: Callable[[TrialSpec, TrialRecord], None] | None = None,
     ) -> list[TrialRecord]:
-        """Runs every trial, at most ``jobs`` at once; ``on_record`` gets each as it ends. Returns the records in
-        the order they ended."""
+        """Runs every trial, at most ``jobs`` at once; ``on_record`` gets each record as it ends, ``on_result``
+        the spec it was run from with it. Returns the records in the order they ended."""
         pending = list(specs)
         busy: dict[object, _Worker] = {}
         records: list[TrialRecord] = []
 
-        def finish(record: TrialRecord) -> None:
+        def finish(spec: TrialSpec, record: TrialRecord) -> None:
             records.append(record)
             if on_record is not None:
                 on_record(record)
+            if on_result is not None:
+                on_result(spec, record)
 
         try:
             while pending or busy:
@@ -169,7 +174,7 @@ class TrialPool:
                         del busy[conn]
                         worker.kill()
                         error = f"the trial's worker died (exit code {worker.process.exitcode})"
-                        finish(_failed(spec, error, started))
+                        finish(spec, _failed(spec, error, started))
                         continue
                     if status == "started":
                         worker.trial_pid = payload
@@ -177,11 +182,11 @@ class TrialPool:
                     del busy[conn]
                     self._idle.append(worker)
                     if status == "ok":
-                        finish(TrialRecord(**payload))
+                        finish(spec, TrialRecord(**payload))
                     elif status == "died":
-                        finish(_death(spec, payload, started))
+                        finish(spec, _death(spec, payload, started))
                     else:
-                        finish(_failed(spec, f"the trial could not be run: {payload}", started))
+                        finish(spec, _failed(spec, f"the trial could not be run: {payload}", started))
                 now = time.perf_counter()
                 for conn, worker in list(busy.items()):
                     spec = worker.spec
@@ -189,7 +194,7 @@ class TrialPool:
                         del busy[conn]
                         worker.kill()  # a trial stuck in native code; its worker goes too, a fresh one takes over
                         error = f"TimeoutError: the program ran longer than its {spec.timeout:g} s limit (killed)"
-                        finish(_failed(spec, error, worker.started, Outcome.TIMEOUT))
+                        finish(spec, _failed(spec, error, worker.started, Outcome.TIMEOUT))
         finally:
             # An interrupted run (Ctrl-C, SIGTERM, an error here) leaves no trial running: each one's master and
             # twin go with it (see roboscript.ros.launch).

@@ -49,6 +49,7 @@ class TrialSpec:
     program_source: str | None = None  # where a stored program came from (a file, an entry of one)
     backend: str = "mujoco"  # mujoco, or ros: the world served by ros-sim, the tools on the ROS backend
     robot_config: str | None = None  # the ROS backend's robot configuration (default: the arm's packaged one)
+    record: str | None = None  # an MCAP file to record the trial into (roboscript.record)
 
     def __post_init__(self) -> None:
         if self.repair_rounds < 0:
@@ -195,12 +196,17 @@ class _TrialWorld:
 
         spec = self.spec
         self.backend = MujocoBackend(self.task.world, robot=spec.robot, seed=spec.seed, randomize=True)
-        self.recorder = None
+        self.recorder = self.recording = None
         try:
             self.ground_truth = self.backend.ground_truth
             self.checks = self.task.build_checks(self.ground_truth)
             tools = build_tools(self.backend, spec.perception, seed=spec.seed)
             self.namespace = tools.namespace()
+            if spec.record:
+                from roboscript.record.recording import TrialRecording
+
+                self.recording = TrialRecording(self.backend, tools, _partial(spec.record))
+                self.namespace = self.recording.wrap(self.namespace)
             if spec.video:
                 from roboscript.bench.video import VideoRecorder
 
@@ -215,12 +221,17 @@ class _TrialWorld:
         """The attempt's outcome once what was let go has come to rest."""
         self.backend.wait(1.0)
         checks = [c.evaluate(self.ground_truth).to_dict() for c in self.checks]
+        if self.recording is not None:
+            self.recording.log_checks(checks)
         return attempt_record(result, checks, self.backend.time() - self.sim_start)
 
     def __exit__(self, *exc) -> None:
         if self.recorder is not None:
             self.recorder.close()
             os.replace(self.recorder.path, self.spec.video)
+        if self.recording is not None:
+            self.recording.close()
+            os.replace(self.recording.path, self.spec.record)
         self.backend.close()
 
 
@@ -248,7 +259,7 @@ def _trial_world(spec: TrialSpec, task: Task):
 
 
 def _partial(video: str) -> str:
-    """Where an attempt's video is written until the attempt is over."""
+    """Where an attempt's video (or recording) is written until the attempt is over."""
     path = Path(video)
     return str(path.with_name(f"{path.stem}.partial{path.suffix}"))
 

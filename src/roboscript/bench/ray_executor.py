@@ -1,0 +1,126 @@
+"""Trials on a Ray cluster (the ``ray`` extra): one actor per CPU slot, each a trial pool of one on its node.
+
+An actor keeps its trial worker between trials (:mod:`roboscript.bench.workers`), so what a world's trials share is
+made once per node and world, as on one machine; each trial still runs in a process of its own. Records (and the
+videos that are kept) travel back to the driver, which alone writes them.
+"""
+
+from __future__ import annotations
+
+import contextlib
+import os
+import tempfile
+from collections.abc import Callable
+from dataclasses import replace
+from pathlib import Path
+
+from roboscript.bench.sweep import Executor
+from roboscript.bench.trial import TrialRecord, TrialSpec
+
+
+def _ray():
+    try:
+        import ray
+    except ImportError:
+        raise RuntimeError("--ray needs Ray: pip install 'roboscript[ray]'") from None
+    return ray
+
+
+class TrialActor:
+    """Runs trials one at a time on its node; Ray makes it remote (``ray.remote(num_cpus=1)``)."""
+
+    def __init__(self) -> None:
+        from roboscript.bench.runner import TrialPool
+
+        self.pool = TrialPool(1)
+        self.scratch = Path(tempfile.mkdtemp(prefix="roboscript-ray-"))
+
+    def run(self, spec: TrialSpec) -> tuple[dict, bytes | None]:
+        """The trial's record, and its video's bytes where it recorded one (written here in a scratch folder:
+        the driver's paths need not exist on this node)."""
+        video = None
+        if spec.video:
+            video = self.scratch / f"{os.getpid()}_{Path(spec.video).name}"
+            spec = replace(spec, video=str(video))
+        record = self.pool.run([spec])[0]
+        data = None
+        if video is not None and video.is_file():
+            data = video.read_bytes()
+            video.unlink()
+        return record.to_dict(), data
+
+    def node(self) -> str:
+        import platform
+
+        return platform.node()
+
+
+class RayExecutor(Executor):
+    """Runs trials on the Ray cluster at ``address`` (``auto``, ``host:port``), or on a local one that it starts
+    with ``jobs`` CPUs when no address is given; ``jobs`` actors (default: the cluster's CPUs) run at once."""
+
+    def __init__(self, address: str | None = None, jobs: int | None = None):
+        ray = _ray()
+        os.environ.setdefault("RAY_AUTH_MODE", "disabled")
+        self.started_here = not ray.is_initialized()
+        if self.started_here:
+            options = {"num_cpus": jobs} if address is None and jobs else {}
+            ray.init(address=address, include_dashboard=False, log_to_driver=False, **options)
+        self.jobs = jobs or max(1, int(ray.cluster_resources().get("CPU", 1)))
+
+    def run(self, specs: list[TrialSpec], on_result: Callable[[TrialSpec, TrialRecord], None]) -> None:
+        ray = _ray()
+        remote = ray.remote(num_cpus=1)(TrialActor)
+        actors = [remote.remote() for _ in range(min(self.jobs, len(specs)))]
+        pending = list(specs)
+        running: dict = {}
+
+        def give(actor) -> None:
+            spec = pending.pop(0)
+            running[actor.run.remote(spec)] = (actor, spec)
+
+        try:
+            for actor in actors:
+                if pending:
+                    give(actor)
+            while running:
+                ready, _ = ray.wait(list(running), num_returns=1)
+                actor, spec = running.pop(ready[0])
+                try:
+                    payload, video = ray.get(ready[0])
+                    record = TrialRecord(**payload)
+                except ray.exceptions.RayError as exc:  # the actor or its node died: the trial is lost
+                    record = _lost(spec, exc)
+                    actor = remote.remote()
+                    actors.append(actor)
+                    video = None
+                if video is not None and spec.video:
+                    Path(spec.video).parent.mkdir(parents=True, exist_ok=True)
+                    Path(spec.video).write_bytes(video)
+                on_result(spec, record)
+                if pending:
+                    give(actor)
+        finally:
+            for actor in actors:
+                with contextlib.suppress(Exception):  # already dead with its node
+                    ray.kill(actor)
+
+    def close(self) -> None:
+        if self.started_here:
+            _ray().shutdown()
+
+
+def _lost(spec: TrialSpec, exc: Exception) -> TrialRecord:
+    from roboscript.codegen.outcomes import Outcome
+
+    first = str(exc).strip().splitlines()[0] if str(exc).strip() else type(exc).__name__
+    return TrialRecord(
+        task=spec.task,
+        robot=spec.robot,
+        trial=spec.trial,
+        seed=spec.seed,
+        ok=False,
+        error=f"the trial's Ray actor died: {first}",
+        checks=[],
+        outcome=Outcome.RUNTIME_ERROR.value,
+    )

@@ -1,0 +1,1 @@
+"""Reports of benchmark runs and studies: plots (PNG) and one HTML page with the tables, plots and videos."""

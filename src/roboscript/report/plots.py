@@ -1,0 +1,77 @@
+"""Plots of benchmark runs and studies, drawn with matplotlib (the ``report`` extra) into PNG files.
+
+Rates carry 95% Wilson intervals (:func:`roboscript.bench.stats.wilson_interval`): ten trials say little, and
+the bars should show how little.
+"""
+
+from __future__ import annotations
+
+import textwrap
+from collections.abc import Sequence
+from pathlib import Path
+
+import numpy as np
+
+from roboscript.bench.stats import wilson_interval
+
+COLOURS = ["#4c72b0", "#dd8452", "#55a868", "#c44e52", "#8172b3", "#937860", "#da8bc3", "#8c8c8c"]
+
+
+def _pyplot():
+    try:
+        import matplotlib
+    except ImportError:
+        raise RuntimeError("plots need matplotlib: pip install 'roboscript[report]'") from None
+    matplotlib.use("Agg")  # files only: no display on a cluster node or in CI
+    import matplotlib.pyplot as plt
+
+    return plt
+
+
+def _error_bars(successes: Sequence[int], trials: Sequence[int]) -> tuple[np.ndarray, np.ndarray]:
+    rates = np.array([k / n if n else 0.0 for k, n in zip(successes, trials, strict=True)])
+    bounds = np.array([wilson_interval(k, n) for k, n in zip(successes, trials, strict=True)]).reshape(-1, 2)
+    return rates, np.clip(np.vstack([rates - bounds[:, 0], bounds[:, 1] - rates]), 0.0, None)
+
+
+def grouped_bars(
+    groups: Sequence[str],
+    series: dict[str, tuple[Sequence[int], Sequence[int]]],
+    path: str | Path,
+    title: str,
+    ylabel: str = "whole-task success",
+    width_per_group: float = 0.9,
+) -> Path:
+    """Bars of success rates with 95% intervals: a group per x label (a task, an object), a bar per series (a
+    run, a template) in each; ``series[name] = (successes, trials)`` in the groups' order."""
+    plt = _pyplot()
+    n = max(1, len(series))
+    fig_width = max(6.0, 0.55 * len(groups) * max(1.0, n / 2) + 2)
+    fig, ax = plt.subplots(figsize=(min(fig_width, 40.0), 4.2))
+    x = np.arange(len(groups))
+    bar = width_per_group / n
+    for i, (name, (successes, trials)) in enumerate(series.items()):
+        rates, errors = _error_bars(successes, trials)
+        ax.bar(
+            x + (i - (n - 1) / 2) * bar,
+            rates,
+            bar,
+            yerr=errors,
+            capsize=2,
+            label=f"{name} ({sum(successes)}/{sum(trials)})",
+            color=COLOURS[i % len(COLOURS)],
+            error_kw={"elinewidth": 0.8, "ecolor": "#333333"},
+        )
+    crowded = len(groups) > 8 or sum(len(g) for g in groups) > 9 * fig_width
+    ax.set_xticks(x, groups, rotation=50 if crowded else 0, ha="right" if crowded else "center", fontsize=8)
+    ax.set_ylim(0, 1.05)
+    ax.set_ylabel(ylabel)
+    ax.set_title(textwrap.fill(title, width=max(40, int(fig.get_figwidth() * 11))), fontsize=10)
+    ax.grid(axis="y", alpha=0.3)
+    ax.legend(fontsize=8, loc="upper left", bbox_to_anchor=(1.01, 1.0), framealpha=0.9)
+    fig.tight_layout()
+    path = Path(path)
+    path.parent.mkdir(parents=True, exist_ok=True)
+    fig.savefig(path, dpi=110)
+    plt.close(fig)
+    return path

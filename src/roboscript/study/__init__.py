@@ -1,0 +1,1 @@
+"""Studies: task templates instantiated over the object library (the object-shape study), run as sweeps."""
