@@ -15,11 +15,13 @@ def test_worlds_lists_the_six_worlds(capsys):
     assert "white_ceramic_plate" in out and "cluttered_1_table_sort" in out
 
 
-def test_objects_lists_at_least_40_types_with_category_and_colour(capsys):
+def test_objects_lists_at_least_40_types_with_category_colour_and_shape(capsys):
     assert main(["objects"]) == 0
     rows = [line for line in capsys.readouterr().out.splitlines()[1:] if line.strip()]
     assert len(rows) >= 40
-    assert any(r.startswith("footed_bowl") and "(container)" in r for r in rows)
+    assert any(r.startswith("footed_bowl") and " bowl " in r and "(container, not picked)" in r for r in rows)
+    assert any(r.startswith("white_mug") and " mug " in r and r.endswith("(container)") for r in rows)
+    assert any(r.startswith("soup_can") and " cylinder " in r and not r.endswith(")") for r in rows)
 
 
 def test_render_writes_every_camera_and_a_top_view(tmp_path):
