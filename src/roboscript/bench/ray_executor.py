@@ -111,16 +111,7 @@ class RayExecutor(Executor):
 
 
 def _lost(spec: TrialSpec, exc: Exception) -> TrialRecord:
-    from roboscript.codegen.outcomes import Outcome
+    from roboscript.bench.runner import failed_record
 
     first = str(exc).strip().splitlines()[0] if str(exc).strip() else type(exc).__name__
-    return TrialRecord(
-        task=spec.task,
-        robot=spec.robot,
-        trial=spec.trial,
-        seed=spec.seed,
-        ok=False,
-        error=f"the trial's Ray actor died: {first}",
-        checks=[],
-        outcome=Outcome.RUNTIME_ERROR.value,
-    )
+    return failed_record(spec, f"the trial's Ray actor died: {first}")

@@ -32,7 +32,11 @@ def wall_budget(spec: TrialSpec) -> float:
     return spec.attempts() * per_attempt
 
 
-def _failed(spec: TrialSpec, error: str, started: float, outcome: Outcome = Outcome.RUNTIME_ERROR) -> TrialRecord:
+def failed_record(
+    spec: TrialSpec, error: str, started: float | None = None, outcome: Outcome = Outcome.RUNTIME_ERROR
+) -> TrialRecord:
+    """The record of a trial that ended without reporting (killed, its process or worker died): no checks run;
+    the wall time since ``started`` (a ``perf_counter`` reading) where known."""
     return TrialRecord(
         task=spec.task,
         robot=spec.robot,
@@ -41,7 +45,7 @@ def _failed(spec: TrialSpec, error: str, started: float, outcome: Outcome = Outc
         ok=False,
         error=error,
         checks=[],
-        wall_time_s=round(time.perf_counter() - started, 3),
+        wall_time_s=round(time.perf_counter() - started, 3) if started is not None else 0.0,
         outcome=outcome.value,
     )
 
@@ -49,8 +53,8 @@ def _failed(spec: TrialSpec, error: str, started: float, outcome: Outcome = Outc
 def _death(spec: TrialSpec, exitcode: int | None, started: float) -> TrialRecord:
     if exitcode == -signal.SIGXCPU:  # the sandbox's CPU-time backstop (a C-level loop the timer cannot stop)
         error = f"TimeoutError: the program ran past its CPU-time limit ({spec.timeout:g} s and a margin; killed)"
-        return _failed(spec, error, started, Outcome.TIMEOUT)
-    return _failed(spec, f"the trial's process died (exit code {exitcode})", started)
+        return failed_record(spec, error, started, Outcome.TIMEOUT)
+    return failed_record(spec, f"the trial's process died (exit code {exitcode})", started)
 
 
 def trial_context() -> mp.context.BaseContext:
@@ -174,7 +178,7 @@ class TrialPool:
                         del busy[conn]
                         worker.kill()
                         error = f"the trial's worker died (exit code {worker.process.exitcode})"
-                        finish(spec, _failed(spec, error, started))
+                        finish(spec, failed_record(spec, error, started))
                         continue
                     if status == "started":
                         worker.trial_pid = payload
@@ -186,7 +190,7 @@ class TrialPool:
                     elif status == "died":
                         finish(spec, _death(spec, payload, started))
                     else:
-                        finish(spec, _failed(spec, f"the trial could not be run: {payload}", started))
+                        finish(spec, failed_record(spec, f"the trial could not be run: {payload}", started))
                 now = time.perf_counter()
                 for conn, worker in list(busy.items()):
                     spec = worker.spec
@@ -194,7 +198,7 @@ class TrialPool:
                         del busy[conn]
                         worker.kill()  # a trial stuck in native code; its worker goes too, a fresh one takes over
                         error = f"TimeoutError: the program ran longer than its {spec.timeout:g} s limit (killed)"
-                        finish(spec, _failed(spec, error, worker.started, Outcome.TIMEOUT))
+                        finish(spec, failed_record(spec, error, worker.started, Outcome.TIMEOUT))
         finally:
             # An interrupted run (Ctrl-C, SIGTERM, an error here) leaves no trial running: each one's master and
             # twin go with it (see roboscript.ros.launch).
