@@ -16,6 +16,7 @@ from pathlib import Path
 
 from roboscript.bench.sweep import Executor
 from roboscript.bench.trial import TrialRecord, TrialSpec
+from roboscript.datafile import names_a_file
 
 
 def _ray():
@@ -26,6 +27,26 @@ def _ray():
     return ray
 
 
+def pack_suite(suite: str) -> dict[str, bytes]:
+    """A suite file with the world files and reference programs it names, by path relative to its folder: what a
+    node without the driver's files needs to run its tasks (a study's suite is written on the driver)."""
+    from roboscript.bench.task_file import load_suite_file
+
+    path = Path(suite).resolve()
+    base = path.parent
+    files = [path]
+    for task in load_suite_file(path):
+        for named in (Path(task.world) if Path(task.world).suffix else None, task.reference):
+            if named is not None and named.is_file():
+                files.append(named.resolve())
+    packed = {}
+    for file in files:
+        if not file.is_relative_to(base):
+            raise ValueError(f"{file} is outside the suite's folder {base}; on Ray a suite's files must lie beside it")
+        packed[str(file.relative_to(base))] = file.read_bytes()
+    return packed
+
+
 class TrialActor:
     """Runs trials one at a time on its node; Ray makes it remote (``ray.remote(num_cpus=1)``)."""
 
@@ -34,10 +55,23 @@ class TrialActor:
 
         self.pool = TrialPool(1)
         self.scratch = Path(tempfile.mkdtemp(prefix="roboscript-ray-"))
+        self.suites: dict[str, str] = {}  # the driver's suite file -> this node's copy
 
-    def run(self, spec: TrialSpec) -> tuple[dict, bytes | None]:
+    def _local_suite(self, suite: str, packed: dict[str, bytes]) -> str:
+        if suite not in self.suites:
+            folder = self.scratch / f"suite{len(self.suites)}"
+            for relative, data in packed.items():
+                (folder / relative).parent.mkdir(parents=True, exist_ok=True)
+                (folder / relative).write_bytes(data)
+            self.suites[suite] = str(folder / Path(suite).name)
+        return self.suites[suite]
+
+    def run(self, spec: TrialSpec, packed_suite: dict[str, bytes] | None = None) -> tuple[dict, bytes | None]:
         """The trial's record, and its video's bytes where it recorded one (written here in a scratch folder:
-        the driver's paths need not exist on this node)."""
+        the driver's paths need not exist on this node). A suite given as a file comes packed
+        (:func:`pack_suite`) and runs from this node's copy."""
+        if packed_suite is not None:
+            spec = replace(spec, suite=self._local_suite(spec.suite, packed_suite))
         video = None
         if spec.video:
             video = self.scratch / f"{os.getpid()}_{Path(spec.video).name}"
@@ -74,10 +108,11 @@ class RayExecutor(Executor):
         actors = [remote.remote() for _ in range(min(self.jobs, len(specs)))]
         pending = list(specs)
         running: dict = {}
+        packed = {suite: ray.put(pack_suite(suite)) for suite in {s.suite for s in specs} if names_a_file(suite)}
 
         def give(actor) -> None:
             spec = pending.pop(0)
-            running[actor.run.remote(spec)] = (actor, spec)
+            running[actor.run.remote(spec, packed.get(spec.suite))] = (actor, spec)
 
         try:
             for actor in actors:
