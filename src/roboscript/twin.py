@@ -93,6 +93,7 @@ def _box_type(name: str, half: np.ndarray, height: float) -> ObjectType:
         parts=shapes.box(*size),
         density=BOX_DENSITY,
         description=f"what the cameras saw of {name}: a {size[0]:.2f} x {size[1]:.2f} x {size[2]:.2f} m box",
+        shape="box",
     )
 
 
