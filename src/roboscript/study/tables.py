@@ -28,6 +28,7 @@ class CellResult:
     successes: int = 0
     outcomes: dict[str, int] = field(default_factory=dict)
     errors: dict[str, int] = field(default_factory=dict)  # the kind of error that stopped a program
+    trial_wall_s: float = 0.0  # the trials' own wall times added up
 
     @property
     def rate(self) -> float:
@@ -69,6 +70,7 @@ def cell_results(records: Iterable[TrialRecord], cells: Sequence[Cell]) -> list[
         result.successes = sum(r.success for r in rs)
         result.outcomes = dict(Counter(r.outcome for r in rs).most_common())
         result.errors = dict(Counter(failure_kind(r) for r in rs if not r.success).most_common())
+        result.trial_wall_s = round(sum(r.wall_time_s for r in rs), 3)
         results.append(result)
     return results
 
@@ -152,10 +154,15 @@ def study_markdown(name: str, results: Sequence[CellResult], wall_time_s: float 
     """The study's report: per robot, the object table, the shape table and the failure breakdown."""
     out = [f"# Study `{name}`", ""]
     if wall_time_s is not None:
-        out += [f"Wall time of this session: {wall_time_s:.0f} s.", ""]
+        out += [f"This session ran for {wall_time_s:.0f} s (a resumed study counts only what it ran itself).", ""]
     for robot in sorted({r.robot for r in results}):
+        mine = [r for r in results if r.robot == robot]
+        trials, wall = sum(r.trials for r in mine), sum(r.trial_wall_s for r in mine)
         out += [
             f"## {robot}",
+            "",
+            f"{trials} trials in {len(mine)} cells; the trials' own wall times add up to {wall:.0f} s "
+            f"(the median cell's trials took {_median_trial(mine):.1f} s each).",
             "",
             "Successful trials per object (rows, grouped by shape) and template with its grasp tool (columns); the",
             "last row is each column's success rate over all objects with its 95% Wilson interval.",
@@ -169,6 +176,11 @@ def study_markdown(name: str, results: Sequence[CellResult], wall_time_s: float 
             failure_table(results, robot),
         ]
     return "\n".join(out)
+
+
+def _median_trial(results: Sequence[CellResult]) -> float:
+    per_cell = sorted(r.trial_wall_s / r.trials for r in results if r.trials)
+    return per_cell[len(per_cell) // 2] if per_cell else 0.0
 
 
 def study_csv(results: Sequence[CellResult]) -> str:
