@@ -50,9 +50,10 @@ def grouped_bars(
     rows, top to bottom, so that every label stays readable."""
     plt = _pyplot()
     n = max(1, len(series))
-    sideways = len(groups) >= HORIZONTAL_FROM
+    sideways = len(groups) >= HORIZONTAL_FROM or max(map(len, groups), default=0) > 30
     if sideways:
-        size = (8.5, max(4.0, 0.16 * len(groups) * max(1.0, n / 1.5) + 1.5))
+        longest = max(map(len, groups), default=0)
+        size = (max(8.5, 5.5 + 0.09 * longest), max(4.0, 0.16 * len(groups) * max(1.0, n / 1.5) + 1.5))
     else:
         size = (max(6.0, 0.6 * len(groups) * max(1.0, n / 2) + 3), 4.2)
     fig, ax = plt.subplots(figsize=size)
@@ -79,11 +80,13 @@ def grouped_bars(
         ax.set_ylim(0, 1.05)
         ax.set_ylabel(ylabel)
         ax.grid(axis="y", alpha=0.3)
+    if sideways:
+        ax.set_ylim(len(groups) - 0.5, -0.5)  # no empty rows above and below
     ax.set_title(textwrap.fill(title, width=max(40, int(size[0] * 9))), fontsize=10)
     ax.legend(fontsize=8, loc="upper left", bbox_to_anchor=(1.01, 1.0), framealpha=0.9)
     fig.tight_layout()
     path = Path(path)
     path.parent.mkdir(parents=True, exist_ok=True)
-    fig.savefig(path, dpi=110)
+    fig.savefig(path, dpi=110, bbox_inches="tight")  # labels and the legend outside the axes included
     plt.close(fig)
     return path
