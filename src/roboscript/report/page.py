@@ -61,27 +61,42 @@ def _provenance(runs: Sequence[Run]) -> str:
     return f'<table><tr><th class="name">Run directory</th>{head}<th>records</th></tr>{"".join(rows)}</table>'
 
 
+FOLD_FROM = 20  # failed trials in a run from which each task's failures start folded
+
+
+def _trial(run: Run, record, page_dir: Path) -> str:
+    checks = ", ".join(f"{c['check']}: {'passed' if c['passed'] else 'failed'} ({c['detail']})"
+                       for c in record.checks) or "none evaluated"  # fmt: skip
+    video = run.video(record)
+    media = (
+        f'<video controls preload="metadata" src="{_e(os.path.relpath(video, page_dir))}"></video>'
+        if video
+        else '<p class="muted">no video kept (run the sweep with videos: failed)</p>'
+    )
+    error = f"<pre>{_e(record.error)}</pre>" if record.error else ""
+    return (
+        f'<div class="trial"><b>{_e(record.task)}</b>, trial {record.trial} (seed {record.seed}): '
+        f"<b>{_e(record.outcome)}</b>; checks: {_e(checks)}; simulated {record.sim_time_s:.1f} s"
+        f"{error}{media}</div>"
+    )
+
+
 def _failed_trials(runs: Sequence[Run], page_dir: Path) -> str:
+    """Every failed trial, grouped by task; a run with many failures (a study's) shows each task folded."""
     parts = []
     for run in runs:
         failed = run.failed()
         if not failed:
             continue
         parts.append(f"<h3>{_e(run.label)}: {len(failed)} of {len(run.records)} trials failed</h3>")
+        by_task: dict[str, list] = {}
         for record in failed:
-            checks = ", ".join(f"{c['check']}: {'passed' if c['passed'] else 'failed'} ({c['detail']})"
-                               for c in record.checks) or "none evaluated"  # fmt: skip
-            video = run.video(record)
-            media = (
-                f'<video controls preload="metadata" src="{_e(os.path.relpath(video, page_dir))}"></video>'
-                if video
-                else '<p class="muted">no video kept (run the sweep with videos: failed)</p>'
-            )
-            error = f"<pre>{_e(record.error)}</pre>" if record.error else ""
+            by_task.setdefault(record.task, []).append(record)
+        opened = " open" if len(failed) < FOLD_FROM else ""
+        for task, records in by_task.items():
+            trials = "".join(_trial(run, r, page_dir) for r in records)
             parts.append(
-                f'<div class="trial"><b>{_e(record.task)}</b>, trial {record.trial} (seed {record.seed}): '
-                f"<b>{_e(record.outcome)}</b>; checks: {_e(checks)}; simulated {record.sim_time_s:.1f} s"
-                f"{error}{media}</div>"
+                f"<details{opened}><summary><b>{_e(task)}</b>: {len(records)} failed</summary>{trials}</details>"
             )
     return "\n".join(parts) or "<p>No trial failed.</p>"
 
@@ -90,7 +105,12 @@ def write_page(runs: Sequence[Run], plots: Sequence[Path], path: Path, title: st
     """Writes the report's page to ``path``; plots and videos are linked relative to it."""
     page_dir = path.parent
     figures = "\n".join(f'<img src="{_e(os.path.relpath(p, page_dir))}" alt="{_e(p.stem)}">' for p in plots)
-    tables = "\n".join(f"<h3>{LABELS[m]}</h3>{_metric_table(runs, m)}" for m in METRICS)
+    tasks = {t for r in runs for t in r.tasks}
+    opened = " open" if len(tasks) <= FOLD_FROM else ""  # a study's hundreds of cells: folded
+    tables = "\n".join(
+        f"<details{opened}><summary><b>{LABELS[m]}</b> ({len(tasks)} tasks)</summary>{_metric_table(runs, m)}</details>"
+        for m in METRICS
+    )
     body = f"""<!DOCTYPE html>
 <html lang="en"><head><meta charset="utf-8"><title>{_e(title)}</title><style>{STYLE}</style></head>
 <body>
