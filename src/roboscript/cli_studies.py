@@ -17,10 +17,12 @@ def _names(text: str) -> list[str]:
 
 
 def _robots(text: str) -> list[str]:
-    names = ["panda", "ur5e"] if text == "both" else _names(text)
+    from roboscript.robots import ROBOTS
+
+    names = sorted(ROBOTS) if text == "both" else _names(text)
     for name in names:
-        if name not in ("panda", "ur5e"):
-            raise argparse.ArgumentTypeError(f"unknown robot {name!r}; robots: panda, ur5e (or both)")
+        if name not in ROBOTS:
+            raise argparse.ArgumentTypeError(f"unknown robot {name!r}; robots: {', '.join(sorted(ROBOTS))} (or both)")
     return names
 
 

@@ -83,11 +83,6 @@ class TrialActor:
             video.unlink()
         return record.to_dict(), data
 
-    def node(self) -> str:
-        import platform
-
-        return platform.node()
-
 
 class RayExecutor(Executor):
     """Runs trials on the Ray cluster at ``address`` (``auto``, ``host:port``), or on a local one that it starts

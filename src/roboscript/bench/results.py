@@ -128,24 +128,20 @@ class RunDirectory:
 
     def records(self) -> list[TrialRecord]:
         """Records written so far; a line cut short by an interruption is ignored."""
-        if not self.results.exists():
-            return []
-        out = []
-        for line in self.results.read_text().splitlines():
-            try:
-                out.append(TrialRecord(**json.loads(line)))
-            except (json.JSONDecodeError, TypeError):
-                continue
-        return out
+        return read_records(self.results)
 
     def done(self) -> set[tuple[str, str, int]]:
         return {(r.task, r.robot, r.trial) for r in self.records()}
 
     def append(self, record: TrialRecord) -> None:
-        with self.results.open("a+b") as f:
-            # A line cut short by a kill is ignored when read; the next record must not be glued onto it.
-            cut = f.tell() > 0 and f.seek(f.tell() - 1) is not None and f.read(1) != b"\n"
-            f.write((("\n" if cut else "") + json.dumps(record.to_dict()) + "\n").encode())
+        line = json.dumps(record.to_dict()) + "\n"
+        with self.results.open("a+b") as f:  # appends go to the end wherever the file position is
+            size = f.seek(0, 2)
+            if size > 0:
+                f.seek(size - 1)
+                if f.read(1) != b"\n":  # a line cut short by a kill: ignored when read, so not glued onto
+                    line = "\n" + line
+            f.write(line.encode())
             f.flush()
 
     def write_summary(self, tasks: Iterable[str]) -> dict:
@@ -155,6 +151,24 @@ class RunDirectory:
         (self.path / "summary.md").write_text(markdown_table(summary))
         (self.path / "summary.csv").write_text(csv_table(summary))
         return summary
+
+
+def video_path(run_dir: Path, task: str, trial: int) -> Path:
+    """Where a run keeps a trial's video when a sweep keeps videos: ``<run>/videos/<task>_trial<i>.mp4``."""
+    return run_dir / "videos" / f"{task}_trial{trial}.mp4"
+
+
+def read_records(results: Path) -> list[TrialRecord]:
+    """The records of a ``results.jsonl``; a line cut short by an interruption is ignored."""
+    if not results.exists():
+        return []
+    out = []
+    for line in results.read_text().splitlines():
+        try:
+            out.append(TrialRecord(**json.loads(line)))
+        except (json.JSONDecodeError, TypeError):
+            continue
+    return out
 
 
 def summarize(records: list[TrialRecord], tasks: list[str], run: dict) -> dict:

@@ -17,7 +17,7 @@ from pathlib import Path
 
 from roboscript.bench.benchmark import open_run, policy_programs, run_label
 from roboscript.bench.progress import ProgressBar
-from roboscript.bench.results import RunDirectory
+from roboscript.bench.results import RunDirectory, video_path
 from roboscript.bench.sweep_file import Sweep
 from roboscript.bench.trial import TrialRecord, TrialSpec
 from roboscript.perception.modes import parse_mode
@@ -84,8 +84,7 @@ def plan_sweep(sweep: Sweep, out: str | Path) -> list[PlannedRun]:
                     programs=programs,
                 )
                 if sweep.videos != "none":
-                    videos = directory.path / "videos"
-                    pending = [replace(s, video=str(videos / f"{s.task}_trial{s.trial}.mp4")) for s in pending]
+                    pending = [replace(s, video=str(video_path(directory.path, s.task, s.trial))) for s in pending]
                 runs.append(PlannedRun(name, policy, robot, perception, directory, tasks, pending))
     return runs
 

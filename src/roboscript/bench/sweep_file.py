@@ -20,6 +20,7 @@ Every problem is a :class:`SweepFileError` that names the file, the entry and wh
 
 from __future__ import annotations
 
+from collections.abc import Callable
 from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
@@ -27,7 +28,6 @@ from typing import Any
 from roboscript.datafile import DataFileError, Reader, names_a_file, read_data_file
 
 VIDEO_CHOICES = ("none", "failed", "all")
-ROBOTS = ("panda", "ur5e")
 _FIELDS = {
     "sweep", "description", "suite", "study", "tasks", "policies", "robots", "perception", "trials", "seed",
     "timeout", "repair_rounds", "videos",
@@ -90,6 +90,17 @@ def _names(reader: Reader, key: str, default: tuple[str, ...] | None) -> tuple[s
     return tuple(value)
 
 
+def _valid(reader: Reader, names: tuple[str, ...], check: Callable[[str], object]) -> tuple[str, ...]:
+    """``names``, each accepted by ``check``; the first it refuses fails the entry with ``check``'s message (which
+    names the valid choices)."""
+    for name in names:
+        try:
+            check(name)
+        except ValueError as exc:
+            reader.fail(str(exc))
+    return names
+
+
 def _whole(reader: Reader, key: str, default: int, least: int) -> int:
     value = reader.data.get(key, default)
     if isinstance(value, bool) or not isinstance(value, int) or value < least:
@@ -102,6 +113,7 @@ def parse_sweep(data: Any, source: str = "<memory>", base: Path | None = None) -
     Policies, perception modes, suites and studies are checked here too, so a typo fails before any trial runs."""
     from roboscript.bench.benchmark import policy_llm
     from roboscript.perception.modes import parse_mode
+    from roboscript.robots import get_robot
 
     r = Reader(source, "sweep", data, _FIELDS, SweepFileError)
     name = r.string("sweep")
@@ -115,22 +127,9 @@ def parse_sweep(data: Any, source: str = "<memory>", base: Path | None = None) -
         study = _parse_study(source, r.data["study"])
     elif names_a_file(suite) and base is not None and not Path(suite).is_absolute():
         suite = str((base / suite).resolve())
-    robots = _names(r, "robots", ("panda",))
-    for robot in robots:
-        if robot not in ROBOTS:
-            r.fail(f"unknown robot {robot!r}; robots: {', '.join(ROBOTS)}")
-    policies = _names(r, "policies", ("reference",))
-    for policy in policies:
-        try:
-            policy_llm(policy)
-        except ValueError as exc:
-            r.fail(str(exc))
-    perception = _names(r, "perception", ("gt",))
-    for mode in perception:
-        try:
-            parse_mode(mode)
-        except ValueError as exc:
-            r.fail(str(exc))
+    robots = _valid(r, _names(r, "robots", ("panda",)), get_robot)
+    policies = _valid(r, _names(r, "policies", ("reference",)), policy_llm)
+    perception = _valid(r, _names(r, "perception", ("gt",)), parse_mode)
     videos = r.string("videos", "none")
     if videos not in VIDEO_CHOICES:
         r.fail(f"videos must be one of {', '.join(VIDEO_CHOICES)}, got {videos!r}")

@@ -39,9 +39,7 @@ def colour(r: float, g: float, b: float, a: float = 1.0) -> dict:
 
 
 def box_cube(box: Box3D, rgba: tuple[float, float, float, float]) -> dict:
-    centre = (np.asarray(box.lower) + np.asarray(box.upper)) / 2
-    size = np.asarray(box.upper) - np.asarray(box.lower)
-    return {"pose": pose(Transform(centre, np.array([0.0, 0.0, 0.0, 1.0]))), "size": _vector(size),
+    return {"pose": pose(Transform(box.center, np.array([0.0, 0.0, 0.0, 1.0]))), "size": _vector(box.size),
             "color": colour(*rgba)}  # fmt: skip
 
 

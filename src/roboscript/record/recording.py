@@ -160,8 +160,7 @@ class TrialRecording:
             except Exception:  # a name known but not seen yet: nothing to draw
                 continue
             cubes.append(fg.box_cube(box, OBJECT_RGBA))
-            texts.append(fg.label(name, [(box.lower[0] + box.upper[0]) / 2, (box.lower[1] + box.upper[1]) / 2,
-                                         box.upper[2] + 0.02]))  # fmt: skip
+            texts.append(fg.label(name, [*box.center[:2], box.upper[2] + 0.02]))
         clear = [fg.delete_all(time)]
         objects = fg.scene_update([fg.entity(time, "objects", cubes, texts=texts)], clear)
         self.write("/perception/objects", time, objects)

@@ -8,6 +8,7 @@ from collections.abc import Sequence
 from dataclasses import dataclass
 from pathlib import Path
 
+from roboscript.bench.results import read_records, video_path
 from roboscript.bench.trial import TrialRecord
 
 
@@ -34,25 +35,15 @@ class Run:
         return list(self.summary["tasks"])
 
     def failed(self) -> list[TrialRecord]:
-        return sorted((r for r in self.records if not r.success), key=lambda r: (self.tasks.index(r.task)
-                      if r.task in self.tasks else len(self.tasks), r.trial))  # fmt: skip
+        """The trials that did not succeed, in the order of the run's tasks, then by trial."""
+        order = {task: i for i, task in enumerate(self.tasks)}
+        failed = (r for r in self.records if not r.success)
+        return sorted(failed, key=lambda r: (order.get(r.task, len(order)), r.trial))
 
     def video(self, record: TrialRecord) -> Path | None:
-        """The trial's video where one was kept (a sweep's ``videos/<task>_trial<i>.mp4``)."""
-        path = self.path / "videos" / f"{record.task}_trial{record.trial}.mp4"
+        """The trial's video where a sweep kept one."""
+        path = video_path(self.path, record.task, record.trial)
         return path if path.is_file() else None
-
-
-def _records(path: Path) -> list[TrialRecord]:
-    out = []
-    results = path / "results.jsonl"
-    if results.is_file():
-        for line in results.read_text().splitlines():
-            try:
-                out.append(TrialRecord(**json.loads(line)))
-            except (json.JSONDecodeError, TypeError):  # a line cut short by a kill
-                continue
-    return out
 
 
 def find_runs(paths: Sequence[str | Path]) -> list[Run]:
@@ -71,7 +62,7 @@ def find_runs(paths: Sequence[str | Path]) -> list[Run]:
     runs = []
     for path in dict.fromkeys(found):
         summary = json.loads((path / "summary.json").read_text())
-        runs.append(Run(path, summary, _records(path)))
+        runs.append(Run(path, summary, read_records(path / "results.jsonl")))
     labels = [r.label for r in runs]
     for run in runs:  # runs of the same settings (two suites, two sweeps) are told apart by their folders
         if labels.count(run.label) > 1:

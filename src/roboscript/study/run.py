@@ -10,7 +10,7 @@ from pathlib import Path
 
 from roboscript.bench.sweep import Executor, run_sweep
 from roboscript.bench.sweep_file import StudySelection, Sweep
-from roboscript.study.cells import select_cells
+from roboscript.study.cells import Cell
 from roboscript.study.study_file import load_study
 from roboscript.study.tables import CellResult, cell_results, study_csv, study_markdown
 
@@ -60,12 +60,10 @@ def run_study(sweep: Sweep, out: str | Path, executor: Executor, progress: bool 
     started = time.perf_counter()
     runs = run_sweep(sweep, out, executor, progress)
     wall = time.perf_counter() - started
-    s = sweep.study
-    study = load_study(s.name)
-    cells = select_cells(study, s.templates, s.objects, s.grasps)
+    cells = [Cell.from_task_id(task) for task in runs[0].tasks]  # the sweep's tasks are the chosen cells
     records = [r for run in runs for r in run.directory.records() if r.trial < sweep.trials]
     results = cell_results(records, cells)
-    files = write_study_report(study.name, results, out, wall)
+    files = write_study_report(load_study(sweep.study.name).name, results, out, wall)
     return StudyOutcome(results, files, wall)
 
 
