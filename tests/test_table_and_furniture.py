@@ -93,3 +93,42 @@ def test_placing_on_the_table_puts_the_object_aside_on_its_top(tools):
     truth = tools.backend.ground_truth.box("white_and_yellow_mug")
     assert truth.lower[2] == pytest.approx(TABLE_TOP, abs=0.01)  # standing on the table
     assert np.linalg.norm(truth.center[:2] - start[:2]) > 0.1  # somewhere else
+
+
+def test_a_thing_put_aside_leaves_room_for_fingers_to_come_for_it_again():
+    """A gelatin box (2.8 cm high) put aside next to a Rubik's cube would be out of a hand's reach: the fingers of a
+    hand coming from above for it would land on the cube. The spot chosen keeps 3.5 cm clear of its neighbours."""
+    from roboscript.api.placement import ASIDE_CLEARANCE
+    from roboscript.sim.world_file import parse_world
+
+    world = parse_world(
+        {
+            "name": "aside",
+            "objects": [
+                {"name": "green_plate", "type": "green_plate", "position": [-0.37, 0.288], "yaw": 148.6},
+                {"name": "white_saucer", "type": "white_saucer", "position": [-0.028, 0.211], "yaw": 15.7},
+                {"name": "gelatin_box", "type": "gelatin_box", "position": [-0.364, -0.346], "yaw": 61.4},
+                {"name": "green_cup", "type": "green_cup", "position": [-0.023, -0.107], "yaw": 179.0},
+                {"name": "rubiks_cube", "type": "rubiks_cube", "position": [-0.154, -0.336], "yaw": 79.7},
+            ],
+            "randomize": {"position": 0.02, "yaw": 15},
+        }
+    )
+    with MujocoBackend(world, robot="panda", seed=0, randomize=True, settle=0.5) as backend:
+        tools = build_tools(backend, perception="gt")
+        tools.open_gripper()
+        tools.grasp(tools.parse_adaptive_shape_grasp_pose("gelatin_box", preferred_approach_direction=[0, 0, -1]))
+        tools.close_gripper()
+        tools.attach_object("gelatin_box")
+        tools.move_in_direction([0, 0, 1], 0.1)
+        tools.move_to_pose(tools.parse_place_pose("gelatin_box", "table"))
+        tools.open_gripper()
+        tools.detach_object("gelatin_box")
+        tools.move_in_direction([0, 0, 1], 0.1)
+        truth = backend.ground_truth
+        box = truth.box("gelatin_box")
+        for other in ("rubiks_cube", "green_cup", "white_saucer"):
+            near = truth.box(other)
+            gap = np.max(np.maximum(near.lower[:2] - box.upper[:2], box.lower[:2] - near.upper[:2]))
+            assert gap > ASIDE_CLEARANCE - 0.01, (other, gap)  # boxes aligned with the world: a little slack
+        tools.grasp(tools.parse_adaptive_shape_grasp_pose("gelatin_box", preferred_approach_direction=[0, 0, -1]))

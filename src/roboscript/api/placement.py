@@ -42,6 +42,7 @@ PLACE_RETREAT = 0.10  # metres a place pose should leave straight above it: the 
 PLACE_LEANS = (20.0, 35.0)
 # Where things may be put down on the table, from the robot's base: in front of it, clear of it, within reach.
 TABLE_REACH = (np.array([0.15, -0.45]), np.array([0.73, 0.45]))
+ASIDE_CLEARANCE = 0.035  # metres kept around a thing put aside on the table, for the fingers that come for it again
 
 
 class PlacementError(FailureError, RuntimeError):
@@ -186,10 +187,17 @@ class Placer:
         _, yaw, half = self.perception.footprint(name)
         obstacles = [self._footprint(o) for o in others]
         obstacles += [Footprint.of_box(self.perception.box(n)) for n in self.perception.furniture()]
-        spots = spots_in_receptacle(table, half, yaw, box.size[2], obstacles, self.base_xy, near_xy=box.center[:2])
-        radius = float(np.linalg.norm(half)) + MARGIN
-        spots = _clear_of(spots, self.perception.occupied([name]), radius, table.lower[2])
-        return [s for s in spots if np.linalg.norm(s.center[:2] - box.center[:2]) > 0.15]
+        # A thing put aside is usually picked up again (a swap): spots that leave a hand room to come for it
+        # between its neighbours come first, the merely free ones only where there are none.
+        for clearance in (ASIDE_CLEARANCE, 0.0):
+            grown = [Footprint(o.center, o.yaw, o.half + clearance) for o in obstacles]
+            spots = spots_in_receptacle(table, half, yaw, box.size[2], grown, self.base_xy, near_xy=box.center[:2])
+            radius = float(np.linalg.norm(half)) + MARGIN + clearance
+            spots = _clear_of(spots, self.perception.occupied([name]), radius, table.lower[2])
+            spots = [s for s in spots if np.linalg.norm(s.center[:2] - box.center[:2]) > 0.15]
+            if spots:
+                return spots
+        return []
 
     def _spots_in(self, name: str, receptacle: Receptacle, others: list[str]) -> list[PlacementSpot]:
         """Free spots for the held object in a container or a drawer, clear of what is already in it."""
