@@ -2,7 +2,9 @@
 
 ``in(a, b)``: at least 80% of a's box volume inside b's box. ``on(a, b)``: a's bottom above b's bottom and at
 least 80% of a's footprint over b's. ``at(a, p)``: a's centre within 0.1 m of p. ``joint(j) > x``: a drawer or
-door opened beyond x (metres or radians). Any of them negated (the original's ``flag_not``): ``not in(a, b)``.
+door opened beyond x (metres or radians). ``near(a, b)``: a beside b, their footprints at most 8 cm apart and less
+than 20% of either's over the other's (neither on nor in the other). Any of them negated (the original's
+``flag_not``): ``not in(a, b)``.
 """
 
 from __future__ import annotations
@@ -15,6 +17,8 @@ from roboscript.sim.ground_truth import GroundTruth
 
 FRACTION = 0.8
 AT_TOLERANCE = 0.1
+NEAR_GAP = 0.08
+NEAR_OVERLAP = 0.2
 
 
 @dataclass(frozen=True)
@@ -65,13 +69,21 @@ class Check:
             return CheckResult(self.name, inside >= FRACTION, f"{inside:.0%} of its volume inside")
         if self.kind == "on":
             a, b = gt.box(self.subject), gt.box(self.target)
-            overlap = np.prod(
-                np.clip(np.minimum(a.upper[:2], b.upper[:2]) - np.maximum(a.lower[:2], b.lower[:2]), 0, None)
-            )
-            fraction = float(overlap / max(np.prod(a.size[:2]), 1e-12))
+            fraction = _footprint_over(a, b)
             above = bool(a.lower[2] >= b.lower[2] - 0.005)
             return CheckResult(
                 self.name, above and fraction >= FRACTION, f"{fraction:.0%} of its footprint over, above: {above}"
+            )
+        if self.kind == "near":
+            a, b = gt.box(self.subject), gt.box(self.target)
+            gap = float(
+                np.linalg.norm(np.clip(np.maximum(a.lower[:2] - b.upper[:2], b.lower[:2] - a.upper[:2]), 0, None))
+            )
+            over = max(_footprint_over(a, b), _footprint_over(b, a))  # the smaller one's share: in or on either
+            return CheckResult(
+                self.name,
+                gap <= NEAR_GAP and over < NEAR_OVERLAP,
+                f"{gap:.3f} m apart, footprints {over:.0%} overlapping",
             )
         if self.kind == "at":
             distance = float(np.linalg.norm(gt.box(self.subject).center - np.asarray(self.point)))
@@ -79,7 +91,7 @@ class Check:
         if self.kind == "joint":
             value = gt.joint(self.subject).value
             return CheckResult(self.name, value > self.threshold, f"at {value:.3f}")
-        raise ValueError(f"unknown check kind {self.kind!r}; kinds: in, on, at, joint")
+        raise ValueError(f"unknown check kind {self.kind!r}; kinds: in, on, near, at, joint")
 
     def to_dict(self) -> dict:
         return {
@@ -90,6 +102,12 @@ class Check:
             "threshold": self.threshold,
             "negate": self.negate,
         }
+
+
+def _footprint_over(a, b) -> float:
+    """The fraction of box ``a``'s footprint that lies over box ``b``'s."""
+    overlap = np.prod(np.clip(np.minimum(a.upper[:2], b.upper[:2]) - np.maximum(a.lower[:2], b.lower[:2]), 0, None))
+    return float(overlap / max(np.prod(a.size[:2]), 1e-12))
 
 
 def inside(a: str, b: str) -> Check:

@@ -13,6 +13,7 @@ A suite file names the suite and lists its tasks; each task names its world, giv
         checks:
           - in: [apple, footed_bowl]           # 80% of the apple's box inside the bowl's
           - on: [apple, table]                 # over it, resting no lower than its bottom
+          - near: [apple, banana]              # beside it: at most 8 cm apart, not on it
           - {at: apple, start_of: banana}      # within 10 cm of where the banana was at the start
           - {at: apple, position: [0.1, 0.2, 0.86]}
           - {joint: cabinet.drawer_1, above: 0.15}   # opened beyond 15 cm (radians for doors)
@@ -39,7 +40,7 @@ from roboscript.sim.ground_truth import GroundTruth
 from roboscript.sim.world_catalog import load_world
 from roboscript.sim.world_file import TABLE_NAME, WorldFileError, WorldSpec
 
-CHECK_KINDS = ("in", "on", "at", "joint")
+CHECK_KINDS = ("in", "on", "near", "at", "joint")
 _QUERY = re.compile(r"^\s*#?\s*objects\s*=\s*\[(?P<names>[^\]]*)\]\s*;\s*#\s?(?P<instruction>.*)$", re.DOTALL)
 _ID = re.compile(r"^[A-Za-z0-9_.-]+$")
 _SUITE_FIELDS = {"suite", "description", "source", "tasks"}
@@ -73,7 +74,7 @@ class CheckSpec:
 
     def describe(self) -> str:
         """The check in words of the file's form, e.g. ``in(apple, footed_bowl)``, ``at(apple, start of banana)``."""
-        if self.kind in ("in", "on"):
+        if self.kind in ("in", "on", "near"):
             text = f"{self.kind}({self.subject}, {self.target})"
         elif self.kind == "at":
             where = f"start of {self.start_of}" if self.start_of else str(list(self.position or ()))
@@ -172,10 +173,13 @@ def _pair(entry: Reader, kind: str) -> tuple[str, str]:
 
 
 def _receptacles(world: WorldSpec, kind: str) -> list[str]:
-    """What ``in`` may name (containers and drawers) and ``on`` (any object, and the table)."""
+    """What ``in`` may name (containers and drawers), ``on`` (any object, and the table) and ``near`` (any object
+    or piece of furniture)."""
     if kind == "in":
         containers = [o.name for o in world.objects if o.type.container]
         return containers + [p for p in world.part_names() if kind_of(p) == "drawer"]
+    if kind == "near":
+        return [*world.object_names(), *(c.name for c in world.cabinets)]
     return [TABLE_NAME, *world.object_names()]
 
 
@@ -188,20 +192,22 @@ def _parse_check(source: str, entry_name: str, data: Any, world: WorldSpec) -> C
             source, entry_name, f"a check names exactly one of {', '.join(CHECK_KINDS)}; got {sorted(map(str, data))}"
         )
     kind = kinds[0]
-    extra = {"in": set(), "on": set(), "at": {"start_of", "position"}, "joint": {"above"}}[kind]
+    extra = {"in": set(), "on": set(), "near": set(), "at": {"start_of", "position"}, "joint": {"above"}}[kind]
     entry = _entry(source, entry_name, data, {kind, "not", *extra})
     negate = data.get("not", False)
     if not isinstance(negate, bool):
         entry.fail(f"field 'not' must be true or false, got {negate!r}")
-    parse = {"in": _relation_check, "on": _relation_check, "at": _at_check, "joint": _joint_check}[kind]
+    parse = {"in": _relation_check, "on": _relation_check, "near": _relation_check, "at": _at_check}.get(
+        kind, _joint_check
+    )
     return parse(entry, kind, world, negate)
 
 
 def _relation_check(entry: Reader, kind: str, world: WorldSpec, negate: bool) -> CheckSpec:
-    """``in: [object, container or drawer]`` or ``on: [object, object or the table]``."""
+    """``in: [object, container or drawer]``, ``on: [object, object or the table]`` or ``near: [object, object]``."""
     subject, target = _pair(entry, kind)
     _name_check(entry, subject, world.object_names(), "objects")
-    kinds = "containers and drawers" if kind == "in" else "objects and the table"
+    kinds = {"in": "containers and drawers", "on": "objects and the table", "near": "objects and furniture"}[kind]
     _name_check(entry, target, _receptacles(world, kind), kinds)
     if subject == target:
         entry.fail(f"an object cannot be {kind} itself: {subject!r}")
