@@ -103,7 +103,7 @@ def cmd_tasks(args: argparse.Namespace) -> int:
         world = Path(task.world).stem
         rows.append({"id": task.id, "label": task.label, "world": world, "query": task.query, "checks": checks})
         if not args.json:
-            label = f" (original label {task.label})" if task.label and task.label != task.id else ""
+            label = f" (label {task.label})" if task.label and task.label != task.id else ""
             print(f"{task.id}{label}  world {world}")
             print(f"    {task.query}")
             print(f"    checks: {'; '.join(checks)}")
@@ -424,6 +424,7 @@ RECORD_HELP = (
 
 def build_parser() -> argparse.ArgumentParser:
     from roboscript.bench.metrics import METRICS
+    from roboscript.cli_generate import add_generate_commands
     from roboscript.cli_robot import add_replay_command, add_robot_options
     from roboscript.cli_studies import add_study_commands
     from roboscript.demo import DEMO_TASK
@@ -511,6 +512,7 @@ def build_parser() -> argparse.ArgumentParser:
     )
     report.set_defaults(func=cmd_report)
     add_study_commands(sub)
+    add_generate_commands(sub)
     demo = sub.add_parser(
         "demo", help="one task end to end (the configured LLM, else the reference program) with a video and a report"
     )
@@ -552,7 +554,7 @@ def _exit_on_sigterm(signum, frame) -> None:
 def main(argv: list[str] | None = None) -> int:
     args = build_parser().parse_args(argv)
     if (
-        args.command in ("exec", "run", "bench", "sweep", "study")
+        args.command in ("exec", "run", "bench", "sweep", "study", "generate")
         and threading.current_thread() is threading.main_thread()
     ):
         signal.signal(signal.SIGTERM, _exit_on_sigterm)

@@ -22,6 +22,15 @@ def segmentation_palette(n: int) -> np.ndarray:
     return np.vstack([colors, np.zeros((1, 3), dtype=np.uint8)])
 
 
+def top_view(backend: MujocoBackend, width: int, height: int, distance: float = 2.6) -> np.ndarray:
+    """The table seen from straight above, the robot at the image's bottom (RGB, ``height`` x ``width`` x 3)."""
+    renderer = backend.renderer(width, height)
+    top = mujoco.MjvCamera()
+    top.lookat[:] = [0.0, 0.0, backend.sim_world.spec.table.height]
+    top.distance, top.azimuth, top.elevation = distance, 180.0, -89.9
+    return renderer.rgb(backend.sim_world.data, top)
+
+
 def write_snapshot(backend: MujocoBackend, out: Path) -> list[Path]:
     """Writes every camera's images and ``cameras.json`` (calibration, segmentation labels) into ``out``, plus
     ``top_view.png`` and ``overview.png``; returns the images written."""
@@ -49,11 +58,7 @@ def write_snapshot(backend: MujocoBackend, out: Path) -> list[Path]:
             "camera_to_world": frame.extrinsics.matrix().tolist(),
             "convention": "OpenCV (x right, y down, z forward); depth PNG in millimetres",
         }
-    renderer = backend.renderer(*TOP_VIEW_SIZE)
-    top = mujoco.MjvCamera()
-    top.lookat[:] = [0.0, 0.0, world.spec.table.height]
-    top.distance, top.azimuth, top.elevation = 2.6, 180.0, -89.9
-    save(renderer.rgb(world.data, top), "top_view.png")
+    save(top_view(backend, *TOP_VIEW_SIZE), "top_view.png")
     save(backend.render("overview", *TOP_VIEW_SIZE), "overview.png")
     (out / "cameras.json").write_text(json.dumps(meta, indent=2))
     return written

@@ -338,6 +338,13 @@ def _object_footprint(o: ObjectPlacement, center: np.ndarray) -> _Footprint:
     return _Footprint(f"objects {o.name!r}", center + world_offset, (upper[:2] - lower[:2]) / 2, o.yaw)
 
 
+def placements_overlap(a: ObjectPlacement, b: ObjectPlacement, margin: float) -> bool:
+    """Whether two objects on the table come closer than ``margin`` (their footprints as turned rectangles)."""
+    return _overlap(
+        _object_footprint(a, np.array(a.position[:2])), _object_footprint(b, np.array(b.position[:2])), margin
+    )
+
+
 def _entry(world: WorldSpec, name: str) -> str:
     index = world.object_names().index(name)
     return f"objects[{index}] {name!r}"

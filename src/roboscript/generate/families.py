@@ -1,0 +1,269 @@
+"""Template task families: a task written once for any world where it makes sense, with its checks and its oracle
+program following from the template.
+
+Each family looks at a world (:class:`~roboscript.generate.scene.Scene`), picks what its task is about among the
+things that fit (an object small enough for the bowl, two blocks that stack, a drawer of a cabinet) and returns a
+:class:`TemplateTask`, or None where the world offers nothing for it. Choices are drawn from ``rng``, so a world and
+a seed give the same task.
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Callable
+from dataclasses import dataclass
+
+import numpy as np
+
+from roboscript.generate.programs import OPEN_DRAWER, SPOT_BESIDE, Program, move_into, move_to, words
+from roboscript.generate.scene import DRAWER_HEIGHT_LIMIT, KINDS, Scene, fits, in_or_on, kind_of_type, room_for
+
+ORDINALS = ("top", "second", "third", "fourth")
+NEAR_GAP = 0.03  # how far beside its target the oracle puts a thing (the `near` check allows 8 cm)
+
+
+@dataclass(frozen=True)
+class TemplateTask:
+    """One instance of a family: the instruction, the checks (in the task file's form) and the oracle program."""
+
+    family: str
+    instruction: str
+    checks: tuple[dict, ...]
+    program: str
+
+
+Family = Callable[[Scene, np.random.Generator], "TemplateTask | None"]
+
+
+def _one(rng: np.random.Generator, items: list):
+    return items[int(rng.integers(len(items)))]
+
+
+def _say(rng: np.random.Generator, phrasings: tuple[str, ...], **names: str) -> str:
+    return _one(rng, list(phrasings)).format(**{k: words(v) for k, v in names.items()})
+
+
+def _put_into(scene: Scene, thing: str, receptacle: str) -> dict:
+    return {in_or_on(scene.type(thing), scene.type(receptacle)): [thing, receptacle]}
+
+
+def into_container(scene: Scene, rng: np.random.Generator) -> TemplateTask | None:
+    """Put a thing into a bowl or a basket."""
+    pairs = [
+        (t, c)
+        for c in scene.containers
+        for t in scene.on_table
+        if room_for([scene.type(n) for n in [*scene.holding(c), t]], scene.type(c))
+    ]
+    if not pairs:
+        return None
+    thing, container = _one(rng, pairs)
+    phrasings = ("put the {t} into the {c}", "place the {t} in the {c}", "move the {t} into the {c}")
+    instruction = _say(rng, phrasings, t=thing, c=container)
+    program = move_into(Program(instruction), thing, container)
+    return TemplateTask("into_container", instruction, (_put_into(scene, thing, container),), program.text())
+
+
+def onto_plate(scene: Scene, rng: np.random.Generator) -> TemplateTask | None:
+    """Put a thing onto a plate or a saucer."""
+    pairs = [
+        (t, p)
+        for p in scene.plates
+        if not scene.holding(p)
+        for t in scene.on_table
+        if fits(scene.type(t), scene.type(p))
+    ]
+    if not pairs:
+        return None
+    thing, plate = _one(rng, pairs)
+    phrasings = ("put the {t} on the {p}", "place the {t} onto the {p}", "set the {t} down on the {p}")
+    instruction = _say(rng, phrasings, t=thing, p=plate)
+    program = move_into(Program(instruction), thing, plate, onto=True)
+    return TemplateTask("onto_plate", instruction, ({"on": [thing, plate]},), program.text())
+
+
+def into_drawer(scene: Scene, rng: np.random.Generator) -> TemplateTask | None:
+    """Open a drawer of the cabinet and put a thing into it."""
+    things = [t for t in scene.on_table if scene.type(t).size[2] <= DRAWER_HEIGHT_LIMIT]
+    if not scene.drawers or not things:
+        return None
+    drawer, thing = _one(rng, scene.drawers), _one(rng, things)
+    handle = scene.handle_of(drawer)
+    ordinal = ORDINALS[scene.drawers.index(drawer)]
+    instruction = _one(
+        rng,
+        [
+            f"open the {ordinal} drawer of the cabinet and put the {words(thing)} into it",
+            f"put the {words(thing)} into the {ordinal} drawer; the drawer is closed, open it first",
+        ],
+    )
+    program = Program(instruction).use(OPEN_DRAWER)
+    program.step(
+        f"The drawer is closed: pull it open by its handle ({handle}).", f"open_drawer({drawer!r}, {handle!r})"
+    )
+    move_into(program, thing, drawer)
+    checks = ({"joint": drawer, "above": 0.1}, {"in": [thing, drawer]})
+    return TemplateTask("into_drawer", instruction, checks, program.text())
+
+
+def stack(scene: Scene, rng: np.random.Generator) -> TemplateTask | None:
+    """Stack a block or a small box on top of a larger box or block."""
+    flat_topped = [t for t in scene.on_table if scene.type(t).shape == "box" and scene.type(t).size[2] <= 0.07]
+    pairs = []
+    for top in flat_topped:
+        diagonal = math.hypot(*scene.type(top).size[:2])
+        for base in flat_topped:
+            # In any turn, the top's box stays over the base's: the `on` check compares boxes aligned with the world.
+            if base != top and diagonal <= float(min(scene.type(base).size[:2])) + 0.003:
+                pairs.append((top, base))
+    if not pairs:
+        return None
+    top, base = _one(rng, pairs)
+    phrasings = ("stack the {t} on top of the {b}", "put the {t} on the {b}", "place the {t} on top of the {b}")
+    instruction = _say(rng, phrasings, t=top, b=base)
+    program = Program(instruction)
+    program.step(
+        f"The {words(base)}'s top is where the {words(top)} goes.", f"base = get_object_center_position({base!r})"
+    )
+    move_to(program, top, "base", f"Pick up the {words(top)} and set it down on the {words(base)}.")
+    return TemplateTask("stack", instruction, ({"on": [top, base]},), program.text())
+
+
+def swap(scene: Scene, rng: np.random.Generator) -> TemplateTask | None:
+    """Swap the places of two things on the table."""
+    things = scene.on_table
+    pairs = [
+        (a, b) for i, a in enumerate(things) for b in things[i + 1 :] if abs(scene.radius(a) - scene.radius(b)) <= 0.03
+    ]
+    if not pairs:
+        return None
+    a, b = _one(rng, pairs)
+    phrasings = ("swap the positions of the {a} and the {b}", "exchange the places of the {a} and the {b}")
+    instruction = _say(rng, phrasings, a=a, b=b)
+    program = Program(instruction)
+    program.step(
+        f"Remember where the {words(a)} and the {words(b)} are now.",
+        f"{a}_position = get_object_center_position({a!r})",
+        f"{b}_position = get_object_center_position({b!r})",
+    )
+    move_into(program, a, "table").plan[-1] = f"Put the {words(a)} aside on the table, out of the way."
+    move_to(program, b, f"{a}_position", f"Put the {words(b)} where the {words(a)} was.")
+    move_to(program, a, f"{b}_position", f"Put the {words(a)} where the {words(b)} was.")
+    checks = ({"at": a, "start_of": b}, {"at": b, "start_of": a})
+    return TemplateTask("swap", instruction, checks, program.text())
+
+
+def _groups(scene: Scene, by: str) -> dict[str, list[str]]:
+    """Things on the table by colour or by kind."""
+    groups: dict[str, list[str]] = {}
+    for thing in scene.on_table:
+        key = scene.type(thing).color if by == "colour" else kind_of_type(scene.type(thing))
+        if key is not None:
+            groups.setdefault(key, []).append(thing)
+    return groups
+
+
+def sort(scene: Scene, rng: np.random.Generator) -> TemplateTask | None:
+    """Sort things by colour (each onto the receptacle of its colour) or by kind (one kind into each receptacle)."""
+    options = []
+    colours = _groups(scene, "colour")
+    for receptacle in scene.receptacles:
+        group = colours.get(scene.type(receptacle).color, [])
+        if group and not scene.holding(receptacle) and room_for([scene.type(t) for t in group], scene.type(receptacle)):
+            options.append(("colour", scene.type(receptacle).color, group, receptacle))
+    kinds = _groups(scene, "kind")
+    for kind, group in kinds.items():
+        for receptacle in scene.receptacles:
+            empty = not scene.holding(receptacle)
+            if len(group) >= 2 and empty and room_for([scene.type(t) for t in group], scene.type(receptacle)):
+                options.append(("kind", kind, group, receptacle))
+    if not options:
+        return None
+    by, key, group, receptacle = _one(rng, options)
+    # A second group sorted into another receptacle, where the world has one.
+    seconds = [o for o in options if o[0] == by and o[1] != key and o[3] != receptacle]
+    chosen = [(key, group, receptacle)] + ([_one(rng, seconds)[1:]] if seconds else [])
+    said = []
+    for key, _, receptacle in chosen:
+        what = f"the {words(key)} objects" if by == "colour" else f"the {KINDS[key][0]}"
+        said.append(f"{what} {'on' if scene.type(receptacle).shape == 'flat' else 'into'} the {words(receptacle)}")
+    instruction = f"sort the objects on the table by {by}: put " + " and ".join(said)
+    program = Program(instruction)
+    checks = []
+    for _, group, receptacle in chosen:
+        for thing in group:
+            move_into(program, thing, receptacle, onto=scene.type(receptacle).shape == "flat")
+            checks.append(_put_into(scene, thing, receptacle))
+    return TemplateTask(f"sort_by_{by}", instruction, tuple(checks), program.text())
+
+
+def clear_table(scene: Scene, rng: np.random.Generator) -> TemplateTask | None:
+    """Clear the table: every thing lying on it into one container."""
+    things = scene.on_table
+    options = [
+        c
+        for c in scene.containers
+        if len(things) >= 2 and room_for([scene.type(t) for t in [*scene.holding(c), *things]], scene.type(c))
+    ]
+    if not options:
+        return None
+    container = _one(rng, options)
+    left = sorted({scene.type(r).category for r in scene.receptacles})
+    plural = {"basket": "baskets", "bowl": "bowls", "footed bowl": "bowls", "plate": "plates", "saucer": "saucers"}
+    leaving = " and ".join(dict.fromkeys(plural.get(c, c) for c in left))
+    instruction = (
+        f"clear the table by putting every object lying on it into the {words(container)}; "
+        f"leave the {leaving} where they are"
+    )
+    program = Program(instruction)
+    for thing in things:
+        move_into(program, thing, container)
+    checks = tuple(_put_into(scene, t, container) for t in things)
+    return TemplateTask("clear_table", instruction, checks, program.text())
+
+
+def _free_beside(scene: Scene, thing: str, target: str) -> bool:
+    """Whether some side of ``target`` has room for ``thing`` (as the oracle's spot_beside looks for it)."""
+    radius = scene.radius(thing)
+    others = [(scene.position(o), scene.radius(o)) for o in scene.placements if o not in (thing, target)]
+    others += [(np.array(c.position), math.hypot(c.depth / 2 + 0.05, c.width / 2)) for c in scene.world.cabinets]
+    center = scene.position(target)
+    for side in ([0, 1], [0, -1], [-1, 0], [1, 0]):
+        spot = center + np.array(side) * (scene.radius(target) + radius + NEAR_GAP)
+        if not 0.3 < np.linalg.norm(spot - np.array([-0.45, 0.0])) < 0.68:
+            continue
+        if all(np.linalg.norm(spot - p) > radius + r + 0.01 for p, r in others):
+            return True
+    return False
+
+
+def next_to(scene: Scene, rng: np.random.Generator) -> TemplateTask | None:
+    """Put a thing next to another one."""
+    targets = [o.name for o in scene.world.objects if o.support_kind == "table"]
+    pairs = [(t, g) for t in scene.on_table for g in targets if g != t and _free_beside(scene, t, g)]
+    if not pairs:
+        return None
+    thing, target = _one(rng, pairs)
+    phrasings = ("put the {t} next to the {g}", "place the {t} beside the {g}", "move the {t} next to the {g}")
+    instruction = _say(rng, phrasings, t=thing, g=target)
+    obstacles = [n for n in scene.world.object_names() if n not in (thing, target)]
+    obstacles += [c.name for c in scene.world.cabinets]
+    program = Program(instruction).use(SPOT_BESIDE)
+    program.step(
+        f"Find a free place on the table beside the {words(target)}.",
+        f"spot = spot_beside({target!r}, {thing!r}, {obstacles!r})",
+    )
+    move_to(program, thing, "spot", f"Pick up the {words(thing)} and put it down there.")
+    return TemplateTask("next_to", instruction, ({"near": [thing, target]},), program.text())
+
+
+FAMILIES: dict[str, Family] = {
+    "into_container": into_container,
+    "onto_plate": onto_plate,
+    "into_drawer": into_drawer,
+    "stack": stack,
+    "swap": swap,
+    "sort": sort,
+    "clear_table": clear_table,
+    "next_to": next_to,
+}

@@ -1,0 +1,119 @@
+"""What a world offers template tasks: the things on the table, the receptacles and what fits into each, the
+cabinet's drawers, colours and kinds. Geometry only, from the world file (no simulation)."""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+from functools import cached_property
+
+import numpy as np
+
+from roboscript.names import kind_of
+from roboscript.objects import ObjectType
+from roboscript.sim.world_file import ObjectPlacement, WorldSpec
+
+# Kinds that sorting by kind speaks of, by library category; the plural is what an instruction says.
+KINDS: dict[str, tuple[str, frozenset[str]]] = {
+    "fruit": (
+        "fruits",
+        frozenset({"apple", "orange", "lemon", "lime", "plum", "peach", "strawberry", "banana", "pear"}),
+    ),
+    "ball": ("balls", frozenset({"tennis ball", "baseball", "golf ball"})),
+    "block": ("blocks", frozenset({"block", "cube"})),
+    "box": ("boxes", frozenset({"box"})),
+    "toy": ("toy vehicles", frozenset({"toy bus", "toy car"})),
+    "drinkware": ("cups and mugs", frozenset({"cup", "mug"})),
+    "bottle": ("bottles and cans", frozenset({"bottle", "can"})),
+}
+DRAWER_HEIGHT_LIMIT = 0.1  # taller things stand out of a drawer (the object-shape study: 50-79% inside)
+DRAWERS_USED = 2  # the top two: the lower ones are low for a hand coming from above
+
+
+def kind_of_type(t: ObjectType) -> str | None:
+    """The sorting kind of a library type (``fruit`` for an apple), None if it has none."""
+    return next((k for k, (_, cats) in KINDS.items() if t.category in cats), None)
+
+
+def in_or_on(thing: ObjectType, receptacle: ObjectType) -> str:
+    """The check that says ``thing`` was put into ``receptacle``: ``in`` (80% of its box inside the receptacle's)
+    where it sinks deep enough for that, else ``on`` (resting over it): an apple in a shallow bowl, on a plate."""
+    if receptacle.shape in ("flat",) or receptacle.interior is None:
+        return "on"
+    floor = receptacle.interior[0][2]
+    depth = float(receptacle.bounds[1][2]) - floor
+    return "in" if 0.8 * float(thing.size[2]) <= depth - 0.005 else "on"
+
+
+def fits(thing: ObjectType, receptacle: ObjectType, margin: float = 0.01) -> bool:
+    """Whether ``thing`` stands inside ``receptacle``'s interior with ``margin`` to spare on each side, in the
+    worst turn (its diagonal)."""
+    lower, upper = receptacle.interior
+    inner = min(upper[0] - lower[0], upper[1] - lower[1])
+    return math.hypot(*thing.size[:2]) + 2 * margin <= inner or bool(
+        np.all(np.sort(thing.size[:2]) + 2 * margin + 0.02 <= np.sort(np.subtract(upper, lower)[:2]))
+    )
+
+
+def room_for(things: list[ObjectType], receptacle: ObjectType) -> bool:
+    """Whether all of ``things`` fit into ``receptacle`` side by side, each with a margin (at most 60% of its
+    floor covered)."""
+    lower, upper = receptacle.interior
+    floor = (upper[0] - lower[0]) * (upper[1] - lower[1])
+    taken = sum((t.size[0] + 0.02) * (t.size[1] + 0.02) for t in things)
+    return all(fits(t, receptacle) for t in things) and taken <= 0.6 * floor
+
+
+@dataclass(frozen=True)
+class Scene:
+    """A world as template tasks see it."""
+
+    world: WorldSpec
+
+    @cached_property
+    def placements(self) -> dict[str, ObjectPlacement]:
+        return {o.name: o for o in self.world.objects}
+
+    def type(self, name: str) -> ObjectType:
+        return self.placements[name].type
+
+    @cached_property
+    def on_table(self) -> list[str]:
+        """Pickable things standing on the table itself (not in or on a receptacle)."""
+        return [o.name for o in self.world.objects if o.type.pickable and o.support_kind == "table"]
+
+    @cached_property
+    def receptacles(self) -> list[str]:
+        """Plates, saucers, bowls and baskets (what tasks put things into or onto)."""
+        return [o.name for o in self.world.objects if not o.type.pickable and o.type.interior is not None]
+
+    @cached_property
+    def containers(self) -> list[str]:
+        """Receptacles with walls: bowls and baskets."""
+        return [r for r in self.receptacles if self.type(r).shape != "flat"]
+
+    @cached_property
+    def plates(self) -> list[str]:
+        """Flat receptacles: plates and saucers."""
+        return [r for r in self.receptacles if self.type(r).shape == "flat"]
+
+    def holding(self, receptacle: str) -> list[str]:
+        """What starts in or on ``receptacle``."""
+        return [o.name for o in self.world.objects if o.support == receptacle]
+
+    @cached_property
+    def drawers(self) -> list[str]:
+        drawers = [p for p in self.world.part_names() if kind_of(p) == "drawer"]
+        return drawers[:DRAWERS_USED]
+
+    def handle_of(self, drawer: str) -> str:
+        """The handle of ``drawer``: handles are numbered by row, drawers among drawers."""
+        cabinet = next(c for c in self.world.cabinets if drawer.startswith(f"{c.name}."))
+        parts = cabinet.part_names()
+        return parts[parts.index(drawer) + 1]
+
+    def position(self, name: str) -> np.ndarray:
+        return np.array(self.placements[name].position[:2])
+
+    def radius(self, name: str) -> float:
+        return self.type(name).footprint_radius

@@ -1,0 +1,35 @@
+# Task: exchange the places of the white mug and the brown mug
+# Plan:
+# 1. Remember where the white mug and the brown mug are now.
+# 2. Put the white mug aside on the table, out of the way.
+# 3. Put the brown mug where the white mug was.
+# 4. Put the white mug where the brown mug was.
+detect_objects()
+
+
+def pick(name):
+    """Grasps `name` from above where its shape allows, and lifts it clear of what is around it."""
+    open_gripper()
+    grasp_pose = parse_adaptive_shape_grasp_pose(object_name=name, preferred_approach_direction=[0, 0, -1])
+    grasp(grasp_pose)
+    close_gripper()
+    attach_object(name)
+    move_in_direction(direction=[0, 0, 1], distance=0.1)
+
+
+def put(name, place_pose):
+    """Carries the held `name` to `place_pose`, lets go of it and moves the hand up and away."""
+    move_to_pose(place_pose)
+    open_gripper()
+    detach_object(name)
+    move_in_direction(direction=[0, 0, 1], distance=0.1)
+
+
+white_mug_position = get_object_center_position('white_mug')
+brown_mug_position = get_object_center_position('brown_mug')
+pick('white_mug')
+put('white_mug', parse_place_pose(object_name='white_mug', receptacle_name='table'))
+pick('brown_mug')
+put('brown_mug', parse_place_pose(object_name='brown_mug', position=white_mug_position))
+pick('white_mug')
+put('white_mug', parse_place_pose(object_name='white_mug', position=brown_mug_position))

@@ -1,0 +1,35 @@
+# Task: swap the positions of the white mug and the white and pink box
+# Plan:
+# 1. Remember where the white mug and the white and pink box are now.
+# 2. Put the white mug aside on the table, out of the way.
+# 3. Put the white and pink box where the white mug was.
+# 4. Put the white mug where the white and pink box was.
+detect_objects()
+
+
+def pick(name):
+    """Grasps `name` from above where its shape allows, and lifts it clear of what is around it."""
+    open_gripper()
+    grasp_pose = parse_adaptive_shape_grasp_pose(object_name=name, preferred_approach_direction=[0, 0, -1])
+    grasp(grasp_pose)
+    close_gripper()
+    attach_object(name)
+    move_in_direction(direction=[0, 0, 1], distance=0.1)
+
+
+def put(name, place_pose):
+    """Carries the held `name` to `place_pose`, lets go of it and moves the hand up and away."""
+    move_to_pose(place_pose)
+    open_gripper()
+    detach_object(name)
+    move_in_direction(direction=[0, 0, 1], distance=0.1)
+
+
+white_mug_position = get_object_center_position('white_mug')
+white_and_pink_box_position = get_object_center_position('white_and_pink_box')
+pick('white_mug')
+put('white_mug', parse_place_pose(object_name='white_mug', receptacle_name='table'))
+pick('white_and_pink_box')
+put('white_and_pink_box', parse_place_pose(object_name='white_and_pink_box', position=white_mug_position))
+pick('white_mug')
+put('white_mug', parse_place_pose(object_name='white_mug', position=white_and_pink_box_position))

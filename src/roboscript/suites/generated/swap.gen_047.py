@@ -1,0 +1,35 @@
+# Task: swap the positions of the blue box and the white and pink box
+# Plan:
+# 1. Remember where the blue box and the white and pink box are now.
+# 2. Put the blue box aside on the table, out of the way.
+# 3. Put the white and pink box where the blue box was.
+# 4. Put the blue box where the white and pink box was.
+detect_objects()
+
+
+def pick(name):
+    """Grasps `name` from above where its shape allows, and lifts it clear of what is around it."""
+    open_gripper()
+    grasp_pose = parse_adaptive_shape_grasp_pose(object_name=name, preferred_approach_direction=[0, 0, -1])
+    grasp(grasp_pose)
+    close_gripper()
+    attach_object(name)
+    move_in_direction(direction=[0, 0, 1], distance=0.1)
+
+
+def put(name, place_pose):
+    """Carries the held `name` to `place_pose`, lets go of it and moves the hand up and away."""
+    move_to_pose(place_pose)
+    open_gripper()
+    detach_object(name)
+    move_in_direction(direction=[0, 0, 1], distance=0.1)
+
+
+blue_box_position = get_object_center_position('blue_box')
+white_and_pink_box_position = get_object_center_position('white_and_pink_box')
+pick('blue_box')
+put('blue_box', parse_place_pose(object_name='blue_box', receptacle_name='table'))
+pick('white_and_pink_box')
+put('white_and_pink_box', parse_place_pose(object_name='white_and_pink_box', position=blue_box_position))
+pick('blue_box')
+put('blue_box', parse_place_pose(object_name='blue_box', position=white_and_pink_box_position))

@@ -1,0 +1,35 @@
+# Task: exchange the places of the toy bus and the pear
+# Plan:
+# 1. Remember where the toy bus and the pear are now.
+# 2. Put the toy bus aside on the table, out of the way.
+# 3. Put the pear where the toy bus was.
+# 4. Put the toy bus where the pear was.
+detect_objects()
+
+
+def pick(name):
+    """Grasps `name` from above where its shape allows, and lifts it clear of what is around it."""
+    open_gripper()
+    grasp_pose = parse_adaptive_shape_grasp_pose(object_name=name, preferred_approach_direction=[0, 0, -1])
+    grasp(grasp_pose)
+    close_gripper()
+    attach_object(name)
+    move_in_direction(direction=[0, 0, 1], distance=0.1)
+
+
+def put(name, place_pose):
+    """Carries the held `name` to `place_pose`, lets go of it and moves the hand up and away."""
+    move_to_pose(place_pose)
+    open_gripper()
+    detach_object(name)
+    move_in_direction(direction=[0, 0, 1], distance=0.1)
+
+
+toy_bus_position = get_object_center_position('toy_bus')
+pear_position = get_object_center_position('pear')
+pick('toy_bus')
+put('toy_bus', parse_place_pose(object_name='toy_bus', receptacle_name='table'))
+pick('pear')
+put('pear', parse_place_pose(object_name='pear', position=toy_bus_position))
+pick('toy_bus')
+put('toy_bus', parse_place_pose(object_name='toy_bus', position=pear_position))
