@@ -132,3 +132,36 @@ def test_a_thing_put_aside_leaves_room_for_fingers_to_come_for_it_again():
             gap = np.max(np.maximum(near.lower[:2] - box.upper[:2], box.lower[:2] - near.upper[:2]))
             assert gap > ASIDE_CLEARANCE - 0.01, (other, gap)  # boxes aligned with the world: a little slack
         tools.grasp(tools.parse_adaptive_shape_grasp_pose("gelatin_box", preferred_approach_direction=[0, 0, -1]))
+
+
+def test_a_pear_set_down_beside_a_plate_stands():
+    """A pear (10.7 cm tall) put at a position next to a plate: released no higher than it must be to clear the
+    plate's rim, it stands on its flattened bottom (a pear of two spheres balanced on a point toppled)."""
+    from roboscript.sim.world_file import parse_world
+
+    world = parse_world(
+        {
+            "name": "pear",
+            "objects": [
+                {"name": "pear", "type": "pear", "position": [-0.05, -0.25]},
+                {"name": "white_plate", "type": "white_plate", "position": [0.0, 0.15]},
+            ],
+            "randomize": {"position": 0.03, "yaw": 180},
+        }
+    )
+    with MujocoBackend(world, robot="panda", seed=1, randomize=True, settle=0.5) as backend:
+        tools = build_tools(backend, perception="gt")
+        tools.open_gripper()
+        tools.grasp(tools.parse_adaptive_shape_grasp_pose("pear", preferred_approach_direction=[0, 0, -1]))
+        tools.close_gripper()
+        tools.attach_object("pear")
+        tools.move_in_direction([0, 0, 1], 0.1)
+        tools.move_to_pose(tools.parse_place_pose("pear", position=[0.0, 0.0, 0.0]))
+        assert backend.ground_truth.box("pear").lower[2] < TABLE_TOP + 0.025  # released low
+        tools.open_gripper()
+        tools.detach_object("pear")
+        tools.move_in_direction([0, 0, 1], 0.1)
+        backend.wait(1.0)
+        upright = backend.ground_truth.pose("pear").rotation[2, 2]
+        assert upright > np.cos(np.radians(15)), np.degrees(np.arccos(upright))
+        assert np.linalg.norm(backend.ground_truth.box("pear").center[:2]) < 0.02

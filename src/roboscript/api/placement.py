@@ -35,6 +35,8 @@ PLACE_IK_QUICK = (8, 24)  # IK attempts (wanted, at most) per place pose screene
 PLACE_IK_WIDE = (24, 200)  # the same where the quick screen reached no spot
 PLACE_IK_BUDGET = 96  # IK screens per parse_place_pose call (each costs a few milliseconds to ~0.1 s)
 PLACE_RAISE_LIMIT = 0.04  # metres a place pose is raised at most when the held object has sunk in the hand
+# How much higher than resting a held object is tried, lowest first: a longer drop topples tall things.
+PLACE_LIFTS = (0.0, 0.01, 0.02, 0.05, 0.1)
 PLACE_RETREAT = 0.10  # metres a place pose should leave straight above it: the customary pre-place approach and retreat
 # Where no upright pose reaches any spot (a drawer beneath another, at the edge of the arm's reach), the hand leans
 # this far (degrees) toward the spot's open side, the held object with it, and lets go of it there: an object
@@ -43,6 +45,8 @@ PLACE_LEANS = (20.0, 35.0)
 # Where things may be put down on the table, from the robot's base: in front of it, clear of it, within reach.
 TABLE_REACH = (np.array([0.15, -0.45]), np.array([0.73, 0.45]))
 ASIDE_CLEARANCE = 0.035  # metres kept around a thing put aside on the table, for the fingers that come for it again
+# Nearer than this to the base, the Panda lifting a thing straight up from a grasp from above meets its joint limits.
+ASIDE_MIN_REACH = 0.3
 
 
 class PlacementError(FailureError, RuntimeError):
@@ -177,7 +181,7 @@ class Placer:
         size = self.perception.box(name).size
         below = [self.perception.box(o) for o in others]
         table_top = float(self.perception.box(TABLE).upper[2])
-        support = max([table_top] + [b.upper[2] for b in below if _overlaps_xy(b, target[:2], size[:2] / 2)])
+        support = max([table_top] + [b.upper[2] for b in below if _bears(b, target[:2], size[:2] / 2)])
         return spot_at(target, size, support)
 
     def _spots_aside(self, name: str, table: Receptacle, others: list[str]) -> list[PlacementSpot]:
@@ -188,13 +192,19 @@ class Placer:
         obstacles = [self._footprint(o) for o in others]
         obstacles += [Footprint.of_box(self.perception.box(n)) for n in self.perception.furniture()]
         # A thing put aside is usually picked up again (a swap): spots that leave a hand room to come for it
-        # between its neighbours come first, the merely free ones only where there are none.
-        for clearance in (ASIDE_CLEARANCE, 0.0):
+        # between its neighbours, and the arm room to lift it (not folded against its own base), come first; the
+        # merely free ones only where there are none.
+        for clearance, reach in ((ASIDE_CLEARANCE, ASIDE_MIN_REACH), (0.0, ASIDE_MIN_REACH), (0.0, 0.0)):
             grown = [Footprint(o.center, o.yaw, o.half + clearance) for o in obstacles]
             spots = spots_in_receptacle(table, half, yaw, box.size[2], grown, self.base_xy, near_xy=box.center[:2])
             radius = float(np.linalg.norm(half)) + MARGIN + clearance
             spots = _clear_of(spots, self.perception.occupied([name]), radius, table.lower[2])
-            spots = [s for s in spots if np.linalg.norm(s.center[:2] - box.center[:2]) > 0.15]
+            spots = [
+                s
+                for s in spots
+                if np.linalg.norm(s.center[:2] - box.center[:2]) > 0.15
+                and np.linalg.norm(s.center[:2] - self.base_xy) >= reach
+            ]
             if spots:
                 return spots
         return []
@@ -293,7 +303,7 @@ class Placer:
                 continue
             tried.append(spot)
             found.tried += 1
-            for lift, lean in [(lift, lean) for lift in (0.0, 0.02, 0.05, 0.1) for lean in leans]:
+            for lift, lean in [(lift, lean) for lift in PLACE_LIFTS for lean in leans]:
                 reached = self._place_options(carried, spot, lift, lean, q, found.errors, search)
                 budget -= len(spot.turns)
                 options = [(self._retreat_room(pose, g), pose, g) for pose, goals in reached for g in goals]
@@ -392,8 +402,14 @@ def _same_turn(a: float, b: float) -> bool:
     return abs(math.remainder(a - b, math.pi)) < 0.1
 
 
-def _overlaps_xy(box: Box3D, center: np.ndarray, half: np.ndarray) -> bool:
-    return bool(np.all(np.abs(box.center[:2] - center) < box.size[:2] / 2 + half))
+def _bears(box: Box3D, center: np.ndarray, half: np.ndarray) -> bool:
+    """Whether what ``box`` bounds is under a footprint at ``center`` (half-extents ``half``): the footprint's
+    middle is over it, or half the footprint is. A sliver over a round plate's box corner is beside the plate,
+    not on it: counting it would release the object from the plate's height, a drop that topples tall things."""
+    if np.all(np.abs(box.center[:2] - center) <= box.size[:2] / 2):
+        return True
+    overlap = np.clip(np.minimum(box.upper[:2], center + half) - np.maximum(box.lower[:2], center - half), 0, None)
+    return bool(np.prod(overlap) >= 0.5 * np.prod(2 * half))
 
 
 def _within(box: Box3D, receptacle: Receptacle) -> bool:

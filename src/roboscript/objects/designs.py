@@ -72,7 +72,10 @@ def banana() -> tuple[Part, ...]:
 
 
 def pear() -> tuple[Part, ...]:
+    # Two spheres alone put the centre of mass above the lower one's centre: it would stand only balanced, and
+    # fall over when set down. A real pear stands on a flattened bottom, as the disk gives it.
     return (
+        Part("cylinder", (0.022, 0.003), (0.0, 0.0, 0.003)),
         Part("sphere", (0.034,), (0.0, 0.0, 0.034)),
         Part("sphere", (0.024,), (0.0, 0.0, 0.07)),
         Part("capsule", (0.003, 0.006), (0.0, 0.0, 0.098), rgba=COLORS["brown"]),
