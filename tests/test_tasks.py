@@ -114,7 +114,7 @@ def _suite(**task) -> dict:
         ({"checks": []}, "field 'checks' must be a non-empty list"),
         ({"checks": [{"in": ["aple", "footed_bowl"]}]}, "checks[0]: 'aple' is not one of the world's objects; did you"),
         ({"checks": [{"in": ["apple", "table"]}]}, "'table' is not one of the world's containers and drawers"),
-        ({"checks": [{"near": ["apple", "table"]}]}, "a check names exactly one of in, on, at, joint"),
+        ({"checks": [{"beside": ["apple", "table"]}]}, "a check names exactly one of in, on, near, at, joint"),
         ({"checks": [{"at": "apple"}]}, "'at' takes either start_of: OBJECT"),
         ({"checks": [{"joint": "cabinet.drawer_7", "above": 0.1}]}, "'cabinet.drawer_7' is not one of the world's"),
         ({"checks": [{"on": ["apple", "table"], "not": "yes"}]}, "field 'not' must be true or false"),

@@ -63,8 +63,9 @@ def export_records(suite_file: Path, records: Sequence[TrialRecord], policy: str
     llm = policy_llm(policy)
     worlds = out / "worlds"
     worlds.mkdir(parents=True, exist_ok=True)
+    order = {task_id: k for k, task_id in enumerate(tasks)}
     kept = []
-    for record in records:
+    for record in sorted(records, key=lambda r: (order.get(r.task, len(order)), r.robot, r.trial)):
         if not (record.ok and record.success):
             continue
         task = tasks[record.task]

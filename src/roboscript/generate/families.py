@@ -53,7 +53,7 @@ def into_container(scene: Scene, rng: np.random.Generator) -> TemplateTask | Non
         (t, c)
         for c in scene.containers
         for t in scene.on_table
-        if room_for([scene.type(n) for n in [*scene.holding(c), t]], scene.type(c))
+        if room_for([scene.type(t)], scene.type(c), [scene.type(h) for h in scene.holding(c)])
     ]
     if not pairs:
         return None
@@ -203,7 +203,8 @@ def clear_table(scene: Scene, rng: np.random.Generator) -> TemplateTask | None:
     options = [
         c
         for c in scene.containers
-        if len(things) >= 2 and room_for([scene.type(t) for t in [*scene.holding(c), *things]], scene.type(c))
+        if len(things) >= 2
+        and room_for([scene.type(t) for t in things], scene.type(c), [scene.type(h) for h in scene.holding(c)])
     ]
     if not options:
         return None
@@ -230,7 +231,7 @@ def _free_beside(scene: Scene, thing: str, target: str) -> bool:
     center = scene.position(target)
     for side in ([0, 1], [0, -1], [-1, 0], [1, 0]):
         spot = center + np.array(side) * (scene.radius(target) + radius + NEAR_GAP)
-        if not 0.3 < np.linalg.norm(spot - np.array([-0.45, 0.0])) < 0.68:
+        if not 0.32 < np.linalg.norm(spot - np.array([-0.45, 0.0])) < 0.68:
             continue
         if all(np.linalg.norm(spot - p) > radius + r + 0.01 for p, r in others):
             return True

@@ -48,6 +48,7 @@ class CabinetRecipe:
     rows: tuple[str, ...]
     keep_clear_x: Range
     keep_clear_y: Range
+    spacing: float  # kept between the cabinet's sides and anything on the table
 
 
 @dataclass(frozen=True)
@@ -117,7 +118,8 @@ def _types(entry: Reader, names: Any, what: str) -> tuple[str, ...]:
 def _parse_cabinet(source: str, data: Any) -> CabinetRecipe | None:
     if data is None:
         return None
-    entry = Reader(source, "cabinet", data, {"probability", "position", "width", "rows", "keep_clear"}, RecipeFileError)
+    fields = {"probability", "position", "width", "rows", "keep_clear", "spacing"}
+    entry = Reader(source, "cabinet", data, fields, RecipeFileError)
     rows = entry.data.get("rows", ["drawer", "drawer", "drawer"])
     if not isinstance(rows, list) or not rows or any(r not in ("drawer", "door") for r in rows):
         entry.fail(f"field 'rows' must be a non-empty list of 'drawer' or 'door', got {rows!r}")
@@ -129,6 +131,7 @@ def _parse_cabinet(source: str, data: Any) -> CabinetRecipe | None:
         rows=tuple(rows),
         keep_clear_x=_range(clear, "x"),
         keep_clear_y=_range(clear, "y"),
+        spacing=_spacing(entry),
     )
 
 

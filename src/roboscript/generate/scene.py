@@ -42,7 +42,8 @@ def in_or_on(thing: ObjectType, receptacle: ObjectType) -> str:
         return "on"
     floor = receptacle.interior[0][2]
     depth = float(receptacle.bounds[1][2]) - floor
-    return "in" if 0.8 * float(thing.size[2]) <= depth - 0.005 else "on"
+    # 2 cm to spare: a thing as wide as a Rubik's cube rests on a bowl's sloping walls, above its floor.
+    return "in" if 0.8 * float(thing.size[2]) <= depth - 0.02 else "on"
 
 
 def fits(thing: ObjectType, receptacle: ObjectType, margin: float = 0.01) -> bool:
@@ -55,13 +56,25 @@ def fits(thing: ObjectType, receptacle: ObjectType, margin: float = 0.01) -> boo
     )
 
 
-def room_for(things: list[ObjectType], receptacle: ObjectType) -> bool:
-    """Whether all of ``things`` fit into ``receptacle`` side by side, each with a margin (at most 60% of its
-    floor covered)."""
+def room_for(things: list[ObjectType], receptacle: ObjectType, held: list[ObjectType] | None = None) -> bool:
+    """Whether all of ``things`` fit into ``receptacle`` side by side, each with a margin, at most half its floor
+    covered (a pear and a peach fill a plate's 16 cm: the first one put down leaves no room for the second), beside
+    what it ``held`` at the start (in its middle, as generated worlds put things in receptacles)."""
+    held = held or []
     lower, upper = receptacle.interior
     floor = (upper[0] - lower[0]) * (upper[1] - lower[1])
-    taken = sum((t.size[0] + 0.02) * (t.size[1] + 0.02) for t in things)
-    return all(fits(t, receptacle) for t in things) and taken <= 0.6 * floor
+    taken = sum((t.size[0] + 0.02) * (t.size[1] + 0.02) for t in [*held, *things])
+    beside = all(_fits_beside(t, h, receptacle) for t in things for h in held)
+    return all(fits(t, receptacle) for t in things) and taken <= 0.5 * floor and beside
+
+
+def _fits_beside(thing: ObjectType, held: ObjectType, receptacle: ObjectType) -> bool:
+    """Whether ``thing`` fits between ``held``, in any turn in the receptacle's middle, and a wall."""
+    lower, upper = receptacle.interior
+    short, long = np.sort(np.subtract(upper, lower)[:2])
+    strip = (long - 2 * held.footprint_radius) / 2
+    small, large = np.sort(thing.size[:2])
+    return bool(small + 0.03 <= strip and large + 0.02 <= short)
 
 
 @dataclass(frozen=True)

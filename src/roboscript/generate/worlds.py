@@ -21,6 +21,7 @@ from roboscript.objects import get_object_type
 from roboscript.sim.world_file import ROBOT_BASE_XY, WorldFileError, WorldSpec, parse_world, placements_overlap
 
 PLACE_TRIES = 200
+CABINET_DEPTH = 0.46  # a cabinet's footprint along x, handles included (world files' default depth, 0.36, and 0.1)
 WORLD_TRIES = 20
 
 
@@ -153,7 +154,11 @@ def _allowed(recipe: Recipe, data: dict, x: float, y: float, radius: float) -> b
     if cabinet is None or "furniture" not in data:
         return True
     clear_x, clear_y = cabinet.keep_clear_x, cabinet.keep_clear_y
-    return not (clear_x.low - radius < x < clear_x.high + radius and clear_y.low - radius < y < clear_y.high + radius)
+    if clear_x.low - radius < x < clear_x.high + radius and clear_y.low - radius < y < clear_y.high + radius:
+        return False
+    # Room beside the cabinet's sides for a hand (and its wrist) coming for a thing there.
+    half = np.array([CABINET_DEPTH / 2, cabinet.width / 2]) + cabinet.spacing + radius
+    return bool(np.any(np.abs(np.subtract((x, y), cabinet.position)) > half))
 
 
 def _valid(data: dict, entry: dict, spacing: float = 0.0) -> bool:

@@ -1,9 +1,7 @@
 # Task: clear the table by putting every object lying on it into the basket; leave the baskets and bowls and plates where they are
 # Plan:
-# 1. Pick up the white medication bottle and put it into the basket.
-# 2. Pick up the white and pink box and put it into the basket.
-# 3. Pick up the peach and put it into the basket.
-# 4. Pick up the apple and put it into the basket.
+# 1. Pick up the golf ball and put it into the basket.
+# 2. Pick up the white mug and put it into the basket.
 detect_objects()
 
 
@@ -25,11 +23,7 @@ def put(name, place_pose):
     move_in_direction(direction=[0, 0, 1], distance=0.1)
 
 
-pick('white_medication_bottle')
-put('white_medication_bottle', parse_place_pose(object_name='white_medication_bottle', receptacle_name='basket'))
-pick('white_and_pink_box')
-put('white_and_pink_box', parse_place_pose(object_name='white_and_pink_box', receptacle_name='basket'))
-pick('peach')
-put('peach', parse_place_pose(object_name='peach', receptacle_name='basket'))
-pick('apple')
-put('apple', parse_place_pose(object_name='apple', receptacle_name='basket'))
+pick('golf_ball')
+put('golf_ball', parse_place_pose(object_name='golf_ball', receptacle_name='basket'))
+pick('white_mug')
+put('white_mug', parse_place_pose(object_name='white_mug', receptacle_name='basket'))

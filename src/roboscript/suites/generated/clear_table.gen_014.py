@@ -1,7 +1,7 @@
 # Task: clear the table by putting every object lying on it into the basket; leave the baskets and bowls and plates where they are
 # Plan:
 # 1. Pick up the yellow box and put it into the basket.
-# 2. Pick up the green block and put it into the basket.
+# 2. Pick up the tea box and put it into the basket.
 detect_objects()
 
 
@@ -25,5 +25,5 @@ def put(name, place_pose):
 
 pick('yellow_box')
 put('yellow_box', parse_place_pose(object_name='yellow_box', receptacle_name='basket'))
-pick('green_block')
-put('green_block', parse_place_pose(object_name='green_block', receptacle_name='basket'))
+pick('tea_box')
+put('tea_box', parse_place_pose(object_name='tea_box', receptacle_name='basket'))

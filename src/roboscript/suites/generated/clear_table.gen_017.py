@@ -1,9 +1,8 @@
 # Task: clear the table by putting every object lying on it into the basket; leave the baskets and bowls where they are
 # Plan:
-# 1. Pick up the red mug and put it into the basket.
-# 2. Pick up the lime and put it into the basket.
-# 3. Pick up the tea box and put it into the basket.
-# 4. Pick up the orange and put it into the basket.
+# 1. Pick up the brown box and put it into the basket.
+# 2. Pick up the red block and put it into the basket.
+# 3. Pick up the white and yellow mug and put it into the basket.
 detect_objects()
 
 
@@ -25,11 +24,9 @@ def put(name, place_pose):
     move_in_direction(direction=[0, 0, 1], distance=0.1)
 
 
-pick('red_mug')
-put('red_mug', parse_place_pose(object_name='red_mug', receptacle_name='basket'))
-pick('lime')
-put('lime', parse_place_pose(object_name='lime', receptacle_name='basket'))
-pick('tea_box')
-put('tea_box', parse_place_pose(object_name='tea_box', receptacle_name='basket'))
-pick('orange')
-put('orange', parse_place_pose(object_name='orange', receptacle_name='basket'))
+pick('brown_box')
+put('brown_box', parse_place_pose(object_name='brown_box', receptacle_name='basket'))
+pick('red_block')
+put('red_block', parse_place_pose(object_name='red_block', receptacle_name='basket'))
+pick('white_and_yellow_mug')
+put('white_and_yellow_mug', parse_place_pose(object_name='white_and_yellow_mug', receptacle_name='basket'))

@@ -1,8 +1,7 @@
 # Task: clear the table by putting every object lying on it into the basket; leave the baskets and bowls where they are
 # Plan:
-# 1. Pick up the green mug and put it into the basket.
-# 2. Pick up the white mug and put it into the basket.
-# 3. Pick up the peach and put it into the basket.
+# 1. Pick up the tea box and put it into the basket.
+# 2. Pick up the golf ball and put it into the basket.
 detect_objects()
 
 
@@ -24,9 +23,7 @@ def put(name, place_pose):
     move_in_direction(direction=[0, 0, 1], distance=0.1)
 
 
-pick('green_mug')
-put('green_mug', parse_place_pose(object_name='green_mug', receptacle_name='basket'))
-pick('white_mug')
-put('white_mug', parse_place_pose(object_name='white_mug', receptacle_name='basket'))
-pick('peach')
-put('peach', parse_place_pose(object_name='peach', receptacle_name='basket'))
+pick('tea_box')
+put('tea_box', parse_place_pose(object_name='tea_box', receptacle_name='basket'))
+pick('golf_ball')
+put('golf_ball', parse_place_pose(object_name='golf_ball', receptacle_name='basket'))

@@ -1,7 +1,8 @@
 # Task: clear the table by putting every object lying on it into the basket; leave the baskets and plates and saucers where they are
 # Plan:
-# 1. Pick up the yellow box and put it into the basket.
-# 2. Pick up the wooden bar and put it into the basket.
+# 1. Pick up the blue mug and put it into the basket.
+# 2. Pick up the lemon and put it into the basket.
+# 3. Pick up the tea box and put it into the basket.
 detect_objects()
 
 
@@ -23,7 +24,9 @@ def put(name, place_pose):
     move_in_direction(direction=[0, 0, 1], distance=0.1)
 
 
-pick('yellow_box')
-put('yellow_box', parse_place_pose(object_name='yellow_box', receptacle_name='basket'))
-pick('wooden_bar')
-put('wooden_bar', parse_place_pose(object_name='wooden_bar', receptacle_name='basket'))
+pick('blue_mug')
+put('blue_mug', parse_place_pose(object_name='blue_mug', receptacle_name='basket'))
+pick('lemon')
+put('lemon', parse_place_pose(object_name='lemon', receptacle_name='basket'))
+pick('tea_box')
+put('tea_box', parse_place_pose(object_name='tea_box', receptacle_name='basket'))

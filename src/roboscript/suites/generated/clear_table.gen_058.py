@@ -1,7 +1,10 @@
 # Task: clear the table by putting every object lying on it into the basket; leave the baskets and bowls and plates where they are
 # Plan:
-# 1. Pick up the soup can and put it into the basket.
-# 2. Pick up the baseball and put it into the basket.
+# 1. Pick up the plum and put it into the basket.
+# 2. Pick up the medication bottle and put it into the basket.
+# 3. Pick up the golf ball and put it into the basket.
+# 4. Pick up the white and pink box and put it into the basket.
+# 5. Pick up the strawberry and put it into the basket.
 detect_objects()
 
 
@@ -23,7 +26,13 @@ def put(name, place_pose):
     move_in_direction(direction=[0, 0, 1], distance=0.1)
 
 
-pick('soup_can')
-put('soup_can', parse_place_pose(object_name='soup_can', receptacle_name='basket'))
-pick('baseball')
-put('baseball', parse_place_pose(object_name='baseball', receptacle_name='basket'))
+pick('plum')
+put('plum', parse_place_pose(object_name='plum', receptacle_name='basket'))
+pick('medication_bottle')
+put('medication_bottle', parse_place_pose(object_name='medication_bottle', receptacle_name='basket'))
+pick('golf_ball')
+put('golf_ball', parse_place_pose(object_name='golf_ball', receptacle_name='basket'))
+pick('white_and_pink_box')
+put('white_and_pink_box', parse_place_pose(object_name='white_and_pink_box', receptacle_name='basket'))
+pick('strawberry')
+put('strawberry', parse_place_pose(object_name='strawberry', receptacle_name='basket'))

@@ -1,6 +1,6 @@
-# Task: move the white and pink box into the basket
+# Task: move the golf ball into the basket
 # Plan:
-# 1. Pick up the white and pink box and put it into the basket.
+# 1. Pick up the golf ball and put it into the basket.
 detect_objects()
 
 
@@ -22,5 +22,5 @@ def put(name, place_pose):
     move_in_direction(direction=[0, 0, 1], distance=0.1)
 
 
-pick('white_and_pink_box')
-put('white_and_pink_box', parse_place_pose(object_name='white_and_pink_box', receptacle_name='basket'))
+pick('golf_ball')
+put('golf_ball', parse_place_pose(object_name='golf_ball', receptacle_name='basket'))

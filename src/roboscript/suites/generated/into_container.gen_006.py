@@ -1,4 +1,4 @@
-# Task: place the red block in the footed bowl
+# Task: put the red block into the footed bowl
 # Plan:
 # 1. Pick up the red block and put it into the footed bowl.
 detect_objects()

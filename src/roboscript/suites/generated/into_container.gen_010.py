@@ -1,6 +1,6 @@
-# Task: place the lemon in the blue bowl
+# Task: move the golf ball into the blue bowl
 # Plan:
-# 1. Pick up the lemon and put it into the blue bowl.
+# 1. Pick up the golf ball and put it into the blue bowl.
 detect_objects()
 
 
@@ -22,5 +22,5 @@ def put(name, place_pose):
     move_in_direction(direction=[0, 0, 1], distance=0.1)
 
 
-pick('lemon')
-put('lemon', parse_place_pose(object_name='lemon', receptacle_name='blue_bowl'))
+pick('golf_ball')
+put('golf_ball', parse_place_pose(object_name='golf_ball', receptacle_name='blue_bowl'))

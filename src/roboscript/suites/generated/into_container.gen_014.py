@@ -1,6 +1,6 @@
-# Task: place the green block in the green bowl
+# Task: place the tea box in the basket
 # Plan:
-# 1. Pick up the green block and put it into the green bowl.
+# 1. Pick up the tea box and put it into the basket.
 detect_objects()
 
 
@@ -22,5 +22,5 @@ def put(name, place_pose):
     move_in_direction(direction=[0, 0, 1], distance=0.1)
 
 
-pick('green_block')
-put('green_block', parse_place_pose(object_name='green_block', receptacle_name='green_bowl'))
+pick('tea_box')
+put('tea_box', parse_place_pose(object_name='tea_box', receptacle_name='basket'))

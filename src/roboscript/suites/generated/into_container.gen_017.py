@@ -1,4 +1,4 @@
-# Task: move the tea box into the basket
+# Task: place the tea box in the basket
 # Plan:
 # 1. Pick up the tea box and put it into the basket.
 detect_objects()

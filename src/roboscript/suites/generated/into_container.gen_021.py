@@ -1,4 +1,4 @@
-# Task: place the brown medication bottle in the footed bowl
+# Task: put the brown medication bottle into the footed bowl
 # Plan:
 # 1. Pick up the brown medication bottle and put it into the footed bowl.
 detect_objects()

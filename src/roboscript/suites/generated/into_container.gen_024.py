@@ -1,6 +1,6 @@
-# Task: put the green block into the footed bowl
+# Task: move the rubiks cube into the footed bowl
 # Plan:
-# 1. Pick up the green block and put it into the footed bowl.
+# 1. Pick up the rubiks cube and put it into the footed bowl.
 detect_objects()
 
 
@@ -22,5 +22,5 @@ def put(name, place_pose):
     move_in_direction(direction=[0, 0, 1], distance=0.1)
 
 
-pick('green_block')
-put('green_block', parse_place_pose(object_name='green_block', receptacle_name='footed_bowl'))
+pick('rubiks_cube')
+put('rubiks_cube', parse_place_pose(object_name='rubiks_cube', receptacle_name='footed_bowl'))

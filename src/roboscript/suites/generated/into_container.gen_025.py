@@ -1,6 +1,6 @@
-# Task: move the rubiks cube into the basket
+# Task: move the medication bottle into the basket
 # Plan:
-# 1. Pick up the rubiks cube and put it into the basket.
+# 1. Pick up the medication bottle and put it into the basket.
 detect_objects()
 
 
@@ -22,5 +22,5 @@ def put(name, place_pose):
     move_in_direction(direction=[0, 0, 1], distance=0.1)
 
 
-pick('rubiks_cube')
-put('rubiks_cube', parse_place_pose(object_name='rubiks_cube', receptacle_name='basket'))
+pick('medication_bottle')
+put('medication_bottle', parse_place_pose(object_name='medication_bottle', receptacle_name='basket'))

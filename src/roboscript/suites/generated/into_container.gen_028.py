@@ -1,6 +1,6 @@
-# Task: move the soup can into the footed bowl
+# Task: place the medication bottle in the footed bowl
 # Plan:
-# 1. Pick up the soup can and put it into the footed bowl.
+# 1. Pick up the medication bottle and put it into the footed bowl.
 detect_objects()
 
 
@@ -22,5 +22,5 @@ def put(name, place_pose):
     move_in_direction(direction=[0, 0, 1], distance=0.1)
 
 
-pick('soup_can')
-put('soup_can', parse_place_pose(object_name='soup_can', receptacle_name='footed_bowl'))
+pick('medication_bottle')
+put('medication_bottle', parse_place_pose(object_name='medication_bottle', receptacle_name='footed_bowl'))

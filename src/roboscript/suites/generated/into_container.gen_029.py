@@ -1,6 +1,6 @@
-# Task: move the blue cup into the basket
+# Task: move the medication bottle into the basket
 # Plan:
-# 1. Pick up the blue cup and put it into the basket.
+# 1. Pick up the medication bottle and put it into the basket.
 detect_objects()
 
 
@@ -22,5 +22,5 @@ def put(name, place_pose):
     move_in_direction(direction=[0, 0, 1], distance=0.1)
 
 
-pick('blue_cup')
-put('blue_cup', parse_place_pose(object_name='blue_cup', receptacle_name='basket'))
+pick('medication_bottle')
+put('medication_bottle', parse_place_pose(object_name='medication_bottle', receptacle_name='basket'))

@@ -1,6 +1,6 @@
-# Task: move the brown medication bottle into the green bowl
+# Task: move the plum into the green bowl
 # Plan:
-# 1. Pick up the brown medication bottle and put it into the green bowl.
+# 1. Pick up the plum and put it into the green bowl.
 detect_objects()
 
 
@@ -22,5 +22,5 @@ def put(name, place_pose):
     move_in_direction(direction=[0, 0, 1], distance=0.1)
 
 
-pick('brown_medication_bottle')
-put('brown_medication_bottle', parse_place_pose(object_name='brown_medication_bottle', receptacle_name='green_bowl'))
+pick('plum')
+put('plum', parse_place_pose(object_name='plum', receptacle_name='green_bowl'))

@@ -1,4 +1,4 @@
-# Task: put the golf ball into the footed bowl
+# Task: place the golf ball in the footed bowl
 # Plan:
 # 1. Pick up the golf ball and put it into the footed bowl.
 detect_objects()

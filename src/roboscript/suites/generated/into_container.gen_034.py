@@ -1,6 +1,6 @@
-# Task: place the soup can in the footed bowl
+# Task: move the green block into the footed bowl
 # Plan:
-# 1. Pick up the soup can and put it into the footed bowl.
+# 1. Pick up the green block and put it into the footed bowl.
 detect_objects()
 
 
@@ -22,5 +22,5 @@ def put(name, place_pose):
     move_in_direction(direction=[0, 0, 1], distance=0.1)
 
 
-pick('soup_can')
-put('soup_can', parse_place_pose(object_name='soup_can', receptacle_name='footed_bowl'))
+pick('green_block')
+put('green_block', parse_place_pose(object_name='green_block', receptacle_name='footed_bowl'))

@@ -1,4 +1,4 @@
-# Task: move the white medication bottle into the footed bowl
+# Task: put the white medication bottle into the footed bowl
 # Plan:
 # 1. Pick up the white medication bottle and put it into the footed bowl.
 detect_objects()

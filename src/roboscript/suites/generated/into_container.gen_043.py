@@ -1,6 +1,6 @@
-# Task: move the wooden bar into the basket
+# Task: move the tea box into the basket
 # Plan:
-# 1. Pick up the wooden bar and put it into the basket.
+# 1. Pick up the tea box and put it into the basket.
 detect_objects()
 
 
@@ -22,5 +22,5 @@ def put(name, place_pose):
     move_in_direction(direction=[0, 0, 1], distance=0.1)
 
 
-pick('wooden_bar')
-put('wooden_bar', parse_place_pose(object_name='wooden_bar', receptacle_name='basket'))
+pick('tea_box')
+put('tea_box', parse_place_pose(object_name='tea_box', receptacle_name='basket'))

@@ -1,4 +1,4 @@
-# Task: move the strawberry into the red bowl
+# Task: place the strawberry in the red bowl
 # Plan:
 # 1. Pick up the strawberry and put it into the red bowl.
 detect_objects()

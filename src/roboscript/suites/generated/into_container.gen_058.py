@@ -1,6 +1,6 @@
-# Task: place the baseball in the basket
+# Task: put the strawberry into the basket
 # Plan:
-# 1. Pick up the baseball and put it into the basket.
+# 1. Pick up the strawberry and put it into the basket.
 detect_objects()
 
 
@@ -22,5 +22,5 @@ def put(name, place_pose):
     move_in_direction(direction=[0, 0, 1], distance=0.1)
 
 
-pick('baseball')
-put('baseball', parse_place_pose(object_name='baseball', receptacle_name='basket'))
+pick('strawberry')
+put('strawberry', parse_place_pose(object_name='strawberry', receptacle_name='basket'))

@@ -1,7 +1,7 @@
-# Task: put the brown cup into the second drawer; the drawer is closed, open it first
+# Task: put the toy car into the second drawer; the drawer is closed, open it first
 # Plan:
 # 1. The drawer is closed: pull it open by its handle (cabinet.handle_1).
-# 2. Pick up the brown cup and put it into the cabinet's drawer 1.
+# 2. Pick up the toy car and put it into the cabinet's drawer 1.
 detect_objects()
 
 
@@ -39,5 +39,5 @@ def put(name, place_pose):
 
 
 open_drawer('cabinet.drawer_1', 'cabinet.handle_1')
-pick('brown_cup')
-put('brown_cup', parse_place_pose(object_name='brown_cup', receptacle_name='cabinet.drawer_1'))
+pick('toy_car')
+put('toy_car', parse_place_pose(object_name='toy_car', receptacle_name='cabinet.drawer_1'))

@@ -1,7 +1,7 @@
-# Task: open the top drawer of the cabinet and put the toy car into it
+# Task: open the second drawer of the cabinet and put the red block into it
 # Plan:
-# 1. The drawer is closed: pull it open by its handle (cabinet.handle_0).
-# 2. Pick up the toy car and put it into the cabinet's drawer 0.
+# 1. The drawer is closed: pull it open by its handle (cabinet.handle_1).
+# 2. Pick up the red block and put it into the cabinet's drawer 1.
 detect_objects()
 
 
@@ -38,6 +38,6 @@ def put(name, place_pose):
     move_in_direction(direction=[0, 0, 1], distance=0.1)
 
 
-open_drawer('cabinet.drawer_0', 'cabinet.handle_0')
-pick('toy_car')
-put('toy_car', parse_place_pose(object_name='toy_car', receptacle_name='cabinet.drawer_0'))
+open_drawer('cabinet.drawer_1', 'cabinet.handle_1')
+pick('red_block')
+put('red_block', parse_place_pose(object_name='red_block', receptacle_name='cabinet.drawer_1'))

@@ -1,7 +1,7 @@
-# Task: put the lemon into the top drawer; the drawer is closed, open it first
+# Task: open the second drawer of the cabinet and put the green mug into it
 # Plan:
-# 1. The drawer is closed: pull it open by its handle (cabinet.handle_0).
-# 2. Pick up the lemon and put it into the cabinet's drawer 0.
+# 1. The drawer is closed: pull it open by its handle (cabinet.handle_1).
+# 2. Pick up the green mug and put it into the cabinet's drawer 1.
 detect_objects()
 
 
@@ -38,6 +38,6 @@ def put(name, place_pose):
     move_in_direction(direction=[0, 0, 1], distance=0.1)
 
 
-open_drawer('cabinet.drawer_0', 'cabinet.handle_0')
-pick('lemon')
-put('lemon', parse_place_pose(object_name='lemon', receptacle_name='cabinet.drawer_0'))
+open_drawer('cabinet.drawer_1', 'cabinet.handle_1')
+pick('green_mug')
+put('green_mug', parse_place_pose(object_name='green_mug', receptacle_name='cabinet.drawer_1'))

@@ -1,7 +1,7 @@
-# Task: open the second drawer of the cabinet and put the tea box into it
+# Task: put the tea box into the top drawer; the drawer is closed, open it first
 # Plan:
-# 1. The drawer is closed: pull it open by its handle (cabinet.handle_1).
-# 2. Pick up the tea box and put it into the cabinet's drawer 1.
+# 1. The drawer is closed: pull it open by its handle (cabinet.handle_0).
+# 2. Pick up the tea box and put it into the cabinet's drawer 0.
 detect_objects()
 
 
@@ -38,6 +38,6 @@ def put(name, place_pose):
     move_in_direction(direction=[0, 0, 1], distance=0.1)
 
 
-open_drawer('cabinet.drawer_1', 'cabinet.handle_1')
+open_drawer('cabinet.drawer_0', 'cabinet.handle_0')
 pick('tea_box')
-put('tea_box', parse_place_pose(object_name='tea_box', receptacle_name='cabinet.drawer_1'))
+put('tea_box', parse_place_pose(object_name='tea_box', receptacle_name='cabinet.drawer_0'))

@@ -1,7 +1,7 @@
-# Task: put the green mug into the second drawer; the drawer is closed, open it first
+# Task: put the tea box into the second drawer; the drawer is closed, open it first
 # Plan:
 # 1. The drawer is closed: pull it open by its handle (cabinet.handle_1).
-# 2. Pick up the green mug and put it into the cabinet's drawer 1.
+# 2. Pick up the tea box and put it into the cabinet's drawer 1.
 detect_objects()
 
 
@@ -39,5 +39,5 @@ def put(name, place_pose):
 
 
 open_drawer('cabinet.drawer_1', 'cabinet.handle_1')
-pick('green_mug')
-put('green_mug', parse_place_pose(object_name='green_mug', receptacle_name='cabinet.drawer_1'))
+pick('tea_box')
+put('tea_box', parse_place_pose(object_name='tea_box', receptacle_name='cabinet.drawer_1'))

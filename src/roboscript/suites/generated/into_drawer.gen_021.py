@@ -1,4 +1,4 @@
-# Task: open the top drawer of the cabinet and put the green apple into it
+# Task: put the green apple into the top drawer; the drawer is closed, open it first
 # Plan:
 # 1. The drawer is closed: pull it open by its handle (cabinet.handle_0).
 # 2. Pick up the green apple and put it into the cabinet's drawer 0.

@@ -1,7 +1,7 @@
-# Task: put the sponge into the top drawer; the drawer is closed, open it first
+# Task: put the rubiks cube into the top drawer; the drawer is closed, open it first
 # Plan:
 # 1. The drawer is closed: pull it open by its handle (cabinet.handle_0).
-# 2. Pick up the sponge and put it into the cabinet's drawer 0.
+# 2. Pick up the rubiks cube and put it into the cabinet's drawer 0.
 detect_objects()
 
 
@@ -39,5 +39,5 @@ def put(name, place_pose):
 
 
 open_drawer('cabinet.drawer_0', 'cabinet.handle_0')
-pick('sponge')
-put('sponge', parse_place_pose(object_name='sponge', receptacle_name='cabinet.drawer_0'))
+pick('rubiks_cube')
+put('rubiks_cube', parse_place_pose(object_name='rubiks_cube', receptacle_name='cabinet.drawer_0'))

@@ -1,7 +1,7 @@
-# Task: open the second drawer of the cabinet and put the blue cup into it
+# Task: open the second drawer of the cabinet and put the medication bottle into it
 # Plan:
 # 1. The drawer is closed: pull it open by its handle (cabinet.handle_1).
-# 2. Pick up the blue cup and put it into the cabinet's drawer 1.
+# 2. Pick up the medication bottle and put it into the cabinet's drawer 1.
 detect_objects()
 
 
@@ -39,5 +39,5 @@ def put(name, place_pose):
 
 
 open_drawer('cabinet.drawer_1', 'cabinet.handle_1')
-pick('blue_cup')
-put('blue_cup', parse_place_pose(object_name='blue_cup', receptacle_name='cabinet.drawer_1'))
+pick('medication_bottle')
+put('medication_bottle', parse_place_pose(object_name='medication_bottle', receptacle_name='cabinet.drawer_1'))

@@ -1,7 +1,7 @@
-# Task: open the second drawer of the cabinet and put the wooden bar into it
+# Task: open the second drawer of the cabinet and put the yellow box into it
 # Plan:
 # 1. The drawer is closed: pull it open by its handle (cabinet.handle_1).
-# 2. Pick up the wooden bar and put it into the cabinet's drawer 1.
+# 2. Pick up the yellow box and put it into the cabinet's drawer 1.
 detect_objects()
 
 
@@ -39,5 +39,5 @@ def put(name, place_pose):
 
 
 open_drawer('cabinet.drawer_1', 'cabinet.handle_1')
-pick('wooden_bar')
-put('wooden_bar', parse_place_pose(object_name='wooden_bar', receptacle_name='cabinet.drawer_1'))
+pick('yellow_box')
+put('yellow_box', parse_place_pose(object_name='yellow_box', receptacle_name='cabinet.drawer_1'))

@@ -1,7 +1,7 @@
-# Task: open the top drawer of the cabinet and put the yellow box into it
+# Task: open the second drawer of the cabinet and put the golf ball into it
 # Plan:
-# 1. The drawer is closed: pull it open by its handle (cabinet.handle_0).
-# 2. Pick up the yellow box and put it into the cabinet's drawer 0.
+# 1. The drawer is closed: pull it open by its handle (cabinet.handle_1).
+# 2. Pick up the golf ball and put it into the cabinet's drawer 1.
 detect_objects()
 
 
@@ -38,6 +38,6 @@ def put(name, place_pose):
     move_in_direction(direction=[0, 0, 1], distance=0.1)
 
 
-open_drawer('cabinet.drawer_0', 'cabinet.handle_0')
-pick('yellow_box')
-put('yellow_box', parse_place_pose(object_name='yellow_box', receptacle_name='cabinet.drawer_0'))
+open_drawer('cabinet.drawer_1', 'cabinet.handle_1')
+pick('golf_ball')
+put('golf_ball', parse_place_pose(object_name='golf_ball', receptacle_name='cabinet.drawer_1'))

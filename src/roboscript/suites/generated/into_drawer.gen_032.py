@@ -1,7 +1,7 @@
-# Task: open the second drawer of the cabinet and put the red cup into it
+# Task: open the top drawer of the cabinet and put the apple into it
 # Plan:
-# 1. The drawer is closed: pull it open by its handle (cabinet.handle_1).
-# 2. Pick up the red cup and put it into the cabinet's drawer 1.
+# 1. The drawer is closed: pull it open by its handle (cabinet.handle_0).
+# 2. Pick up the apple and put it into the cabinet's drawer 0.
 detect_objects()
 
 
@@ -38,6 +38,6 @@ def put(name, place_pose):
     move_in_direction(direction=[0, 0, 1], distance=0.1)
 
 
-open_drawer('cabinet.drawer_1', 'cabinet.handle_1')
-pick('red_cup')
-put('red_cup', parse_place_pose(object_name='red_cup', receptacle_name='cabinet.drawer_1'))
+open_drawer('cabinet.drawer_0', 'cabinet.handle_0')
+pick('apple')
+put('apple', parse_place_pose(object_name='apple', receptacle_name='cabinet.drawer_0'))

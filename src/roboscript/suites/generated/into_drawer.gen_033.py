@@ -1,7 +1,7 @@
-# Task: put the peach into the top drawer; the drawer is closed, open it first
+# Task: put the blue box into the top drawer; the drawer is closed, open it first
 # Plan:
 # 1. The drawer is closed: pull it open by its handle (cabinet.handle_0).
-# 2. Pick up the peach and put it into the cabinet's drawer 0.
+# 2. Pick up the blue box and put it into the cabinet's drawer 0.
 detect_objects()
 
 
@@ -39,5 +39,5 @@ def put(name, place_pose):
 
 
 open_drawer('cabinet.drawer_0', 'cabinet.handle_0')
-pick('peach')
-put('peach', parse_place_pose(object_name='peach', receptacle_name='cabinet.drawer_0'))
+pick('blue_box')
+put('blue_box', parse_place_pose(object_name='blue_box', receptacle_name='cabinet.drawer_0'))

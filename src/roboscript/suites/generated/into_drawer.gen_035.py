@@ -1,7 +1,7 @@
-# Task: open the top drawer of the cabinet and put the rubiks cube into it
+# Task: open the top drawer of the cabinet and put the red block into it
 # Plan:
 # 1. The drawer is closed: pull it open by its handle (cabinet.handle_0).
-# 2. Pick up the rubiks cube and put it into the cabinet's drawer 0.
+# 2. Pick up the red block and put it into the cabinet's drawer 0.
 detect_objects()
 
 
@@ -39,5 +39,5 @@ def put(name, place_pose):
 
 
 open_drawer('cabinet.drawer_0', 'cabinet.handle_0')
-pick('rubiks_cube')
-put('rubiks_cube', parse_place_pose(object_name='rubiks_cube', receptacle_name='cabinet.drawer_0'))
+pick('red_block')
+put('red_block', parse_place_pose(object_name='red_block', receptacle_name='cabinet.drawer_0'))

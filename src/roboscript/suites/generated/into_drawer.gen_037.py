@@ -1,7 +1,7 @@
-# Task: open the second drawer of the cabinet and put the rubiks cube into it
+# Task: put the blue block into the second drawer; the drawer is closed, open it first
 # Plan:
 # 1. The drawer is closed: pull it open by its handle (cabinet.handle_1).
-# 2. Pick up the rubiks cube and put it into the cabinet's drawer 1.
+# 2. Pick up the blue block and put it into the cabinet's drawer 1.
 detect_objects()
 
 
@@ -39,5 +39,5 @@ def put(name, place_pose):
 
 
 open_drawer('cabinet.drawer_1', 'cabinet.handle_1')
-pick('rubiks_cube')
-put('rubiks_cube', parse_place_pose(object_name='rubiks_cube', receptacle_name='cabinet.drawer_1'))
+pick('blue_block')
+put('blue_block', parse_place_pose(object_name='blue_block', receptacle_name='cabinet.drawer_1'))

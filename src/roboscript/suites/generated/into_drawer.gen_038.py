@@ -1,7 +1,7 @@
-# Task: open the second drawer of the cabinet and put the peach into it
+# Task: put the peach into the top drawer; the drawer is closed, open it first
 # Plan:
-# 1. The drawer is closed: pull it open by its handle (cabinet.handle_1).
-# 2. Pick up the peach and put it into the cabinet's drawer 1.
+# 1. The drawer is closed: pull it open by its handle (cabinet.handle_0).
+# 2. Pick up the peach and put it into the cabinet's drawer 0.
 detect_objects()
 
 
@@ -38,6 +38,6 @@ def put(name, place_pose):
     move_in_direction(direction=[0, 0, 1], distance=0.1)
 
 
-open_drawer('cabinet.drawer_1', 'cabinet.handle_1')
+open_drawer('cabinet.drawer_0', 'cabinet.handle_0')
 pick('peach')
-put('peach', parse_place_pose(object_name='peach', receptacle_name='cabinet.drawer_1'))
+put('peach', parse_place_pose(object_name='peach', receptacle_name='cabinet.drawer_0'))

@@ -1,7 +1,7 @@
-# Task: open the second drawer of the cabinet and put the golf ball into it
+# Task: open the top drawer of the cabinet and put the white medication bottle into it
 # Plan:
-# 1. The drawer is closed: pull it open by its handle (cabinet.handle_1).
-# 2. Pick up the golf ball and put it into the cabinet's drawer 1.
+# 1. The drawer is closed: pull it open by its handle (cabinet.handle_0).
+# 2. Pick up the white medication bottle and put it into the cabinet's drawer 0.
 detect_objects()
 
 
@@ -38,6 +38,6 @@ def put(name, place_pose):
     move_in_direction(direction=[0, 0, 1], distance=0.1)
 
 
-open_drawer('cabinet.drawer_1', 'cabinet.handle_1')
-pick('golf_ball')
-put('golf_ball', parse_place_pose(object_name='golf_ball', receptacle_name='cabinet.drawer_1'))
+open_drawer('cabinet.drawer_0', 'cabinet.handle_0')
+pick('white_medication_bottle')
+put('white_medication_bottle', parse_place_pose(object_name='white_medication_bottle', receptacle_name='cabinet.drawer_0'))

@@ -1,7 +1,7 @@
-# Task: put the blue cup into the second drawer; the drawer is closed, open it first
+# Task: open the second drawer of the cabinet and put the white mug into it
 # Plan:
 # 1. The drawer is closed: pull it open by its handle (cabinet.handle_1).
-# 2. Pick up the blue cup and put it into the cabinet's drawer 1.
+# 2. Pick up the white mug and put it into the cabinet's drawer 1.
 detect_objects()
 
 
@@ -39,5 +39,5 @@ def put(name, place_pose):
 
 
 open_drawer('cabinet.drawer_1', 'cabinet.handle_1')
-pick('blue_cup')
-put('blue_cup', parse_place_pose(object_name='blue_cup', receptacle_name='cabinet.drawer_1'))
+pick('white_mug')
+put('white_mug', parse_place_pose(object_name='white_mug', receptacle_name='cabinet.drawer_1'))

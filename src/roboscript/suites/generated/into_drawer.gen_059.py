@@ -1,7 +1,7 @@
-# Task: put the blue block into the second drawer; the drawer is closed, open it first
+# Task: put the rubiks cube into the top drawer; the drawer is closed, open it first
 # Plan:
-# 1. The drawer is closed: pull it open by its handle (cabinet.handle_1).
-# 2. Pick up the blue block and put it into the cabinet's drawer 1.
+# 1. The drawer is closed: pull it open by its handle (cabinet.handle_0).
+# 2. Pick up the rubiks cube and put it into the cabinet's drawer 0.
 detect_objects()
 
 
@@ -38,6 +38,6 @@ def put(name, place_pose):
     move_in_direction(direction=[0, 0, 1], distance=0.1)
 
 
-open_drawer('cabinet.drawer_1', 'cabinet.handle_1')
-pick('blue_block')
-put('blue_block', parse_place_pose(object_name='blue_block', receptacle_name='cabinet.drawer_1'))
+open_drawer('cabinet.drawer_0', 'cabinet.handle_0')
+pick('rubiks_cube')
+put('rubiks_cube', parse_place_pose(object_name='rubiks_cube', receptacle_name='cabinet.drawer_0'))

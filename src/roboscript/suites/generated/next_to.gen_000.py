@@ -1,7 +1,7 @@
-# Task: move the gelatin box next to the rubiks cube
+# Task: move the green block next to the white saucer
 # Plan:
-# 1. Find a free place on the table beside the rubiks cube.
-# 2. Pick up the gelatin box and put it down there.
+# 1. Find a free place on the table beside the white saucer.
+# 2. Pick up the green block and put it down there.
 detect_objects()
 
 
@@ -17,7 +17,7 @@ def spot_beside(target, name, obstacles):
         low, high = spot - half - 0.015, spot + half + 0.015
         if any(low[0] < o[3] and o[0] < high[0] and low[1] < o[4] and o[1] < high[1] for o in others):
             continue
-        if 0.28 < np.linalg.norm(spot - np.array([-0.45, 0.0])) < 0.7:
+        if 0.3 < np.linalg.norm(spot - np.array([-0.45, 0.0])) < 0.7:
             return np.array([spot[0], spot[1], mine[2]])
     raise ValueError(f'no free spot beside {target} for {name}')
 
@@ -40,6 +40,6 @@ def put(name, place_pose):
     move_in_direction(direction=[0, 0, 1], distance=0.1)
 
 
-spot = spot_beside('rubiks_cube', 'gelatin_box', ['green_plate', 'white_saucer', 'green_cup'])
-pick('gelatin_box')
-put('gelatin_box', parse_place_pose(object_name='gelatin_box', position=spot))
+spot = spot_beside('white_saucer', 'green_block', ['green_plate', 'white_and_yellow_mug', 'white_cup'])
+pick('green_block')
+put('green_block', parse_place_pose(object_name='green_block', position=spot))

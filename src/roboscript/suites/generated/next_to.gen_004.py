@@ -1,7 +1,7 @@
-# Task: move the green cup next to the green block
+# Task: put the red box next to the green plate
 # Plan:
-# 1. Find a free place on the table beside the green block.
-# 2. Pick up the green cup and put it down there.
+# 1. Find a free place on the table beside the green plate.
+# 2. Pick up the red box and put it down there.
 detect_objects()
 
 
@@ -17,7 +17,7 @@ def spot_beside(target, name, obstacles):
         low, high = spot - half - 0.015, spot + half + 0.015
         if any(low[0] < o[3] and o[0] < high[0] and low[1] < o[4] and o[1] < high[1] for o in others):
             continue
-        if 0.28 < np.linalg.norm(spot - np.array([-0.45, 0.0])) < 0.7:
+        if 0.3 < np.linalg.norm(spot - np.array([-0.45, 0.0])) < 0.7:
             return np.array([spot[0], spot[1], mine[2]])
     raise ValueError(f'no free spot beside {target} for {name}')
 
@@ -40,6 +40,6 @@ def put(name, place_pose):
     move_in_direction(direction=[0, 0, 1], distance=0.1)
 
 
-spot = spot_beside('green_block', 'green_cup', ['green_plate', 'red_bowl', 'gelatin_box', 'apple'])
-pick('green_cup')
-put('green_cup', parse_place_pose(object_name='green_cup', position=spot))
+spot = spot_beside('green_plate', 'red_box', ['red_bowl', 'tea_box', 'apple', 'green_apple'])
+pick('red_box')
+put('red_box', parse_place_pose(object_name='red_box', position=spot))

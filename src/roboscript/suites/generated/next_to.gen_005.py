@@ -1,7 +1,7 @@
-# Task: place the strawberry beside the white saucer
+# Task: place the white cup beside the toy car
 # Plan:
-# 1. Find a free place on the table beside the white saucer.
-# 2. Pick up the strawberry and put it down there.
+# 1. Find a free place on the table beside the toy car.
+# 2. Pick up the white cup and put it down there.
 detect_objects()
 
 
@@ -17,7 +17,7 @@ def spot_beside(target, name, obstacles):
         low, high = spot - half - 0.015, spot + half + 0.015
         if any(low[0] < o[3] and o[0] < high[0] and low[1] < o[4] and o[1] < high[1] for o in others):
             continue
-        if 0.28 < np.linalg.norm(spot - np.array([-0.45, 0.0])) < 0.7:
+        if 0.3 < np.linalg.norm(spot - np.array([-0.45, 0.0])) < 0.7:
             return np.array([spot[0], spot[1], mine[2]])
     raise ValueError(f'no free spot beside {target} for {name}')
 
@@ -40,6 +40,6 @@ def put(name, place_pose):
     move_in_direction(direction=[0, 0, 1], distance=0.1)
 
 
-spot = spot_beside('white_saucer', 'strawberry', ['yellow_plate', 'pink_saucer', 'brown_cup', 'sponge', 'cabinet'])
-pick('strawberry')
-put('strawberry', parse_place_pose(object_name='strawberry', position=spot))
+spot = spot_beside('toy_car', 'white_cup', ['yellow_plate', 'pink_saucer', 'white_saucer', 'blue_cup', 'tennis_ball', 'rubiks_cube', 'cabinet'])
+pick('white_cup')
+put('white_cup', parse_place_pose(object_name='white_cup', position=spot))

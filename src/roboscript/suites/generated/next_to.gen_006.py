@@ -1,7 +1,7 @@
-# Task: place the soup can beside the footed bowl
+# Task: move the red block next to the soup can
 # Plan:
-# 1. Find a free place on the table beside the footed bowl.
-# 2. Pick up the soup can and put it down there.
+# 1. Find a free place on the table beside the soup can.
+# 2. Pick up the red block and put it down there.
 detect_objects()
 
 
@@ -17,7 +17,7 @@ def spot_beside(target, name, obstacles):
         low, high = spot - half - 0.015, spot + half + 0.015
         if any(low[0] < o[3] and o[0] < high[0] and low[1] < o[4] and o[1] < high[1] for o in others):
             continue
-        if 0.28 < np.linalg.norm(spot - np.array([-0.45, 0.0])) < 0.7:
+        if 0.3 < np.linalg.norm(spot - np.array([-0.45, 0.0])) < 0.7:
             return np.array([spot[0], spot[1], mine[2]])
     raise ValueError(f'no free spot beside {target} for {name}')
 
@@ -40,6 +40,6 @@ def put(name, place_pose):
     move_in_direction(direction=[0, 0, 1], distance=0.1)
 
 
-spot = spot_beside('footed_bowl', 'soup_can', ['red_plate', 'pear', 'red_block', 'toy_car', 'red_cup', 'cabinet'])
-pick('soup_can')
-put('soup_can', parse_place_pose(object_name='soup_can', position=spot))
+spot = spot_beside('soup_can', 'red_block', ['red_plate', 'footed_bowl', 'pear', 'toy_car', 'red_cup', 'cabinet'])
+pick('red_block')
+put('red_block', parse_place_pose(object_name='red_block', position=spot))

@@ -1,7 +1,7 @@
-# Task: place the medication bottle beside the blue plate
+# Task: put the white and pink box next to the apple
 # Plan:
-# 1. Find a free place on the table beside the blue plate.
-# 2. Pick up the medication bottle and put it down there.
+# 1. Find a free place on the table beside the apple.
+# 2. Pick up the white and pink box and put it down there.
 detect_objects()
 
 
@@ -17,7 +17,7 @@ def spot_beside(target, name, obstacles):
         low, high = spot - half - 0.015, spot + half + 0.015
         if any(low[0] < o[3] and o[0] < high[0] and low[1] < o[4] and o[1] < high[1] for o in others):
             continue
-        if 0.28 < np.linalg.norm(spot - np.array([-0.45, 0.0])) < 0.7:
+        if 0.3 < np.linalg.norm(spot - np.array([-0.45, 0.0])) < 0.7:
             return np.array([spot[0], spot[1], mine[2]])
     raise ValueError(f'no free spot beside {target} for {name}')
 
@@ -40,6 +40,6 @@ def put(name, place_pose):
     move_in_direction(direction=[0, 0, 1], distance=0.1)
 
 
-spot = spot_beside('blue_plate', 'medication_bottle', ['footed_bowl', 'tennis_ball', 'blue_cup', 'green_cup'])
-pick('medication_bottle')
-put('medication_bottle', parse_place_pose(object_name='medication_bottle', position=spot))
+spot = spot_beside('apple', 'white_and_pink_box', ['blue_plate', 'footed_bowl', 'white_medication_bottle', 'brown_ceramic_cup'])
+pick('white_and_pink_box')
+put('white_and_pink_box', parse_place_pose(object_name='white_and_pink_box', position=spot))

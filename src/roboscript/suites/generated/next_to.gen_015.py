@@ -1,7 +1,7 @@
-# Task: put the blue block next to the wooden bar
+# Task: move the banana next to the blue bowl
 # Plan:
-# 1. Find a free place on the table beside the wooden bar.
-# 2. Pick up the blue block and put it down there.
+# 1. Find a free place on the table beside the blue bowl.
+# 2. Pick up the banana and put it down there.
 detect_objects()
 
 
@@ -17,7 +17,7 @@ def spot_beside(target, name, obstacles):
         low, high = spot - half - 0.015, spot + half + 0.015
         if any(low[0] < o[3] and o[0] < high[0] and low[1] < o[4] and o[1] < high[1] for o in others):
             continue
-        if 0.28 < np.linalg.norm(spot - np.array([-0.45, 0.0])) < 0.7:
+        if 0.3 < np.linalg.norm(spot - np.array([-0.45, 0.0])) < 0.7:
             return np.array([spot[0], spot[1], mine[2]])
     raise ValueError(f'no free spot beside {target} for {name}')
 
@@ -40,6 +40,6 @@ def put(name, place_pose):
     move_in_direction(direction=[0, 0, 1], distance=0.1)
 
 
-spot = spot_beside('wooden_bar', 'blue_block', ['yellow_plate', 'blue_bowl', 'white_and_pink_box', 'blue_cup', 'yellow_mug'])
-pick('blue_block')
-put('blue_block', parse_place_pose(object_name='blue_block', position=spot))
+spot = spot_beside('blue_bowl', 'banana', ['yellow_plate', 'gelatin_box', 'blue_block', 'medication_bottle', 'wooden_bar'])
+pick('banana')
+put('banana', parse_place_pose(object_name='banana', position=spot))

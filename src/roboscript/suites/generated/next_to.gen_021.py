@@ -1,7 +1,7 @@
-# Task: place the green apple beside the brown medication bottle
+# Task: place the pear beside the brown medication bottle
 # Plan:
 # 1. Find a free place on the table beside the brown medication bottle.
-# 2. Pick up the green apple and put it down there.
+# 2. Pick up the pear and put it down there.
 detect_objects()
 
 
@@ -17,7 +17,7 @@ def spot_beside(target, name, obstacles):
         low, high = spot - half - 0.015, spot + half + 0.015
         if any(low[0] < o[3] and o[0] < high[0] and low[1] < o[4] and o[1] < high[1] for o in others):
             continue
-        if 0.28 < np.linalg.norm(spot - np.array([-0.45, 0.0])) < 0.7:
+        if 0.3 < np.linalg.norm(spot - np.array([-0.45, 0.0])) < 0.7:
             return np.array([spot[0], spot[1], mine[2]])
     raise ValueError(f'no free spot beside {target} for {name}')
 
@@ -40,6 +40,6 @@ def put(name, place_pose):
     move_in_direction(direction=[0, 0, 1], distance=0.1)
 
 
-spot = spot_beside('brown_medication_bottle', 'green_apple', ['footed_bowl', 'pear', 'cabinet'])
-pick('green_apple')
-put('green_apple', parse_place_pose(object_name='green_apple', position=spot))
+spot = spot_beside('brown_medication_bottle', 'pear', ['footed_bowl', 'green_apple', 'cabinet'])
+pick('pear')
+put('pear', parse_place_pose(object_name='pear', position=spot))

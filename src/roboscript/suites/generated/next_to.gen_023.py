@@ -1,7 +1,7 @@
-# Task: move the lemon next to the orange
+# Task: put the brown ceramic cup next to the green block
 # Plan:
-# 1. Find a free place on the table beside the orange.
-# 2. Pick up the lemon and put it down there.
+# 1. Find a free place on the table beside the green block.
+# 2. Pick up the brown ceramic cup and put it down there.
 detect_objects()
 
 
@@ -17,7 +17,7 @@ def spot_beside(target, name, obstacles):
         low, high = spot - half - 0.015, spot + half + 0.015
         if any(low[0] < o[3] and o[0] < high[0] and low[1] < o[4] and o[1] < high[1] for o in others):
             continue
-        if 0.28 < np.linalg.norm(spot - np.array([-0.45, 0.0])) < 0.7:
+        if 0.3 < np.linalg.norm(spot - np.array([-0.45, 0.0])) < 0.7:
             return np.array([spot[0], spot[1], mine[2]])
     raise ValueError(f'no free spot beside {target} for {name}')
 
@@ -40,6 +40,6 @@ def put(name, place_pose):
     move_in_direction(direction=[0, 0, 1], distance=0.1)
 
 
-spot = spot_beside('orange', 'lemon', ['yellow_plate', 'green_block', 'brown_ceramic_cup'])
-pick('lemon')
-put('lemon', parse_place_pose(object_name='lemon', position=spot))
+spot = spot_beside('green_block', 'brown_ceramic_cup', ['yellow_plate', 'lemon', 'orange'])
+pick('brown_ceramic_cup')
+put('brown_ceramic_cup', parse_place_pose(object_name='brown_ceramic_cup', position=spot))

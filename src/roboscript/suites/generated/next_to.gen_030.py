@@ -1,7 +1,7 @@
-# Task: place the red box beside the wooden bar
+# Task: put the banana next to the tea box
 # Plan:
-# 1. Find a free place on the table beside the wooden bar.
-# 2. Pick up the red box and put it down there.
+# 1. Find a free place on the table beside the tea box.
+# 2. Pick up the banana and put it down there.
 detect_objects()
 
 
@@ -17,7 +17,7 @@ def spot_beside(target, name, obstacles):
         low, high = spot - half - 0.015, spot + half + 0.015
         if any(low[0] < o[3] and o[0] < high[0] and low[1] < o[4] and o[1] < high[1] for o in others):
             continue
-        if 0.28 < np.linalg.norm(spot - np.array([-0.45, 0.0])) < 0.7:
+        if 0.3 < np.linalg.norm(spot - np.array([-0.45, 0.0])) < 0.7:
             return np.array([spot[0], spot[1], mine[2]])
     raise ValueError(f'no free spot beside {target} for {name}')
 
@@ -40,6 +40,6 @@ def put(name, place_pose):
     move_in_direction(direction=[0, 0, 1], distance=0.1)
 
 
-spot = spot_beside('wooden_bar', 'red_box', ['yellow_plate', 'green_bowl', 'brown_medication_bottle', 'white_medication_bottle', 'cabinet'])
-pick('red_box')
-put('red_box', parse_place_pose(object_name='red_box', position=spot))
+spot = spot_beside('tea_box', 'banana', ['yellow_plate', 'green_bowl', 'yellow_box', 'lemon', 'cabinet'])
+pick('banana')
+put('banana', parse_place_pose(object_name='banana', position=spot))

@@ -1,7 +1,7 @@
-# Task: move the pear next to the gelatin box
+# Task: put the golf ball next to the gelatin box
 # Plan:
 # 1. Find a free place on the table beside the gelatin box.
-# 2. Pick up the pear and put it down there.
+# 2. Pick up the golf ball and put it down there.
 detect_objects()
 
 
@@ -17,7 +17,7 @@ def spot_beside(target, name, obstacles):
         low, high = spot - half - 0.015, spot + half + 0.015
         if any(low[0] < o[3] and o[0] < high[0] and low[1] < o[4] and o[1] < high[1] for o in others):
             continue
-        if 0.28 < np.linalg.norm(spot - np.array([-0.45, 0.0])) < 0.7:
+        if 0.3 < np.linalg.norm(spot - np.array([-0.45, 0.0])) < 0.7:
             return np.array([spot[0], spot[1], mine[2]])
     raise ValueError(f'no free spot beside {target} for {name}')
 
@@ -40,6 +40,6 @@ def put(name, place_pose):
     move_in_direction(direction=[0, 0, 1], distance=0.1)
 
 
-spot = spot_beside('gelatin_box', 'pear', ['white_plate', 'footed_bowl', 'white_and_yellow_mug', 'white_medication_bottle', 'golf_ball'])
-pick('pear')
-put('pear', parse_place_pose(object_name='pear', position=spot))
+spot = spot_beside('gelatin_box', 'golf_ball', ['white_plate', 'footed_bowl', 'pear', 'white_and_yellow_mug', 'white_medication_bottle'])
+pick('golf_ball')
+put('golf_ball', parse_place_pose(object_name='golf_ball', position=spot))

@@ -1,7 +1,7 @@
-# Task: move the white medication bottle next to the blue cup
+# Task: put the blue mug next to the white medication bottle
 # Plan:
-# 1. Find a free place on the table beside the blue cup.
-# 2. Pick up the white medication bottle and put it down there.
+# 1. Find a free place on the table beside the white medication bottle.
+# 2. Pick up the blue mug and put it down there.
 detect_objects()
 
 
@@ -17,7 +17,7 @@ def spot_beside(target, name, obstacles):
         low, high = spot - half - 0.015, spot + half + 0.015
         if any(low[0] < o[3] and o[0] < high[0] and low[1] < o[4] and o[1] < high[1] for o in others):
             continue
-        if 0.28 < np.linalg.norm(spot - np.array([-0.45, 0.0])) < 0.7:
+        if 0.3 < np.linalg.norm(spot - np.array([-0.45, 0.0])) < 0.7:
             return np.array([spot[0], spot[1], mine[2]])
     raise ValueError(f'no free spot beside {target} for {name}')
 
@@ -40,6 +40,6 @@ def put(name, place_pose):
     move_in_direction(direction=[0, 0, 1], distance=0.1)
 
 
-spot = spot_beside('blue_cup', 'white_medication_bottle', ['pink_saucer', 'blue_saucer', 'blue_mug', 'gelatin_box', 'blue_box'])
-pick('white_medication_bottle')
-put('white_medication_bottle', parse_place_pose(object_name='white_medication_bottle', position=spot))
+spot = spot_beside('white_medication_bottle', 'blue_mug', ['pink_saucer', 'blue_saucer', 'blue_cup', 'gelatin_box', 'blue_box'])
+pick('blue_mug')
+put('blue_mug', parse_place_pose(object_name='blue_mug', position=spot))

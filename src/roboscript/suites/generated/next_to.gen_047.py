@@ -1,7 +1,7 @@
-# Task: put the white and pink box next to the peach
+# Task: put the white porcelain mug next to the brown cup
 # Plan:
-# 1. Find a free place on the table beside the peach.
-# 2. Pick up the white and pink box and put it down there.
+# 1. Find a free place on the table beside the brown cup.
+# 2. Pick up the white porcelain mug and put it down there.
 detect_objects()
 
 
@@ -17,7 +17,7 @@ def spot_beside(target, name, obstacles):
         low, high = spot - half - 0.015, spot + half + 0.015
         if any(low[0] < o[3] and o[0] < high[0] and low[1] < o[4] and o[1] < high[1] for o in others):
             continue
-        if 0.28 < np.linalg.norm(spot - np.array([-0.45, 0.0])) < 0.7:
+        if 0.3 < np.linalg.norm(spot - np.array([-0.45, 0.0])) < 0.7:
             return np.array([spot[0], spot[1], mine[2]])
     raise ValueError(f'no free spot beside {target} for {name}')
 
@@ -40,6 +40,6 @@ def put(name, place_pose):
     move_in_direction(direction=[0, 0, 1], distance=0.1)
 
 
-spot = spot_beside('peach', 'white_and_pink_box', ['green_bowl', 'blue_saucer', 'blue_box', 'white_mug', 'orange'])
-pick('white_and_pink_box')
-put('white_and_pink_box', parse_place_pose(object_name='white_and_pink_box', position=spot))
+spot = spot_beside('brown_cup', 'white_porcelain_mug', ['green_bowl', 'blue_saucer', 'red_cup', 'green_block', 'toy_car'])
+pick('white_porcelain_mug')
+put('white_porcelain_mug', parse_place_pose(object_name='white_porcelain_mug', position=spot))

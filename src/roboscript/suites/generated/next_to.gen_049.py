@@ -1,6 +1,6 @@
-# Task: put the green mug next to the rubiks cube
+# Task: put the green mug next to the toy bus
 # Plan:
-# 1. Find a free place on the table beside the rubiks cube.
+# 1. Find a free place on the table beside the toy bus.
 # 2. Pick up the green mug and put it down there.
 detect_objects()
 
@@ -17,7 +17,7 @@ def spot_beside(target, name, obstacles):
         low, high = spot - half - 0.015, spot + half + 0.015
         if any(low[0] < o[3] and o[0] < high[0] and low[1] < o[4] and o[1] < high[1] for o in others):
             continue
-        if 0.28 < np.linalg.norm(spot - np.array([-0.45, 0.0])) < 0.7:
+        if 0.3 < np.linalg.norm(spot - np.array([-0.45, 0.0])) < 0.7:
             return np.array([spot[0], spot[1], mine[2]])
     raise ValueError(f'no free spot beside {target} for {name}')
 
@@ -40,6 +40,6 @@ def put(name, place_pose):
     move_in_direction(direction=[0, 0, 1], distance=0.1)
 
 
-spot = spot_beside('rubiks_cube', 'green_mug', ['white_bowl', 'white_cup', 'toy_bus', 'pear', 'cabinet'])
+spot = spot_beside('toy_bus', 'green_mug', ['white_bowl', 'rubiks_cube', 'white_cup', 'pear', 'cabinet'])
 pick('green_mug')
 put('green_mug', parse_place_pose(object_name='green_mug', position=spot))

@@ -1,6 +1,6 @@
-# Task: move the plum next to the white mug
+# Task: move the plum next to the tea box
 # Plan:
-# 1. Find a free place on the table beside the white mug.
+# 1. Find a free place on the table beside the tea box.
 # 2. Pick up the plum and put it down there.
 detect_objects()
 
@@ -17,7 +17,7 @@ def spot_beside(target, name, obstacles):
         low, high = spot - half - 0.015, spot + half + 0.015
         if any(low[0] < o[3] and o[0] < high[0] and low[1] < o[4] and o[1] < high[1] for o in others):
             continue
-        if 0.28 < np.linalg.norm(spot - np.array([-0.45, 0.0])) < 0.7:
+        if 0.3 < np.linalg.norm(spot - np.array([-0.45, 0.0])) < 0.7:
             return np.array([spot[0], spot[1], mine[2]])
     raise ValueError(f'no free spot beside {target} for {name}')
 
@@ -40,6 +40,6 @@ def put(name, place_pose):
     move_in_direction(direction=[0, 0, 1], distance=0.1)
 
 
-spot = spot_beside('white_mug', 'plum', ['white_plate', 'pink_saucer', 'lime', 'wooden_block', 'tea_box'])
+spot = spot_beside('tea_box', 'plum', ['white_plate', 'pink_saucer', 'lime', 'white_mug', 'wooden_block'])
 pick('plum')
 put('plum', parse_place_pose(object_name='plum', position=spot))

@@ -1,7 +1,7 @@
-# Task: put the white porcelain mug next to the green plate
+# Task: put the green apple next to the pink saucer
 # Plan:
-# 1. Find a free place on the table beside the green plate.
-# 2. Pick up the white porcelain mug and put it down there.
+# 1. Find a free place on the table beside the pink saucer.
+# 2. Pick up the green apple and put it down there.
 detect_objects()
 
 
@@ -17,7 +17,7 @@ def spot_beside(target, name, obstacles):
         low, high = spot - half - 0.015, spot + half + 0.015
         if any(low[0] < o[3] and o[0] < high[0] and low[1] < o[4] and o[1] < high[1] for o in others):
             continue
-        if 0.28 < np.linalg.norm(spot - np.array([-0.45, 0.0])) < 0.7:
+        if 0.3 < np.linalg.norm(spot - np.array([-0.45, 0.0])) < 0.7:
             return np.array([spot[0], spot[1], mine[2]])
     raise ValueError(f'no free spot beside {target} for {name}')
 
@@ -40,6 +40,6 @@ def put(name, place_pose):
     move_in_direction(direction=[0, 0, 1], distance=0.1)
 
 
-spot = spot_beside('green_plate', 'white_porcelain_mug', ['white_plate', 'pink_saucer', 'white_cup', 'green_cup', 'green_block', 'white_medication_bottle'])
-pick('white_porcelain_mug')
-put('white_porcelain_mug', parse_place_pose(object_name='white_porcelain_mug', position=spot))
+spot = spot_beside('pink_saucer', 'green_apple', ['green_plate', 'white_plate', 'white_medication_bottle', 'red_mug'])
+pick('green_apple')
+put('green_apple', parse_place_pose(object_name='green_apple', position=spot))

@@ -1,6 +1,6 @@
-# Task: set the rubiks cube down on the white saucer
+# Task: put the green block on the white saucer
 # Plan:
-# 1. Pick up the rubiks cube and put it onto the white saucer.
+# 1. Pick up the green block and put it onto the white saucer.
 detect_objects()
 
 
@@ -22,5 +22,5 @@ def put(name, place_pose):
     move_in_direction(direction=[0, 0, 1], distance=0.1)
 
 
-pick('rubiks_cube')
-put('rubiks_cube', parse_place_pose(object_name='rubiks_cube', receptacle_name='white_saucer'))
+pick('green_block')
+put('green_block', parse_place_pose(object_name='green_block', receptacle_name='white_saucer'))

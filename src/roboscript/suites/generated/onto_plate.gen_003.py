@@ -1,6 +1,6 @@
-# Task: place the white medication bottle onto the green plate
+# Task: place the golf ball onto the green plate
 # Plan:
-# 1. Pick up the white medication bottle and put it onto the green plate.
+# 1. Pick up the golf ball and put it onto the green plate.
 detect_objects()
 
 
@@ -22,5 +22,5 @@ def put(name, place_pose):
     move_in_direction(direction=[0, 0, 1], distance=0.1)
 
 
-pick('white_medication_bottle')
-put('white_medication_bottle', parse_place_pose(object_name='white_medication_bottle', receptacle_name='green_plate'))
+pick('golf_ball')
+put('golf_ball', parse_place_pose(object_name='golf_ball', receptacle_name='green_plate'))

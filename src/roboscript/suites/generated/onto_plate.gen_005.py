@@ -1,6 +1,6 @@
-# Task: set the sponge down on the yellow plate
+# Task: set the rubiks cube down on the yellow plate
 # Plan:
-# 1. Pick up the sponge and put it onto the yellow plate.
+# 1. Pick up the rubiks cube and put it onto the yellow plate.
 detect_objects()
 
 
@@ -22,5 +22,5 @@ def put(name, place_pose):
     move_in_direction(direction=[0, 0, 1], distance=0.1)
 
 
-pick('sponge')
-put('sponge', parse_place_pose(object_name='sponge', receptacle_name='yellow_plate'))
+pick('rubiks_cube')
+put('rubiks_cube', parse_place_pose(object_name='rubiks_cube', receptacle_name='yellow_plate'))

@@ -1,6 +1,6 @@
-# Task: set the plum down on the pink saucer
+# Task: set the golf ball down on the pink saucer
 # Plan:
-# 1. Pick up the plum and put it onto the pink saucer.
+# 1. Pick up the golf ball and put it onto the pink saucer.
 detect_objects()
 
 
@@ -22,5 +22,5 @@ def put(name, place_pose):
     move_in_direction(direction=[0, 0, 1], distance=0.1)
 
 
-pick('plum')
-put('plum', parse_place_pose(object_name='plum', receptacle_name='pink_saucer'))
+pick('golf_ball')
+put('golf_ball', parse_place_pose(object_name='golf_ball', receptacle_name='pink_saucer'))

@@ -1,6 +1,6 @@
-# Task: put the green cup on the red plate
+# Task: place the lime onto the red plate
 # Plan:
-# 1. Pick up the green cup and put it onto the red plate.
+# 1. Pick up the lime and put it onto the red plate.
 detect_objects()
 
 
@@ -22,5 +22,5 @@ def put(name, place_pose):
     move_in_direction(direction=[0, 0, 1], distance=0.1)
 
 
-pick('green_cup')
-put('green_cup', parse_place_pose(object_name='green_cup', receptacle_name='red_plate'))
+pick('lime')
+put('lime', parse_place_pose(object_name='lime', receptacle_name='red_plate'))

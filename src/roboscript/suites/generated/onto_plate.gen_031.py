@@ -1,6 +1,6 @@
-# Task: put the yellow mug on the yellow plate
+# Task: put the yellow box on the yellow plate
 # Plan:
-# 1. Pick up the yellow mug and put it onto the yellow plate.
+# 1. Pick up the yellow box and put it onto the yellow plate.
 detect_objects()
 
 
@@ -22,5 +22,5 @@ def put(name, place_pose):
     move_in_direction(direction=[0, 0, 1], distance=0.1)
 
 
-pick('yellow_mug')
-put('yellow_mug', parse_place_pose(object_name='yellow_mug', receptacle_name='yellow_plate'))
+pick('yellow_box')
+put('yellow_box', parse_place_pose(object_name='yellow_box', receptacle_name='yellow_plate'))

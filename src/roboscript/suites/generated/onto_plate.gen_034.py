@@ -1,6 +1,6 @@
-# Task: set the white porcelain mug down on the green plate
+# Task: set the red box down on the green plate
 # Plan:
-# 1. Pick up the white porcelain mug and put it onto the green plate.
+# 1. Pick up the red box and put it onto the green plate.
 detect_objects()
 
 
@@ -22,5 +22,5 @@ def put(name, place_pose):
     move_in_direction(direction=[0, 0, 1], distance=0.1)
 
 
-pick('white_porcelain_mug')
-put('white_porcelain_mug', parse_place_pose(object_name='white_porcelain_mug', receptacle_name='green_plate'))
+pick('red_box')
+put('red_box', parse_place_pose(object_name='red_box', receptacle_name='green_plate'))

@@ -1,6 +1,6 @@
-# Task: put the plum on the red plate
+# Task: place the blue block onto the blue saucer
 # Plan:
-# 1. Pick up the plum and put it onto the red plate.
+# 1. Pick up the blue block and put it onto the blue saucer.
 detect_objects()
 
 
@@ -22,5 +22,5 @@ def put(name, place_pose):
     move_in_direction(direction=[0, 0, 1], distance=0.1)
 
 
-pick('plum')
-put('plum', parse_place_pose(object_name='plum', receptacle_name='red_plate'))
+pick('blue_block')
+put('blue_block', parse_place_pose(object_name='blue_block', receptacle_name='blue_saucer'))

@@ -1,6 +1,6 @@
-# Task: set the brown box down on the white plate
+# Task: put the pear on the white plate
 # Plan:
-# 1. Pick up the brown box and put it onto the white plate.
+# 1. Pick up the pear and put it onto the white plate.
 detect_objects()
 
 
@@ -22,5 +22,5 @@ def put(name, place_pose):
     move_in_direction(direction=[0, 0, 1], distance=0.1)
 
 
-pick('brown_box')
-put('brown_box', parse_place_pose(object_name='brown_box', receptacle_name='white_plate'))
+pick('pear')
+put('pear', parse_place_pose(object_name='pear', receptacle_name='white_plate'))

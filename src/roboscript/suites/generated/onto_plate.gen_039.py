@@ -1,6 +1,6 @@
-# Task: set the toy car down on the red plate
+# Task: set the brown mug down on the red plate
 # Plan:
-# 1. Pick up the toy car and put it onto the red plate.
+# 1. Pick up the brown mug and put it onto the red plate.
 detect_objects()
 
 
@@ -22,5 +22,5 @@ def put(name, place_pose):
     move_in_direction(direction=[0, 0, 1], distance=0.1)
 
 
-pick('toy_car')
-put('toy_car', parse_place_pose(object_name='toy_car', receptacle_name='red_plate'))
+pick('brown_mug')
+put('brown_mug', parse_place_pose(object_name='brown_mug', receptacle_name='red_plate'))

@@ -1,6 +1,6 @@
-# Task: put the blue cup on the blue plate
+# Task: place the lemon onto the blue plate
 # Plan:
-# 1. Pick up the blue cup and put it onto the blue plate.
+# 1. Pick up the lemon and put it onto the blue plate.
 detect_objects()
 
 
@@ -22,5 +22,5 @@ def put(name, place_pose):
     move_in_direction(direction=[0, 0, 1], distance=0.1)
 
 
-pick('blue_cup')
-put('blue_cup', parse_place_pose(object_name='blue_cup', receptacle_name='blue_plate'))
+pick('lemon')
+put('lemon', parse_place_pose(object_name='lemon', receptacle_name='blue_plate'))

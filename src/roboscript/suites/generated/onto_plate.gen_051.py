@@ -1,6 +1,6 @@
-# Task: place the strawberry onto the blue saucer
+# Task: set the strawberry down on the white saucer
 # Plan:
-# 1. Pick up the strawberry and put it onto the blue saucer.
+# 1. Pick up the strawberry and put it onto the white saucer.
 detect_objects()
 
 
@@ -23,4 +23,4 @@ def put(name, place_pose):
 
 
 pick('strawberry')
-put('strawberry', parse_place_pose(object_name='strawberry', receptacle_name='blue_saucer'))
+put('strawberry', parse_place_pose(object_name='strawberry', receptacle_name='white_saucer'))

@@ -1,6 +1,6 @@
-# Task: place the green cup onto the white plate
+# Task: place the white medication bottle onto the white plate
 # Plan:
-# 1. Pick up the green cup and put it onto the white plate.
+# 1. Pick up the white medication bottle and put it onto the white plate.
 detect_objects()
 
 
@@ -22,5 +22,5 @@ def put(name, place_pose):
     move_in_direction(direction=[0, 0, 1], distance=0.1)
 
 
-pick('green_cup')
-put('green_cup', parse_place_pose(object_name='green_cup', receptacle_name='white_plate'))
+pick('white_medication_bottle')
+put('white_medication_bottle', parse_place_pose(object_name='white_medication_bottle', receptacle_name='white_plate'))

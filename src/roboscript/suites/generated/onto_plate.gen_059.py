@@ -1,6 +1,6 @@
-# Task: place the blue block onto the blue plate
+# Task: put the blue mug on the blue plate
 # Plan:
-# 1. Pick up the blue block and put it onto the blue plate.
+# 1. Pick up the blue mug and put it onto the blue plate.
 detect_objects()
 
 
@@ -22,5 +22,5 @@ def put(name, place_pose):
     move_in_direction(direction=[0, 0, 1], distance=0.1)
 
 
-pick('blue_block')
-put('blue_block', parse_place_pose(object_name='blue_block', receptacle_name='blue_plate'))
+pick('blue_mug')
+put('blue_mug', parse_place_pose(object_name='blue_mug', receptacle_name='blue_plate'))

@@ -1,6 +1,6 @@
-# Task: sort the objects on the table by colour: put the yellow objects on the yellow plate
+# Task: sort the objects on the table by colour: put the white objects on the white saucer
 # Plan:
-# 1. Pick up the sponge and put it onto the yellow plate.
+# 1. Pick up the rubiks cube and put it onto the white saucer.
 detect_objects()
 
 
@@ -22,5 +22,5 @@ def put(name, place_pose):
     move_in_direction(direction=[0, 0, 1], distance=0.1)
 
 
-pick('sponge')
-put('sponge', parse_place_pose(object_name='sponge', receptacle_name='yellow_plate'))
+pick('rubiks_cube')
+put('rubiks_cube', parse_place_pose(object_name='rubiks_cube', receptacle_name='white_saucer'))

@@ -1,6 +1,8 @@
-# Task: sort the objects on the table by colour: put the red objects on the red plate
+# Task: sort the objects on the table by colour: put the red objects on the red plate and the green objects on the green plate
 # Plan:
-# 1. Pick up the red cup and put it onto the red plate.
+# 1. Pick up the red block and put it onto the red plate.
+# 2. Pick up the green block and put it onto the green plate.
+# 3. Pick up the lime and put it onto the green plate.
 detect_objects()
 
 
@@ -22,5 +24,9 @@ def put(name, place_pose):
     move_in_direction(direction=[0, 0, 1], distance=0.1)
 
 
-pick('red_cup')
-put('red_cup', parse_place_pose(object_name='red_cup', receptacle_name='red_plate'))
+pick('red_block')
+put('red_block', parse_place_pose(object_name='red_block', receptacle_name='red_plate'))
+pick('green_block')
+put('green_block', parse_place_pose(object_name='green_block', receptacle_name='green_plate'))
+pick('lime')
+put('lime', parse_place_pose(object_name='lime', receptacle_name='green_plate'))

@@ -1,7 +1,6 @@
-# Task: sort the objects on the table by colour: put the white objects on the white plate and the yellow objects on the yellow plate
+# Task: sort the objects on the table by colour: put the white objects on the white plate
 # Plan:
 # 1. Pick up the white mug and put it onto the white plate.
-# 2. Pick up the lemon and put it onto the yellow plate.
 detect_objects()
 
 
@@ -25,5 +24,3 @@ def put(name, place_pose):
 
 pick('white_mug')
 put('white_mug', parse_place_pose(object_name='white_mug', receptacle_name='white_plate'))
-pick('lemon')
-put('lemon', parse_place_pose(object_name='lemon', receptacle_name='yellow_plate'))

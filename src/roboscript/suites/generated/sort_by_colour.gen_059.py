@@ -1,6 +1,6 @@
-# Task: sort the objects on the table by colour: put the blue objects on the blue plate
+# Task: sort the objects on the table by colour: put the green objects into the green bowl
 # Plan:
-# 1. Pick up the blue block and put it onto the blue plate.
+# 1. Pick up the lime and put it into the green bowl.
 detect_objects()
 
 
@@ -22,5 +22,5 @@ def put(name, place_pose):
     move_in_direction(direction=[0, 0, 1], distance=0.1)
 
 
-pick('blue_block')
-put('blue_block', parse_place_pose(object_name='blue_block', receptacle_name='blue_plate'))
+pick('lime')
+put('lime', parse_place_pose(object_name='lime', receptacle_name='green_bowl'))

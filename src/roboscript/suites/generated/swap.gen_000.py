@@ -1,9 +1,9 @@
-# Task: swap the positions of the gelatin box and the green cup
+# Task: exchange the places of the green block and the white cup
 # Plan:
-# 1. Remember where the gelatin box and the green cup are now.
-# 2. Put the gelatin box aside on the table, out of the way.
-# 3. Put the green cup where the gelatin box was.
-# 4. Put the gelatin box where the green cup was.
+# 1. Remember where the green block and the white cup are now.
+# 2. Put the green block aside on the table, out of the way.
+# 3. Put the white cup where the green block was.
+# 4. Put the green block where the white cup was.
 detect_objects()
 
 
@@ -25,11 +25,11 @@ def put(name, place_pose):
     move_in_direction(direction=[0, 0, 1], distance=0.1)
 
 
-gelatin_box_position = get_object_center_position('gelatin_box')
-green_cup_position = get_object_center_position('green_cup')
-pick('gelatin_box')
-put('gelatin_box', parse_place_pose(object_name='gelatin_box', receptacle_name='table'))
-pick('green_cup')
-put('green_cup', parse_place_pose(object_name='green_cup', position=gelatin_box_position))
-pick('gelatin_box')
-put('gelatin_box', parse_place_pose(object_name='gelatin_box', position=green_cup_position))
+green_block_position = get_object_center_position('green_block')
+white_cup_position = get_object_center_position('white_cup')
+pick('green_block')
+put('green_block', parse_place_pose(object_name='green_block', receptacle_name='table'))
+pick('white_cup')
+put('white_cup', parse_place_pose(object_name='white_cup', position=green_block_position))
+pick('green_block')
+put('green_block', parse_place_pose(object_name='green_block', position=white_cup_position))

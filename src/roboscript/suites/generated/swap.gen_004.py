@@ -1,9 +1,9 @@
-# Task: exchange the places of the green block and the apple
+# Task: exchange the places of the green apple and the red box
 # Plan:
-# 1. Remember where the green block and the apple are now.
-# 2. Put the green block aside on the table, out of the way.
-# 3. Put the apple where the green block was.
-# 4. Put the green block where the apple was.
+# 1. Remember where the green apple and the red box are now.
+# 2. Put the green apple aside on the table, out of the way.
+# 3. Put the red box where the green apple was.
+# 4. Put the green apple where the red box was.
 detect_objects()
 
 
@@ -25,11 +25,11 @@ def put(name, place_pose):
     move_in_direction(direction=[0, 0, 1], distance=0.1)
 
 
-green_block_position = get_object_center_position('green_block')
-apple_position = get_object_center_position('apple')
-pick('green_block')
-put('green_block', parse_place_pose(object_name='green_block', receptacle_name='table'))
-pick('apple')
-put('apple', parse_place_pose(object_name='apple', position=green_block_position))
-pick('green_block')
-put('green_block', parse_place_pose(object_name='green_block', position=apple_position))
+green_apple_position = get_object_center_position('green_apple')
+red_box_position = get_object_center_position('red_box')
+pick('green_apple')
+put('green_apple', parse_place_pose(object_name='green_apple', receptacle_name='table'))
+pick('red_box')
+put('red_box', parse_place_pose(object_name='red_box', position=green_apple_position))
+pick('green_apple')
+put('green_apple', parse_place_pose(object_name='green_apple', position=red_box_position))

@@ -1,4 +1,4 @@
-# Task: swap the positions of the toy car and the red cup
+# Task: exchange the places of the toy car and the red cup
 # Plan:
 # 1. Remember where the toy car and the red cup are now.
 # 2. Put the toy car aside on the table, out of the way.

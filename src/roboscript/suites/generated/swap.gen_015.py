@@ -1,9 +1,9 @@
-# Task: exchange the places of the wooden bar and the yellow mug
+# Task: swap the positions of the blue block and the wooden bar
 # Plan:
-# 1. Remember where the wooden bar and the yellow mug are now.
-# 2. Put the wooden bar aside on the table, out of the way.
-# 3. Put the yellow mug where the wooden bar was.
-# 4. Put the wooden bar where the yellow mug was.
+# 1. Remember where the blue block and the wooden bar are now.
+# 2. Put the blue block aside on the table, out of the way.
+# 3. Put the wooden bar where the blue block was.
+# 4. Put the blue block where the wooden bar was.
 detect_objects()
 
 
@@ -25,11 +25,11 @@ def put(name, place_pose):
     move_in_direction(direction=[0, 0, 1], distance=0.1)
 
 
+blue_block_position = get_object_center_position('blue_block')
 wooden_bar_position = get_object_center_position('wooden_bar')
-yellow_mug_position = get_object_center_position('yellow_mug')
+pick('blue_block')
+put('blue_block', parse_place_pose(object_name='blue_block', receptacle_name='table'))
 pick('wooden_bar')
-put('wooden_bar', parse_place_pose(object_name='wooden_bar', receptacle_name='table'))
-pick('yellow_mug')
-put('yellow_mug', parse_place_pose(object_name='yellow_mug', position=wooden_bar_position))
-pick('wooden_bar')
-put('wooden_bar', parse_place_pose(object_name='wooden_bar', position=yellow_mug_position))
+put('wooden_bar', parse_place_pose(object_name='wooden_bar', position=blue_block_position))
+pick('blue_block')
+put('blue_block', parse_place_pose(object_name='blue_block', position=wooden_bar_position))

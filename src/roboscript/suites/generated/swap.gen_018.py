@@ -1,9 +1,9 @@
-# Task: swap the positions of the green cup and the lime
+# Task: swap the positions of the red block and the lime
 # Plan:
-# 1. Remember where the green cup and the lime are now.
-# 2. Put the green cup aside on the table, out of the way.
-# 3. Put the lime where the green cup was.
-# 4. Put the green cup where the lime was.
+# 1. Remember where the red block and the lime are now.
+# 2. Put the red block aside on the table, out of the way.
+# 3. Put the lime where the red block was.
+# 4. Put the red block where the lime was.
 detect_objects()
 
 
@@ -25,11 +25,11 @@ def put(name, place_pose):
     move_in_direction(direction=[0, 0, 1], distance=0.1)
 
 
-green_cup_position = get_object_center_position('green_cup')
+red_block_position = get_object_center_position('red_block')
 lime_position = get_object_center_position('lime')
-pick('green_cup')
-put('green_cup', parse_place_pose(object_name='green_cup', receptacle_name='table'))
+pick('red_block')
+put('red_block', parse_place_pose(object_name='red_block', receptacle_name='table'))
 pick('lime')
-put('lime', parse_place_pose(object_name='lime', position=green_cup_position))
-pick('green_cup')
-put('green_cup', parse_place_pose(object_name='green_cup', position=lime_position))
+put('lime', parse_place_pose(object_name='lime', position=red_block_position))
+pick('red_block')
+put('red_block', parse_place_pose(object_name='red_block', position=lime_position))

@@ -1,4 +1,4 @@
-# Task: swap the positions of the pear and the brown medication bottle
+# Task: exchange the places of the pear and the brown medication bottle
 # Plan:
 # 1. Remember where the pear and the brown medication bottle are now.
 # 2. Put the pear aside on the table, out of the way.

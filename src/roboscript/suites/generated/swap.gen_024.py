@@ -1,9 +1,9 @@
-# Task: exchange the places of the baseball and the sponge
+# Task: exchange the places of the red cup and the rubiks cube
 # Plan:
-# 1. Remember where the baseball and the sponge are now.
-# 2. Put the baseball aside on the table, out of the way.
-# 3. Put the sponge where the baseball was.
-# 4. Put the baseball where the sponge was.
+# 1. Remember where the red cup and the rubiks cube are now.
+# 2. Put the red cup aside on the table, out of the way.
+# 3. Put the rubiks cube where the red cup was.
+# 4. Put the red cup where the rubiks cube was.
 detect_objects()
 
 
@@ -25,11 +25,11 @@ def put(name, place_pose):
     move_in_direction(direction=[0, 0, 1], distance=0.1)
 
 
-baseball_position = get_object_center_position('baseball')
-sponge_position = get_object_center_position('sponge')
-pick('baseball')
-put('baseball', parse_place_pose(object_name='baseball', receptacle_name='table'))
-pick('sponge')
-put('sponge', parse_place_pose(object_name='sponge', position=baseball_position))
-pick('baseball')
-put('baseball', parse_place_pose(object_name='baseball', position=sponge_position))
+red_cup_position = get_object_center_position('red_cup')
+rubiks_cube_position = get_object_center_position('rubiks_cube')
+pick('red_cup')
+put('red_cup', parse_place_pose(object_name='red_cup', receptacle_name='table'))
+pick('rubiks_cube')
+put('rubiks_cube', parse_place_pose(object_name='rubiks_cube', position=red_cup_position))
+pick('red_cup')
+put('red_cup', parse_place_pose(object_name='red_cup', position=rubiks_cube_position))

@@ -1,9 +1,9 @@
-# Task: swap the positions of the red box and the toy car
+# Task: swap the positions of the green mug and the toy car
 # Plan:
-# 1. Remember where the red box and the toy car are now.
-# 2. Put the red box aside on the table, out of the way.
-# 3. Put the toy car where the red box was.
-# 4. Put the red box where the toy car was.
+# 1. Remember where the green mug and the toy car are now.
+# 2. Put the green mug aside on the table, out of the way.
+# 3. Put the toy car where the green mug was.
+# 4. Put the green mug where the toy car was.
 detect_objects()
 
 
@@ -25,11 +25,11 @@ def put(name, place_pose):
     move_in_direction(direction=[0, 0, 1], distance=0.1)
 
 
-red_box_position = get_object_center_position('red_box')
+green_mug_position = get_object_center_position('green_mug')
 toy_car_position = get_object_center_position('toy_car')
-pick('red_box')
-put('red_box', parse_place_pose(object_name='red_box', receptacle_name='table'))
+pick('green_mug')
+put('green_mug', parse_place_pose(object_name='green_mug', receptacle_name='table'))
 pick('toy_car')
-put('toy_car', parse_place_pose(object_name='toy_car', position=red_box_position))
-pick('red_box')
-put('red_box', parse_place_pose(object_name='red_box', position=toy_car_position))
+put('toy_car', parse_place_pose(object_name='toy_car', position=green_mug_position))
+pick('green_mug')
+put('green_mug', parse_place_pose(object_name='green_mug', position=toy_car_position))

@@ -1,9 +1,9 @@
-# Task: swap the positions of the brown ceramic cup and the brown cup
+# Task: swap the positions of the pear and the medication bottle
 # Plan:
-# 1. Remember where the brown ceramic cup and the brown cup are now.
-# 2. Put the brown ceramic cup aside on the table, out of the way.
-# 3. Put the brown cup where the brown ceramic cup was.
-# 4. Put the brown ceramic cup where the brown cup was.
+# 1. Remember where the pear and the medication bottle are now.
+# 2. Put the pear aside on the table, out of the way.
+# 3. Put the medication bottle where the pear was.
+# 4. Put the pear where the medication bottle was.
 detect_objects()
 
 
@@ -25,11 +25,11 @@ def put(name, place_pose):
     move_in_direction(direction=[0, 0, 1], distance=0.1)
 
 
-brown_ceramic_cup_position = get_object_center_position('brown_ceramic_cup')
-brown_cup_position = get_object_center_position('brown_cup')
-pick('brown_ceramic_cup')
-put('brown_ceramic_cup', parse_place_pose(object_name='brown_ceramic_cup', receptacle_name='table'))
-pick('brown_cup')
-put('brown_cup', parse_place_pose(object_name='brown_cup', position=brown_ceramic_cup_position))
-pick('brown_ceramic_cup')
-put('brown_ceramic_cup', parse_place_pose(object_name='brown_ceramic_cup', position=brown_cup_position))
+pear_position = get_object_center_position('pear')
+medication_bottle_position = get_object_center_position('medication_bottle')
+pick('pear')
+put('pear', parse_place_pose(object_name='pear', receptacle_name='table'))
+pick('medication_bottle')
+put('medication_bottle', parse_place_pose(object_name='medication_bottle', position=pear_position))
+pick('pear')
+put('pear', parse_place_pose(object_name='pear', position=medication_bottle_position))

@@ -1,9 +1,9 @@
-# Task: exchange the places of the wooden bar and the red box
+# Task: exchange the places of the tea box and the lemon
 # Plan:
-# 1. Remember where the wooden bar and the red box are now.
-# 2. Put the wooden bar aside on the table, out of the way.
-# 3. Put the red box where the wooden bar was.
-# 4. Put the wooden bar where the red box was.
+# 1. Remember where the tea box and the lemon are now.
+# 2. Put the tea box aside on the table, out of the way.
+# 3. Put the lemon where the tea box was.
+# 4. Put the tea box where the lemon was.
 detect_objects()
 
 
@@ -25,11 +25,11 @@ def put(name, place_pose):
     move_in_direction(direction=[0, 0, 1], distance=0.1)
 
 
-wooden_bar_position = get_object_center_position('wooden_bar')
-red_box_position = get_object_center_position('red_box')
-pick('wooden_bar')
-put('wooden_bar', parse_place_pose(object_name='wooden_bar', receptacle_name='table'))
-pick('red_box')
-put('red_box', parse_place_pose(object_name='red_box', position=wooden_bar_position))
-pick('wooden_bar')
-put('wooden_bar', parse_place_pose(object_name='wooden_bar', position=red_box_position))
+tea_box_position = get_object_center_position('tea_box')
+lemon_position = get_object_center_position('lemon')
+pick('tea_box')
+put('tea_box', parse_place_pose(object_name='tea_box', receptacle_name='table'))
+pick('lemon')
+put('lemon', parse_place_pose(object_name='lemon', position=tea_box_position))
+pick('tea_box')
+put('tea_box', parse_place_pose(object_name='tea_box', position=lemon_position))

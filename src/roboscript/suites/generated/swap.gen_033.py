@@ -1,9 +1,9 @@
-# Task: exchange the places of the peach and the sponge
+# Task: exchange the places of the golf ball and the blue box
 # Plan:
-# 1. Remember where the peach and the sponge are now.
-# 2. Put the peach aside on the table, out of the way.
-# 3. Put the sponge where the peach was.
-# 4. Put the peach where the sponge was.
+# 1. Remember where the golf ball and the blue box are now.
+# 2. Put the golf ball aside on the table, out of the way.
+# 3. Put the blue box where the golf ball was.
+# 4. Put the golf ball where the blue box was.
 detect_objects()
 
 
@@ -25,11 +25,11 @@ def put(name, place_pose):
     move_in_direction(direction=[0, 0, 1], distance=0.1)
 
 
-peach_position = get_object_center_position('peach')
-sponge_position = get_object_center_position('sponge')
-pick('peach')
-put('peach', parse_place_pose(object_name='peach', receptacle_name='table'))
-pick('sponge')
-put('sponge', parse_place_pose(object_name='sponge', position=peach_position))
-pick('peach')
-put('peach', parse_place_pose(object_name='peach', position=sponge_position))
+golf_ball_position = get_object_center_position('golf_ball')
+blue_box_position = get_object_center_position('blue_box')
+pick('golf_ball')
+put('golf_ball', parse_place_pose(object_name='golf_ball', receptacle_name='table'))
+pick('blue_box')
+put('blue_box', parse_place_pose(object_name='blue_box', position=golf_ball_position))
+pick('golf_ball')
+put('golf_ball', parse_place_pose(object_name='golf_ball', position=blue_box_position))

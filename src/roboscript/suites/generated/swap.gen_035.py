@@ -1,9 +1,9 @@
-# Task: exchange the places of the rubiks cube and the white cup
+# Task: swap the positions of the red block and the white cup
 # Plan:
-# 1. Remember where the rubiks cube and the white cup are now.
-# 2. Put the rubiks cube aside on the table, out of the way.
-# 3. Put the white cup where the rubiks cube was.
-# 4. Put the rubiks cube where the white cup was.
+# 1. Remember where the red block and the white cup are now.
+# 2. Put the red block aside on the table, out of the way.
+# 3. Put the white cup where the red block was.
+# 4. Put the red block where the white cup was.
 detect_objects()
 
 
@@ -25,11 +25,11 @@ def put(name, place_pose):
     move_in_direction(direction=[0, 0, 1], distance=0.1)
 
 
-rubiks_cube_position = get_object_center_position('rubiks_cube')
+red_block_position = get_object_center_position('red_block')
 white_cup_position = get_object_center_position('white_cup')
-pick('rubiks_cube')
-put('rubiks_cube', parse_place_pose(object_name='rubiks_cube', receptacle_name='table'))
+pick('red_block')
+put('red_block', parse_place_pose(object_name='red_block', receptacle_name='table'))
 pick('white_cup')
-put('white_cup', parse_place_pose(object_name='white_cup', position=rubiks_cube_position))
-pick('rubiks_cube')
-put('rubiks_cube', parse_place_pose(object_name='rubiks_cube', position=white_cup_position))
+put('white_cup', parse_place_pose(object_name='white_cup', position=red_block_position))
+pick('red_block')
+put('red_block', parse_place_pose(object_name='red_block', position=white_cup_position))

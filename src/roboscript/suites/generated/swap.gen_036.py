@@ -1,4 +1,4 @@
-# Task: swap the positions of the green block and the strawberry
+# Task: exchange the places of the green block and the strawberry
 # Plan:
 # 1. Remember where the green block and the strawberry are now.
 # 2. Put the green block aside on the table, out of the way.

@@ -1,9 +1,9 @@
-# Task: exchange the places of the rubiks cube and the plum
+# Task: swap the positions of the blue block and the apple
 # Plan:
-# 1. Remember where the rubiks cube and the plum are now.
-# 2. Put the rubiks cube aside on the table, out of the way.
-# 3. Put the plum where the rubiks cube was.
-# 4. Put the rubiks cube where the plum was.
+# 1. Remember where the blue block and the apple are now.
+# 2. Put the blue block aside on the table, out of the way.
+# 3. Put the apple where the blue block was.
+# 4. Put the blue block where the apple was.
 detect_objects()
 
 
@@ -25,11 +25,11 @@ def put(name, place_pose):
     move_in_direction(direction=[0, 0, 1], distance=0.1)
 
 
-rubiks_cube_position = get_object_center_position('rubiks_cube')
-plum_position = get_object_center_position('plum')
-pick('rubiks_cube')
-put('rubiks_cube', parse_place_pose(object_name='rubiks_cube', receptacle_name='table'))
-pick('plum')
-put('plum', parse_place_pose(object_name='plum', position=rubiks_cube_position))
-pick('rubiks_cube')
-put('rubiks_cube', parse_place_pose(object_name='rubiks_cube', position=plum_position))
+blue_block_position = get_object_center_position('blue_block')
+apple_position = get_object_center_position('apple')
+pick('blue_block')
+put('blue_block', parse_place_pose(object_name='blue_block', receptacle_name='table'))
+pick('apple')
+put('apple', parse_place_pose(object_name='apple', position=blue_block_position))
+pick('blue_block')
+put('blue_block', parse_place_pose(object_name='blue_block', position=apple_position))

@@ -1,9 +1,9 @@
-# Task: exchange the places of the gelatin box and the toy car
+# Task: exchange the places of the brown mug and the toy bus
 # Plan:
-# 1. Remember where the gelatin box and the toy car are now.
-# 2. Put the gelatin box aside on the table, out of the way.
-# 3. Put the toy car where the gelatin box was.
-# 4. Put the gelatin box where the toy car was.
+# 1. Remember where the brown mug and the toy bus are now.
+# 2. Put the brown mug aside on the table, out of the way.
+# 3. Put the toy bus where the brown mug was.
+# 4. Put the brown mug where the toy bus was.
 detect_objects()
 
 
@@ -25,11 +25,11 @@ def put(name, place_pose):
     move_in_direction(direction=[0, 0, 1], distance=0.1)
 
 
-gelatin_box_position = get_object_center_position('gelatin_box')
-toy_car_position = get_object_center_position('toy_car')
-pick('gelatin_box')
-put('gelatin_box', parse_place_pose(object_name='gelatin_box', receptacle_name='table'))
-pick('toy_car')
-put('toy_car', parse_place_pose(object_name='toy_car', position=gelatin_box_position))
-pick('gelatin_box')
-put('gelatin_box', parse_place_pose(object_name='gelatin_box', position=toy_car_position))
+brown_mug_position = get_object_center_position('brown_mug')
+toy_bus_position = get_object_center_position('toy_bus')
+pick('brown_mug')
+put('brown_mug', parse_place_pose(object_name='brown_mug', receptacle_name='table'))
+pick('toy_bus')
+put('toy_bus', parse_place_pose(object_name='toy_bus', position=brown_mug_position))
+pick('brown_mug')
+put('brown_mug', parse_place_pose(object_name='brown_mug', position=toy_bus_position))

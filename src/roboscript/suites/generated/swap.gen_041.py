@@ -1,9 +1,9 @@
-# Task: swap the positions of the red block and the gelatin box
+# Task: exchange the places of the gelatin box and the red mug
 # Plan:
-# 1. Remember where the red block and the gelatin box are now.
-# 2. Put the red block aside on the table, out of the way.
-# 3. Put the gelatin box where the red block was.
-# 4. Put the red block where the gelatin box was.
+# 1. Remember where the gelatin box and the red mug are now.
+# 2. Put the gelatin box aside on the table, out of the way.
+# 3. Put the red mug where the gelatin box was.
+# 4. Put the gelatin box where the red mug was.
 detect_objects()
 
 
@@ -25,11 +25,11 @@ def put(name, place_pose):
     move_in_direction(direction=[0, 0, 1], distance=0.1)
 
 
-red_block_position = get_object_center_position('red_block')
 gelatin_box_position = get_object_center_position('gelatin_box')
-pick('red_block')
-put('red_block', parse_place_pose(object_name='red_block', receptacle_name='table'))
+red_mug_position = get_object_center_position('red_mug')
 pick('gelatin_box')
-put('gelatin_box', parse_place_pose(object_name='gelatin_box', position=red_block_position))
-pick('red_block')
-put('red_block', parse_place_pose(object_name='red_block', position=gelatin_box_position))
+put('gelatin_box', parse_place_pose(object_name='gelatin_box', receptacle_name='table'))
+pick('red_mug')
+put('red_mug', parse_place_pose(object_name='red_mug', position=gelatin_box_position))
+pick('gelatin_box')
+put('gelatin_box', parse_place_pose(object_name='gelatin_box', position=red_mug_position))

@@ -1,9 +1,9 @@
-# Task: swap the positions of the gelatin box and the golf ball
+# Task: exchange the places of the pear and the gelatin box
 # Plan:
-# 1. Remember where the gelatin box and the golf ball are now.
-# 2. Put the gelatin box aside on the table, out of the way.
-# 3. Put the golf ball where the gelatin box was.
-# 4. Put the gelatin box where the golf ball was.
+# 1. Remember where the pear and the gelatin box are now.
+# 2. Put the pear aside on the table, out of the way.
+# 3. Put the gelatin box where the pear was.
+# 4. Put the pear where the gelatin box was.
 detect_objects()
 
 
@@ -25,11 +25,11 @@ def put(name, place_pose):
     move_in_direction(direction=[0, 0, 1], distance=0.1)
 
 
+pear_position = get_object_center_position('pear')
 gelatin_box_position = get_object_center_position('gelatin_box')
-golf_ball_position = get_object_center_position('golf_ball')
+pick('pear')
+put('pear', parse_place_pose(object_name='pear', receptacle_name='table'))
 pick('gelatin_box')
-put('gelatin_box', parse_place_pose(object_name='gelatin_box', receptacle_name='table'))
-pick('golf_ball')
-put('golf_ball', parse_place_pose(object_name='golf_ball', position=gelatin_box_position))
-pick('gelatin_box')
-put('gelatin_box', parse_place_pose(object_name='gelatin_box', position=golf_ball_position))
+put('gelatin_box', parse_place_pose(object_name='gelatin_box', position=pear_position))
+pick('pear')
+put('pear', parse_place_pose(object_name='pear', position=gelatin_box_position))

@@ -1,9 +1,9 @@
-# Task: swap the positions of the blue cup and the lime
+# Task: exchange the places of the blue box and the soup can
 # Plan:
-# 1. Remember where the blue cup and the lime are now.
-# 2. Put the blue cup aside on the table, out of the way.
-# 3. Put the lime where the blue cup was.
-# 4. Put the blue cup where the lime was.
+# 1. Remember where the blue box and the soup can are now.
+# 2. Put the blue box aside on the table, out of the way.
+# 3. Put the soup can where the blue box was.
+# 4. Put the blue box where the soup can was.
 detect_objects()
 
 
@@ -25,11 +25,11 @@ def put(name, place_pose):
     move_in_direction(direction=[0, 0, 1], distance=0.1)
 
 
-blue_cup_position = get_object_center_position('blue_cup')
-lime_position = get_object_center_position('lime')
-pick('blue_cup')
-put('blue_cup', parse_place_pose(object_name='blue_cup', receptacle_name='table'))
-pick('lime')
-put('lime', parse_place_pose(object_name='lime', position=blue_cup_position))
-pick('blue_cup')
-put('blue_cup', parse_place_pose(object_name='blue_cup', position=lime_position))
+blue_box_position = get_object_center_position('blue_box')
+soup_can_position = get_object_center_position('soup_can')
+pick('blue_box')
+put('blue_box', parse_place_pose(object_name='blue_box', receptacle_name='table'))
+pick('soup_can')
+put('soup_can', parse_place_pose(object_name='soup_can', position=blue_box_position))
+pick('blue_box')
+put('blue_box', parse_place_pose(object_name='blue_box', position=soup_can_position))

@@ -1,9 +1,9 @@
-# Task: swap the positions of the green block and the blue cup
+# Task: swap the positions of the green block and the lemon
 # Plan:
-# 1. Remember where the green block and the blue cup are now.
+# 1. Remember where the green block and the lemon are now.
 # 2. Put the green block aside on the table, out of the way.
-# 3. Put the blue cup where the green block was.
-# 4. Put the green block where the blue cup was.
+# 3. Put the lemon where the green block was.
+# 4. Put the green block where the lemon was.
 detect_objects()
 
 
@@ -26,10 +26,10 @@ def put(name, place_pose):
 
 
 green_block_position = get_object_center_position('green_block')
-blue_cup_position = get_object_center_position('blue_cup')
+lemon_position = get_object_center_position('lemon')
 pick('green_block')
 put('green_block', parse_place_pose(object_name='green_block', receptacle_name='table'))
-pick('blue_cup')
-put('blue_cup', parse_place_pose(object_name='blue_cup', position=green_block_position))
+pick('lemon')
+put('lemon', parse_place_pose(object_name='lemon', position=green_block_position))
 pick('green_block')
-put('green_block', parse_place_pose(object_name='green_block', position=blue_cup_position))
+put('green_block', parse_place_pose(object_name='green_block', position=lemon_position))

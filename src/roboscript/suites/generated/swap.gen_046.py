@@ -1,9 +1,9 @@
-# Task: swap the positions of the blue mug and the blue cup
+# Task: exchange the places of the gelatin box and the white medication bottle
 # Plan:
-# 1. Remember where the blue mug and the blue cup are now.
-# 2. Put the blue mug aside on the table, out of the way.
-# 3. Put the blue cup where the blue mug was.
-# 4. Put the blue mug where the blue cup was.
+# 1. Remember where the gelatin box and the white medication bottle are now.
+# 2. Put the gelatin box aside on the table, out of the way.
+# 3. Put the white medication bottle where the gelatin box was.
+# 4. Put the gelatin box where the white medication bottle was.
 detect_objects()
 
 
@@ -25,11 +25,11 @@ def put(name, place_pose):
     move_in_direction(direction=[0, 0, 1], distance=0.1)
 
 
-blue_mug_position = get_object_center_position('blue_mug')
-blue_cup_position = get_object_center_position('blue_cup')
-pick('blue_mug')
-put('blue_mug', parse_place_pose(object_name='blue_mug', receptacle_name='table'))
-pick('blue_cup')
-put('blue_cup', parse_place_pose(object_name='blue_cup', position=blue_mug_position))
-pick('blue_mug')
-put('blue_mug', parse_place_pose(object_name='blue_mug', position=blue_cup_position))
+gelatin_box_position = get_object_center_position('gelatin_box')
+white_medication_bottle_position = get_object_center_position('white_medication_bottle')
+pick('gelatin_box')
+put('gelatin_box', parse_place_pose(object_name='gelatin_box', receptacle_name='table'))
+pick('white_medication_bottle')
+put('white_medication_bottle', parse_place_pose(object_name='white_medication_bottle', position=gelatin_box_position))
+pick('gelatin_box')
+put('gelatin_box', parse_place_pose(object_name='gelatin_box', position=white_medication_bottle_position))

@@ -1,9 +1,9 @@
-# Task: swap the positions of the blue box and the white and pink box
+# Task: swap the positions of the green block and the brown cup
 # Plan:
-# 1. Remember where the blue box and the white and pink box are now.
-# 2. Put the blue box aside on the table, out of the way.
-# 3. Put the white and pink box where the blue box was.
-# 4. Put the blue box where the white and pink box was.
+# 1. Remember where the green block and the brown cup are now.
+# 2. Put the green block aside on the table, out of the way.
+# 3. Put the brown cup where the green block was.
+# 4. Put the green block where the brown cup was.
 detect_objects()
 
 
@@ -25,11 +25,11 @@ def put(name, place_pose):
     move_in_direction(direction=[0, 0, 1], distance=0.1)
 
 
-blue_box_position = get_object_center_position('blue_box')
-white_and_pink_box_position = get_object_center_position('white_and_pink_box')
-pick('blue_box')
-put('blue_box', parse_place_pose(object_name='blue_box', receptacle_name='table'))
-pick('white_and_pink_box')
-put('white_and_pink_box', parse_place_pose(object_name='white_and_pink_box', position=blue_box_position))
-pick('blue_box')
-put('blue_box', parse_place_pose(object_name='blue_box', position=white_and_pink_box_position))
+green_block_position = get_object_center_position('green_block')
+brown_cup_position = get_object_center_position('brown_cup')
+pick('green_block')
+put('green_block', parse_place_pose(object_name='green_block', receptacle_name='table'))
+pick('brown_cup')
+put('brown_cup', parse_place_pose(object_name='brown_cup', position=green_block_position))
+pick('green_block')
+put('green_block', parse_place_pose(object_name='green_block', position=brown_cup_position))

@@ -1,9 +1,9 @@
-# Task: swap the positions of the peach and the apple
+# Task: swap the positions of the red block and the strawberry
 # Plan:
-# 1. Remember where the peach and the apple are now.
-# 2. Put the peach aside on the table, out of the way.
-# 3. Put the apple where the peach was.
-# 4. Put the peach where the apple was.
+# 1. Remember where the red block and the strawberry are now.
+# 2. Put the red block aside on the table, out of the way.
+# 3. Put the strawberry where the red block was.
+# 4. Put the red block where the strawberry was.
 detect_objects()
 
 
@@ -25,11 +25,11 @@ def put(name, place_pose):
     move_in_direction(direction=[0, 0, 1], distance=0.1)
 
 
-peach_position = get_object_center_position('peach')
-apple_position = get_object_center_position('apple')
-pick('peach')
-put('peach', parse_place_pose(object_name='peach', receptacle_name='table'))
-pick('apple')
-put('apple', parse_place_pose(object_name='apple', position=peach_position))
-pick('peach')
-put('peach', parse_place_pose(object_name='peach', position=apple_position))
+red_block_position = get_object_center_position('red_block')
+strawberry_position = get_object_center_position('strawberry')
+pick('red_block')
+put('red_block', parse_place_pose(object_name='red_block', receptacle_name='table'))
+pick('strawberry')
+put('strawberry', parse_place_pose(object_name='strawberry', position=red_block_position))
+pick('red_block')
+put('red_block', parse_place_pose(object_name='red_block', position=strawberry_position))

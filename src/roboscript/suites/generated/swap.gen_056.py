@@ -1,9 +1,9 @@
-# Task: exchange the places of the white cup and the green block
+# Task: swap the positions of the green apple and the white medication bottle
 # Plan:
-# 1. Remember where the white cup and the green block are now.
-# 2. Put the white cup aside on the table, out of the way.
-# 3. Put the green block where the white cup was.
-# 4. Put the white cup where the green block was.
+# 1. Remember where the green apple and the white medication bottle are now.
+# 2. Put the green apple aside on the table, out of the way.
+# 3. Put the white medication bottle where the green apple was.
+# 4. Put the green apple where the white medication bottle was.
 detect_objects()
 
 
@@ -25,11 +25,11 @@ def put(name, place_pose):
     move_in_direction(direction=[0, 0, 1], distance=0.1)
 
 
-white_cup_position = get_object_center_position('white_cup')
-green_block_position = get_object_center_position('green_block')
-pick('white_cup')
-put('white_cup', parse_place_pose(object_name='white_cup', receptacle_name='table'))
-pick('green_block')
-put('green_block', parse_place_pose(object_name='green_block', position=white_cup_position))
-pick('white_cup')
-put('white_cup', parse_place_pose(object_name='white_cup', position=green_block_position))
+green_apple_position = get_object_center_position('green_apple')
+white_medication_bottle_position = get_object_center_position('white_medication_bottle')
+pick('green_apple')
+put('green_apple', parse_place_pose(object_name='green_apple', receptacle_name='table'))
+pick('white_medication_bottle')
+put('white_medication_bottle', parse_place_pose(object_name='white_medication_bottle', position=green_apple_position))
+pick('green_apple')
+put('green_apple', parse_place_pose(object_name='green_apple', position=white_medication_bottle_position))

@@ -1,0 +1,35 @@
+# Task: exchange the places of the yellow box and the tea box
+# Plan:
+# 1. Remember where the yellow box and the tea box are now.
+# 2. Put the yellow box aside on the table, out of the way.
+# 3. Put the tea box where the yellow box was.
+# 4. Put the yellow box where the tea box was.
+detect_objects()
+
+
+def pick(name):
+    """Grasps `name` from above where its shape allows, and lifts it clear of what is around it."""
+    open_gripper()
+    grasp_pose = parse_adaptive_shape_grasp_pose(object_name=name, preferred_approach_direction=[0, 0, -1])
+    grasp(grasp_pose)
+    close_gripper()
+    attach_object(name)
+    move_in_direction(direction=[0, 0, 1], distance=0.1)
+
+
+def put(name, place_pose):
+    """Carries the held `name` to `place_pose`, lets go of it and moves the hand up and away."""
+    move_to_pose(place_pose)
+    open_gripper()
+    detach_object(name)
+    move_in_direction(direction=[0, 0, 1], distance=0.1)
+
+
+yellow_box_position = get_object_center_position('yellow_box')
+tea_box_position = get_object_center_position('tea_box')
+pick('yellow_box')
+put('yellow_box', parse_place_pose(object_name='yellow_box', receptacle_name='table'))
+pick('tea_box')
+put('tea_box', parse_place_pose(object_name='tea_box', position=yellow_box_position))
+pick('yellow_box')
+put('yellow_box', parse_place_pose(object_name='yellow_box', position=tea_box_position))
