@@ -11,7 +11,6 @@ is printed, not asserted.)
 
 from __future__ import annotations
 
-import _thread
 import json
 import os
 import signal
@@ -198,7 +197,8 @@ def test_ctrl_c_during_a_motion_cancels_the_goal_and_the_arm_stops(panda):
     delta[0] = 1.0
     trajectory = _move(backend, delta)
     start = backend.joint_positions()
-    threading.Timer(0.4, _thread.interrupt_main).start()
+    # A real SIGINT, as Ctrl-C sends: unlike _thread.interrupt_main it wakes a main thread blocked in a wait.
+    threading.Timer(0.4, os.kill, (os.getpid(), signal.SIGINT)).start()
     with pytest.raises(KeyboardInterrupt):
         backend.execute_trajectory(trajectory)
     backend.wait(0.3)  # the arm brakes to a stop where the controller heard the cancel
