@@ -197,10 +197,15 @@ def test_ctrl_c_during_a_motion_cancels_the_goal_and_the_arm_stops(panda):
     delta[0] = 1.0
     trajectory = _move(backend, delta)
     start = backend.joint_positions()
-    # A real SIGINT, as Ctrl-C sends: unlike _thread.interrupt_main it wakes a main thread blocked in a wait.
+    # A real SIGINT, as Ctrl-C sends, met by Python's own handler (an earlier test in the same process may have
+    # left another one in place: in full runs the interrupt was never raised).
+    previous = signal.signal(signal.SIGINT, signal.default_int_handler)
     threading.Timer(0.4, os.kill, (os.getpid(), signal.SIGINT)).start()
-    with pytest.raises(KeyboardInterrupt):
-        backend.execute_trajectory(trajectory)
+    try:
+        with pytest.raises(KeyboardInterrupt):
+            backend.execute_trajectory(trajectory)
+    finally:
+        signal.signal(signal.SIGINT, previous)
     backend.wait(0.3)  # the arm brakes to a stop where the controller heard the cancel
     stopped = backend.joint_positions()
     backend.wait(0.5)
