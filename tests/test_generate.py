@@ -157,8 +157,11 @@ def test_the_generated_benchmark_is_packaged_and_made_again_by_its_command(tmp_p
     command = description.split("`")[1].split()  # the command that made it, as its description says
     assert main([*command[1:], "--out", str(tmp_path)]) == 0
     assert (tmp_path / "generated.yaml").read_text() == (packaged / "generated.yaml").read_text()
-    for made in (tmp_path / "generated").rglob("*.*"):
-        assert made.read_text() == (packaged / "generated" / made.relative_to(tmp_path / "generated")).read_text()
+    made = sorted(p.relative_to(tmp_path / "generated") for p in (tmp_path / "generated").rglob("*.*"))
+    shipped = sorted(p.relative_to(packaged / "generated") for p in (packaged / "generated").rglob("*.*"))
+    assert made == shipped  # no file left over from an earlier generation
+    for name in made:
+        assert (tmp_path / "generated" / name).read_text() == (packaged / "generated" / name).read_text()
 
 
 SUGGESTIONS = """Here are tasks:
