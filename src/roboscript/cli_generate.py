@@ -50,6 +50,7 @@ def cmd_tasks(args: argparse.Namespace) -> int:
     import yaml
 
     from roboscript.backends.mujoco_backend import MujocoBackend
+    from roboscript.datafile import names_a_file
     from roboscript.generate.describe import describe_scene
     from roboscript.generate.suggest import suggest_tasks
     from roboscript.llm import make_llm
@@ -61,7 +62,7 @@ def cmd_tasks(args: argparse.Namespace) -> int:
     kept, rejected = [], []
     for world_arg in args.worlds:
         world = load_world(world_arg)
-        is_file = os.path.sep in world_arg or world_arg.endswith((".yaml", ".yml", ".json"))
+        is_file = names_a_file(world_arg)
         ref = os.path.relpath(Path(world_arg).resolve(), out.parent.resolve()) if is_file else world_arg
         with MujocoBackend(world) as backend:
             description = describe_scene(world, backend.ground_truth)

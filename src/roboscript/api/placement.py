@@ -194,11 +194,12 @@ class Placer:
         # A thing put aside is usually picked up again (a swap): spots that leave a hand room to come for it
         # between its neighbours, and the arm room to lift it (not folded against its own base), come first; the
         # merely free ones only where there are none.
+        occupied = self.perception.occupied([name])
         for clearance, reach in ((ASIDE_CLEARANCE, ASIDE_MIN_REACH), (0.0, ASIDE_MIN_REACH), (0.0, 0.0)):
             grown = [Footprint(o.center, o.yaw, o.half + clearance) for o in obstacles]
             spots = spots_in_receptacle(table, half, yaw, box.size[2], grown, self.base_xy, near_xy=box.center[:2])
             radius = float(np.linalg.norm(half)) + MARGIN + clearance
-            spots = _clear_of(spots, self.perception.occupied([name]), radius, table.lower[2])
+            spots = _clear_of(spots, occupied, radius, table.lower[2])
             spots = [
                 s
                 for s in spots

@@ -23,7 +23,7 @@ def segmentation_palette(n: int) -> np.ndarray:
 
 
 def top_view(backend: MujocoBackend, width: int, height: int, distance: float = 2.6) -> np.ndarray:
-    """The table seen from straight above, the robot at the image's bottom (RGB, ``height`` x ``width`` x 3)."""
+    """The table seen from straight above, the robot at the image's top (RGB, ``height`` x ``width`` x 3)."""
     renderer = backend.renderer(width, height)
     top = mujoco.MjvCamera()
     top.lookat[:] = [0.0, 0.0, backend.sim_world.spec.table.height]

@@ -64,13 +64,16 @@ def export_records(suite_file: Path, records: Sequence[TrialRecord], policy: str
     worlds = out / "worlds"
     worlds.mkdir(parents=True, exist_ok=True)
     order = {task_id: k for k, task_id in enumerate(tasks)}
+    copied: set[str] = set()
     kept = []
     for record in sorted(records, key=lambda r: (order.get(r.task, len(order)), r.robot, r.trial)):
         if not (record.ok and record.success):
             continue
         task = tasks[record.task]
         world_file = Path(task.world)
-        shutil.copyfile(world_file, worlds / world_file.name)
+        if world_file.name not in copied:  # several records share a world
+            shutil.copyfile(world_file, worlds / world_file.name)
+            copied.add(world_file.name)
         program = record.program if llm is not None else task.reference_program()
         kept.append(
             DatasetRecord(

@@ -15,10 +15,10 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from roboscript.generate.describe import ORDINALS
 from roboscript.generate.programs import OPEN_DRAWER, SPOT_BESIDE, Program, move_into, move_to, words
 from roboscript.generate.scene import DRAWER_HEIGHT_LIMIT, KINDS, Scene, fits, in_or_on, kind_of_type, room_for
 
-ORDINALS = ("top", "second", "third", "fourth")
 NEAR_GAP = 0.03  # how far beside its target the oracle puts a thing (the `near` check allows 8 cm)
 
 
