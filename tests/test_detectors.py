@@ -5,7 +5,6 @@ mean nothing; what is pinned is that the path works end to end and its output ke
 from __future__ import annotations
 
 import json
-import os
 import subprocess
 import sys
 
@@ -16,6 +15,7 @@ from roboscript.backends.mujoco_backend import MujocoBackend
 from roboscript.perception.detectors import DetectorError, OpenVocabularyDetector, _iou, closest_phrase
 from roboscript.perception.modes import DETECTOR_ENV, DetectorSpec, perception_mode
 from roboscript.perception.observation import observe
+from roboscript.perception.trained_detector import TrainedDetector
 
 PHRASES = ["apple", "footed bowl", "lemon"]
 
@@ -160,12 +160,12 @@ def test_bad_detector_input_says_what_is_wrong(tmp_path, models):
 def test_full_perception_takes_the_detector_the_command_line_resolves(models, monkeypatch):
     mode = perception_mode("full", f"owlv2:{models['owlv2']}")
     assert mode.detector == DetectorSpec("owlv2", models["owlv2"])
-    # Below the command line nothing reads the environment: a mode made without a detector has none.
+    # Below the command line nothing reads the environment: a mode made without a detector has the packaged one.
     monkeypatch.setenv(DETECTOR_ENV, f"owlv2:{models['owlv2']}")
+    assert perception_mode("full").detector == DetectorSpec("trained", "")
     backend = MujocoBackend("world_2_pick_and_place", robot="panda", settle=0)
     try:
-        with pytest.raises(DetectorError, match="perception full needs a detector"):
-            build_perception(backend, "full")
+        assert isinstance(build_perception(backend, "full").grounder, TrainedDetector)
         gt_scene = perception_mode("gt-scene", f"owlv2:{models['owlv2']}")
         assert isinstance(build_perception(backend, gt_scene).grounder, OpenVocabularyDetector)
         api = build_tools(backend, perception=mode)
@@ -177,9 +177,11 @@ def test_full_perception_takes_the_detector_the_command_line_resolves(models, mo
         assert scene.is_free(backend.joint_positions())
     finally:
         backend.close()
-    env = {k: v for k, v in os.environ.items() if k != DETECTOR_ENV}
     command = [sys.executable, "-m", "roboscript.cli", "exec", "x.py", "--task", "simple_0", "--perception", "full"]
-    run = subprocess.run(command, capture_output=True, text=True, timeout=120, env=env)
-    assert run.returncode == 2 and "perception full needs a detector: pass --detector KIND:DIR or set " in run.stderr
+    run = subprocess.run([*command, "--detector", "yolo"], capture_output=True, text=True, timeout=120)
+    assert run.returncode == 2 and "perception full needs a detector: pass --detector or set " in run.stderr
+    assert "trained (the packaged model), trained:FILE.npz" in run.stderr
     run = subprocess.run([*command, "--detector", "owlv2:/nowhere"], capture_output=True, text=True, timeout=120)
     assert run.returncode == 2 and "no owlv2 model in '/nowhere'" in run.stderr
+    run = subprocess.run([*command, "--detector", "trained:/nowhere.npz"], capture_output=True, text=True, timeout=120)
+    assert run.returncode == 2 and "no detector model file at '/nowhere.npz'" in run.stderr

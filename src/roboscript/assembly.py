@@ -48,6 +48,10 @@ def build_perception(
         _check_camera_pipeline(mode)
     if backend.ground_truth is None:
         return _perception_from_sensors(backend, mode, seed, scene)
+    if not mode.needs_ground_truth:
+        # Nothing from the simulator's state: only the description it was built from (the world file: names,
+        # types, furniture rows), as a robot is given one.
+        return _perception_from_sensors(backend, mode, seed, scene or backend.ground_truth.world.spec)
     truth = GroundTruthPerception(backend)
     if not mode.observed_objects:
         # One look before anything moves, as a tracker that has watched the scene from the start would have had: a
@@ -59,7 +63,10 @@ def build_perception(
     from roboscript.perception.pipeline import PipelinePerception
 
     world = backend.ground_truth.world
-    grounder = _detector(mode) if mode.needs_detector else SegmentationGrounder(world.entities, seed=seed)
+    if mode.needs_detector:
+        grounder = _detector(mode, scene or world.spec)
+    else:
+        grounder = SegmentationGrounder(world.entities, seed=seed)
     return PipelinePerception(
         backend, grounder, world.entity_names(("object",)), truth, robot_index=_robot_label(backend)
     )
@@ -87,33 +94,38 @@ def perceived_motion(
     from roboscript.planning.perceived_scene import PerceivedSceneSource
 
     description, mount = backend.robot, backend.base_pose()
-    source = PerceivedSceneSource(perception, description, mount, backend.joint_states, padding, _robot_label(backend))
+    source = PerceivedSceneSource(perception, description, mount, backend.joint_states, padding)
     # The scene is built at the first motion: by then the program has said what to look for.
     return MotionPlanner(backend, None, ArmKinematics(description, mount), source.state, scene_source=source, **kwargs)
 
 
 def _perception_from_sensors(backend: Backend, mode: PerceptionMode, seed: int, scene: WorldSpec | None) -> Perception:
-    """The camera pipeline on a backend without ground truth: boxes from its segmentation node or a detector,
-    labels of furniture from the scene's description."""
+    """The camera pipeline from the backend's sensors alone: boxes from its segmentation node or a detector,
+    labels of furniture from the scene's description; the robot's own pixels from its segmentation where that
+    labels them, else from its model and joint readings (the self-filter)."""
     from roboscript.perception.grounding import SegmentationGrounder
     from roboscript.perception.labels import FurnitureLabels, segment_labels
     from roboscript.perception.modes import SEGMENTATION
     from roboscript.perception.pipeline import PipelinePerception
+    from roboscript.perception.self_filter import SelfFilter
 
     labels = furniture_labels(scene) if scene is not None else FurnitureLabels()
+    robot_index = None
     if mode.detector is not None and mode.detector.kind == SEGMENTATION:
         segments = segment_labels(backend.segmentation_labels(), labels.furniture())
         if not segments:
             raise BackendError(
                 f"{type(backend).__name__} publishes no segmentation labels: configure the segmentation topics and "
-                "the labels' topic, or give a detector (owlv2:DIR or grounding-dino:DIR)"
+                "the labels' topic, or give a detector (trained, owlv2:DIR or grounding-dino:DIR)"
             )
         grounder = SegmentationGrounder(segments, seed=seed)
         named = [s.name for s in segments if s.kind == "object"]
+        robot_index = _robot_label(backend)
     else:
-        grounder, named = _detector(mode), []
+        grounder, named = _detector(mode, scene), []
     vocabulary = scene.object_names() if scene is not None else named
-    return PipelinePerception(backend, grounder, vocabulary, labels, robot_index=_robot_label(backend))
+    robot = SelfFilter(backend.robot, backend.base_pose()) if robot_index is None else None
+    return PipelinePerception(backend, grounder, vocabulary, labels, robot_index=robot_index, self_filter=robot)
 
 
 def furniture_labels(scene: WorldSpec):
@@ -151,12 +163,20 @@ def _check_camera_pipeline(mode: PerceptionMode) -> None:
         )
 
 
-def _detector(mode: PerceptionMode):
+def _detector(mode: PerceptionMode, scene: WorldSpec | None):
+    """The detector ``mode`` names; the trained one knows what ``scene``'s description says (objects' types,
+    furniture's rows)."""
     from roboscript.perception.detectors import DetectorError, OpenVocabularyDetector
+    from roboscript.perception.modes import TRAINED
 
     if mode.detector is None:
         raise DetectorError(
-            f"perception {mode} needs a detector: make the mode with perception_mode({mode.name!r}, 'KIND:DIR') "
+            f"perception {mode} needs a detector: make the mode with perception_mode({mode.name!r}, 'KIND:PATH') "
             "(the command line's --detector or $ROBOSCRIPT_DETECTOR)"
         )
+    if mode.detector.kind == TRAINED:
+        from roboscript.perception.detector_model import load_detector_model
+        from roboscript.perception.trained_detector import TrainedDetector
+
+        return TrainedDetector.for_scene(scene, load_detector_model(mode.detector.directory or None))
     return OpenVocabularyDetector(mode.detector.kind, mode.detector.directory)

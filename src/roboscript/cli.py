@@ -389,9 +389,10 @@ def _add_perception_option(parser: argparse.ArgumentParser) -> None:
     parser.add_argument(
         "--detector",
         default=None,
-        metavar="KIND:DIR",
-        help="the open-vocabulary detector of modes without ground-truth 2D boxes (owlv2:DIR or grounding-dino:DIR, "
-        "DIR written by save_pretrained); default: $ROBOSCRIPT_DETECTOR",
+        metavar="KIND[:PATH]",
+        help="the detector of modes without ground-truth 2D boxes: trained (the packaged model this project trains), "
+        "trained:FILE.npz (from train-detector), owlv2:DIR or grounding-dino:DIR (DIR written by save_pretrained); "
+        "default: $ROBOSCRIPT_DETECTOR, else trained",
     )
 
 
@@ -424,6 +425,7 @@ RECORD_HELP = (
 
 def build_parser() -> argparse.ArgumentParser:
     from roboscript.bench.metrics import METRICS
+    from roboscript.cli_detector import add_detector_commands
     from roboscript.cli_generate import add_generate_commands
     from roboscript.cli_robot import add_replay_command, add_robot_options
     from roboscript.cli_studies import add_study_commands
@@ -513,6 +515,7 @@ def build_parser() -> argparse.ArgumentParser:
     report.set_defaults(func=cmd_report)
     add_study_commands(sub)
     add_generate_commands(sub)
+    add_detector_commands(sub)
     demo = sub.add_parser(
         "demo", help="one task end to end (the configured LLM, else the reference program) with a video and a report"
     )

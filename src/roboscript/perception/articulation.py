@@ -20,13 +20,23 @@ DOOR_TRAVEL = math.pi / 2  # radians a door is assumed to open at most
 PLANE_TOLERANCE = 0.004  # metres from the plane within which a point is on the front
 MAX_TILT = 0.3  # largest vertical component of a front's normal (fronts of drawers and doors stand upright)
 HANDLE_REACH = 0.1  # metres a handle stands out of its front at most
+FACING = 0.8  # least |cos| between a point's normal and a plane's for the point to lie on that face
 
 
-def front_plane(points: np.ndarray, toward: np.ndarray, iterations: int = 200, seed: int = 0):
+def front_plane(
+    points: np.ndarray,
+    toward: np.ndarray,
+    iterations: int = 200,
+    seed: int = 0,
+    normals: np.ndarray | None = None,
+):
     """``(point, normal)`` of the dominant upright plane of ``points`` (RANSAC, then a least-squares refit on its
     inliers), the normal turned towards ``toward`` (the handle, which stands out of the front). Only upright
     planes count, and only those ``toward`` stands at most :data:`HANDLE_REACH` out of: an open drawer shows the
-    cameras above it more of its bottom, and of its back wall, than of its front."""
+    cameras above it more of its bottom, and of its back wall, than of its front. Given the points' ``normals``,
+    a point counts for a plane only where it faces the plane's way: the strip of a pulled drawer's bottom that a
+    vertical plane cuts through is no face (with the arm at the handle, such strips outnumbered the front's points
+    seen)."""
     if len(points) < 10:
         raise ValueError(f"a front needs at least 10 points, got {len(points)}")
     rng = np.random.default_rng(seed)
@@ -42,6 +52,8 @@ def front_plane(points: np.ndarray, toward: np.ndarray, iterations: int = 200, s
         if abs(normal[2]) > MAX_TILT or abs(np.dot(toward - a, normal)) > HANDLE_REACH:
             continue
         inliers = np.abs((points - a) @ normal) < PLANE_TOLERANCE
+        if normals is not None:
+            inliers &= np.abs(np.nan_to_num(normals @ normal)) > FACING
         if inliers.sum() > best.sum():
             best = inliers
     if best.sum() < 10:
@@ -57,18 +69,47 @@ def front_plane(points: np.ndarray, toward: np.ndarray, iterations: int = 200, s
     return center, normal / np.linalg.norm(normal), on_plane
 
 
-def drawer_joint(part: str, front_points: np.ndarray, handle_center: np.ndarray) -> ArticulationJoint:
+def drawer_joint(
+    part: str, front_points: np.ndarray, handle_center: np.ndarray, normals: np.ndarray | None = None
+) -> ArticulationJoint:
     """The prismatic joint of a drawer: along its front's outward normal, through the handle's foot on the
-    front."""
-    center, normal, _ = front_plane(front_points, handle_center)
-    foot = handle_center - np.dot(handle_center - center, normal) * normal
-    return ArticulationJoint(part, "prismatic", foot, normal, 0.0, 0.0, DRAWER_TRAVEL)
+    front (``normals``: the front points', where known)."""
+    return estimate_joint("prismatic", part, front_points, handle_center, normals)[0]
 
 
-def door_joint(part: str, front_points: np.ndarray, handle_center: np.ndarray) -> ArticulationJoint:
+def door_joint(
+    part: str, front_points: np.ndarray, handle_center: np.ndarray, normals: np.ndarray | None = None
+) -> ArticulationJoint:
     """The revolute joint of a door: the vertical line through the edge of its front farthest from the handle,
     signed so that turning by a positive angle swings the handle out of the front."""
-    center, normal, on_plane = front_plane(front_points, handle_center)
+    return estimate_joint("revolute", part, front_points, handle_center, normals)[0]
+
+
+def estimate_joint(
+    kind: str, part: str, front_points: np.ndarray, handle_center: np.ndarray, normals: np.ndarray | None = None
+) -> tuple[ArticulationJoint, int]:
+    """:func:`drawer_joint` (``kind`` prismatic) or :func:`door_joint` (revolute), with how many points of the
+    front bore the plane it was estimated from."""
+    center, normal, on_plane = front_plane(front_points, handle_center, normals=normals)
+    if kind == "prismatic":
+        foot = handle_center - np.dot(handle_center - center, normal) * normal
+        return ArticulationJoint(part, "prismatic", foot, normal, 0.0, 0.0, DRAWER_TRAVEL), len(on_plane)
+    return _door(part, center, normal, on_plane, handle_center), len(on_plane)
+
+
+def moved_with_handle(joint: ArticulationJoint, old_handle: np.ndarray, handle_center: np.ndarray):
+    """A joint estimated when the handle stood at ``old_handle``, now that it stands at ``handle_center``: a
+    drawer's line slides with it; a door's hinge stays where it is."""
+    if joint.type != "prismatic":
+        return joint
+    axis = np.asarray(joint.axis, dtype=float)
+    shift = float(np.dot(np.asarray(handle_center) - np.asarray(old_handle), axis)) * axis
+    return ArticulationJoint(joint.part, joint.type, joint.position + shift, axis, 0.0, joint.lower, joint.upper)
+
+
+def _door(
+    part: str, center: np.ndarray, normal: np.ndarray, on_plane: np.ndarray, handle_center: np.ndarray
+) -> ArticulationJoint:
     up = np.array([0.0, 0.0, 1.0])
     across = np.cross(up, normal)
     across /= np.linalg.norm(across)

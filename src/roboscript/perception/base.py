@@ -129,6 +129,11 @@ class Perception(ABC):
         """The camera frames :meth:`scene_points` came from (empty if it did not come from cameras)."""
         return []
 
+    def last_masks(self) -> list:
+        """Per frame of :meth:`last_frames`, the (H, W) pixels that show the robot itself, or None where that is
+        not known."""
+        return [None] * len(self.last_frames())
+
     @abstractmethod
     def receptacle(self, name: str) -> Receptacle | None:
         """The volume where things put into ``name`` go, or ``None`` if it holds nothing (an apple)."""

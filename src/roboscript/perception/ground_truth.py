@@ -175,6 +175,9 @@ class GroundTruthPerception(Perception):
     def last_frames(self) -> list[CameraFrame]:
         return self._camera_frames()
 
+    def last_masks(self) -> list:
+        return robot_masks(self._camera_frames(), self.world.entity("robot").index)
+
     def receptacle(self, name: str) -> Receptacle | None:
         entity = self._entity(name)
         if entity.kind == "object":

@@ -42,6 +42,11 @@ class Grounder(ABC):
     def detect(self, frame: CameraFrame, phrases: Sequence[str]) -> list[Detection2D]:
         """Boxes labelled with the phrase they show, at most one label per box."""
 
+    def account(self, phrase: str) -> str:
+        """What the grounder can say of a phrase it found nowhere in its last frames (empty: nothing more than
+        what the boxes show)."""
+        return ""
+
 
 def normalize_phrase(phrase: str) -> str:
     """``"White Mug"``, ``"white_mug"`` and ``" white  mug "`` all become ``"white mug"``."""

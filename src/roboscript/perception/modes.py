@@ -5,8 +5,11 @@ image), ``3d`` (objects' boxes, poses and points, from fused RGB-D views) and ``
 observed surfaces as occupancy boxes). ``full`` takes none from ground truth, ``gt`` all; ``gt-2d``, ``gt-3d`` and
 ``gt-scene`` each take one, and can be combined with ``+`` (``gt-2d+gt-scene``) to isolate the rest.
 
-Without ground-truth 2D boxes, the boxes come from an open-vocabulary detector whose weights the user provides
-(``--detector owlv2:DIR`` or ``grounding-dino:DIR``, or ``$ROBOSCRIPT_DETECTOR``, read by the command line only).
+Without ground-truth 2D boxes, the boxes come from a detector: by default the one the project trains itself on its
+generated scenes and ships (``trained``, :mod:`roboscript.perception.trained_detector`), or another model of it
+(``trained:FILE.npz``, from ``roboscript train-detector``), or an open-vocabulary detector whose weights the user
+provides (``owlv2:DIR`` or ``grounding-dino:DIR``); ``--detector`` or ``$ROBOSCRIPT_DETECTOR`` (read by the command
+line only) choose.
 Where objects are observed, furniture is too: its boxes, points, joints (:mod:`roboscript.perception.articulation`)
 and drawers' insides (:mod:`roboscript.perception.drawers`) come from the points of the carcass, fronts and
 handles; only the labels (what parts there are, which part a handle moves, sliding or turning) come from the
@@ -20,27 +23,29 @@ from dataclasses import dataclass, replace
 STAGES = ("2d", "3d", "scene")
 PERCEPTION_MODES = {
     "gt": "ground truth everywhere",
-    "full": "nothing from ground truth: 2D boxes from an open-vocabulary detector (--detector or "
-    "$ROBOSCRIPT_DETECTOR: owlv2:DIR or grounding-dino:DIR), objects from fused RGB-D views, the planning scene "
-    "from observed surfaces",
+    "full": "nothing from ground truth: 2D boxes from a detector (the packaged trained one by default; --detector or "
+    "$ROBOSCRIPT_DETECTOR: trained:FILE.npz, owlv2:DIR or grounding-dino:DIR), objects from fused RGB-D views, the "
+    "planning scene from observed surfaces",
     "gt-2d": "as full, with ground-truth 2D boxes (the simulator's segmentation)",
     "gt-3d": "as full, with objects' 3D boxes, poses and points from ground truth (the planning scene observed)",
     "gt-scene": "as full, with the ground-truth planning scene (the simulator's geometry)",
 }
 DETECTOR_ENV = "ROBOSCRIPT_DETECTOR"
 SEGMENTATION = "segmentation"  # the 2D boxes of a segmentation node's labelled images, on a robot that has one
+TRAINED = "trained"  # the detector this project trains (roboscript train-detector); the packaged model by default
 ALIASES = {"det-2d": "gt-scene"}  # the earlier name of detector boxes with the exact planning scene, for old runs
 
 
 @dataclass(frozen=True)
 class DetectorSpec:
-    """An open-vocabulary detector's kind (``owlv2``, ``grounding-dino``) and the directory of its weights."""
+    """A detector's kind (``trained``, ``owlv2``, ``grounding-dino``, ``segmentation``) and where its weights are
+    (a directory of an open-vocabulary model, a model file of the trained one; empty: the packaged model)."""
 
     kind: str
     directory: str
 
     def __str__(self) -> str:
-        return f"{self.kind}:{self.directory}"
+        return f"{self.kind}:{self.directory}" if self.directory else self.kind
 
 
 @dataclass(frozen=True)
@@ -74,13 +79,14 @@ class PerceptionMode:
 
 
 def perception_mode(mode: str | PerceptionMode, detector: str | None = None) -> PerceptionMode:
-    """The mode ``mode`` names, with the detector ``detector`` names (``KIND:DIR``) where the mode needs one,
-    checked (its directory exists and holds weights) but not loaded. Raises ``ValueError`` for an unknown mode and
-    :class:`~roboscript.perception.detectors.DetectorError` for a missing or bad detector."""
+    """The mode ``mode`` names, with the detector ``detector`` names (``KIND:PATH``; the packaged trained detector
+    where none is named) where the mode needs one, checked (its weights are there) but not loaded. Raises
+    ``ValueError`` for an unknown mode and :class:`~roboscript.perception.detectors.DetectorError` for a bad
+    detector."""
     parsed = mode if isinstance(mode, PerceptionMode) else parse_mode(mode)
     if not parsed.needs_detector or parsed.detector is not None:
         return parsed
-    return replace(parsed, detector=parse_detector(detector or "", parsed.name))
+    return replace(parsed, detector=parse_detector(detector or TRAINED, parsed.name))
 
 
 def parse_mode(mode: str) -> PerceptionMode:
@@ -117,12 +123,17 @@ def parse_detector(spec: str, mode: str = "full") -> DetectorSpec:
     if spec == SEGMENTATION:
         return DetectorSpec(SEGMENTATION, "")
     kind, sep, path = spec.partition(":")
+    if kind == TRAINED:
+        from roboscript.perception.detector_model import check_model_file
+
+        return DetectorSpec(TRAINED, check_model_file(path) if path else "")
     if not sep or not path:
         raise DetectorError(
-            f"perception {mode} needs a detector: pass --detector KIND:DIR or set {DETECTOR_ENV}=KIND:DIR with KIND "
-            f"one of {', '.join(DETECTOR_KINDS)} and DIR a model saved with save_pretrained, or {SEGMENTATION} for a "
-            f"robot's segmentation topic (got {spec!r}), or take "
-            f"the 2D boxes from ground truth with {_with_truth_2d(mode)}"
+            f"perception {mode} needs a detector: pass --detector or set {DETECTOR_ENV} to {TRAINED} (the packaged "
+            f"model), {TRAINED}:FILE.npz (one from roboscript train-detector), KIND:DIR with KIND one of "
+            f"{', '.join(DETECTOR_KINDS)} and DIR a model saved with save_pretrained, or {SEGMENTATION} for a "
+            f"robot's segmentation topic (got {spec!r}), or take the 2D boxes from ground truth with "
+            f"{_with_truth_2d(mode)}"
         )
     return DetectorSpec(kind, check_model_dir(kind, path))
 

@@ -18,7 +18,7 @@ from roboscript.perception.instances import (
     support_height,
 )
 from roboscript.perception.matching import MatchedObject, Projection, match_views, membership, project
-from roboscript.perception.points import normal_map, point_map
+from roboscript.perception.points import normal_map, point_map, without_pixels
 from roboscript.robot_io import CameraFrame
 
 
@@ -59,7 +59,9 @@ def observe(
         problems = "; ".join(f"{name}: {why}" for name, why in scene.skipped.items())
         raise ValueError(f"no camera gave a usable depth image ({problems})")
     usable = [f for f in frames if f.name in scene.used]
-    detections = [grounder.detect(f, phrases) for f in usable]
+    # The robot's own pixels are no object's, nor any part's.
+    hidden = dict(zip((f.name for f in frames), robot_masks or [None] * len(frames), strict=True))
+    detections = [grounder.detect(without_pixels(f, hidden[f.name]), phrases) for f in usable]
     projections = [project(scene.points, f) for f in usable]
     memberships = [[membership(p, d.box) for d in ds] for p, ds in zip(projections, detections, strict=True)]
     matched = match_views(memberships, detections)
@@ -68,8 +70,6 @@ def observe(
     instances = build_instances(
         matched, scene.points, scene.normals, memberships, projections, support, areas, pieces=pieces
     )
-    # The robot's own pixels are no object's, nor any part's.
-    hidden = dict(zip((f.name for f in frames), robot_masks or [None] * len(frames), strict=True))
     maps = [point_map(f, hidden[f.name]) for f in usable]
     normals = [normal_map(m, f.extrinsics.position) for m, f in zip(maps, usable, strict=True)]
     instances = [refine_with_depth(i, detections, maps, normals, support) for i in instances]

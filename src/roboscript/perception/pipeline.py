@@ -31,7 +31,7 @@ from roboscript.backends.base import Backend
 from roboscript.geometry import Box3D, Transform, quat_from_yaw
 from roboscript.names import kind_of
 from roboscript.objects import ObjectType, object_types
-from roboscript.perception.articulation import DRAWER_TRAVEL, door_joint, drawer_joint, front_plane
+from roboscript.perception.articulation import DRAWER_TRAVEL, estimate_joint, front_plane, moved_with_handle
 from roboscript.perception.base import (
     OCCUPANCY_MARGIN,
     TABLE,
@@ -50,6 +50,7 @@ from roboscript.perception.instances import Instance3D, fit_box, footprint_point
 from roboscript.perception.labels import PartLabels
 from roboscript.perception.observation import Observation, observe
 from roboscript.perception.points import robot_masks, surface_points
+from roboscript.perception.self_filter import SelfFilter
 from roboscript.phases import timed
 
 SETTLE_TIME = 0.5  # seconds given to what was let go to come to rest before looking again
@@ -98,8 +99,10 @@ class PipelinePerception(Perception):
     """Perception from ``backend``'s cameras through ``grounder``; ``parts`` labels furniture and its parts (what
     parts there are, which part a handle moves and how).
 
-    ``vocabulary``: the phrases ``detect_objects()`` looks for when given none; ``robot_index``: the segmentation
-    index of the robot, whose own pixels are left out of the fused surface (a real rig renders its model for this).
+    ``vocabulary``: the phrases ``detect_objects()`` looks for when given none. The robot's own pixels are left out
+    of what is grounded and fused: ``robot_index``, the segmentation index of the robot, tells them where the frames
+    carry a segmentation that labels it; else ``self_filter`` tells them from the robot's model and its joint
+    readings (:mod:`roboscript.perception.self_filter`), as a real rig does.
     """
 
     def __init__(
@@ -110,10 +113,12 @@ class PipelinePerception(Perception):
         parts: PartLabels,
         robot_index: int | None = None,
         settings: FusionSettings | None = None,
+        self_filter: SelfFilter | None = None,
     ):
         self.backend, self.grounder, self.parts = backend, grounder, parts
         self.vocabulary = [normalize_phrase(v) for v in vocabulary]
-        self.robot_index, self.settings = robot_index, settings
+        self.robot_index, self.settings, self.self_filter = robot_index, settings, self_filter
+        self.masks: list[np.ndarray | None] = []  # the robot's pixels in each frame of the last look
         self.store: dict[str, SeenObject] = {}
         self.parts_seen: dict[str, ObjectPoints] = {}  # furniture and its parts, as last seen
         self.not_found: dict[str, str] = {}
@@ -125,6 +130,8 @@ class PipelinePerception(Perception):
         self._looked = False
         self._stale = False
         self._joints: dict[str, ArticulationJoint] = {}  # estimated from the last look, by moving part
+        # The best-borne estimate of each part's joint so far: (points on its front's plane, joint, handle centre).
+        self._best_joint: dict[str, tuple[int, ArticulationJoint, np.ndarray]] = {}
         self._vacated: list[Box3D] = []  # where objects were taken from since the last look
         self._holding_looks = False
         self._look_tcp: np.ndarray | None = None  # where the gripper was at the last look
@@ -147,13 +154,14 @@ class PipelinePerception(Perception):
 
     def _look(self, asked: list[str]) -> None:
         frames = [self.backend.capture(c) for c in self.backend.camera_names()]
-        masks = robot_masks(frames, self.robot_index)
+        masks = self._robot_masks(frames)
         # The table is measured (the level surface things stand on), not found.
         phrases = [p for p in asked if p not in self.furniture_phrases and p != TABLE]
         furniture = list(self.furniture_phrases)
         pieces = {p for p, n in self.furniture_phrases.items() if shows_in_pieces(n)}
         seen = observe(frames, self.grounder, phrases + furniture, self.settings, masks, pieces=pieces)
         self.last, self._looked, self._stale = seen, True, False
+        self.masks = [masks[k] for k, f in enumerate(frames) if f.name in seen.scene.used]
         self._look_tcp = self.backend.tcp_pose().position.copy()
         self._vacated = []
         self.looks += 1
@@ -177,12 +185,20 @@ class PipelinePerception(Perception):
         self._trim_handles()
         for phrase in phrases:
             found = [i for i in seen.instances if i.label == phrase]
+            if phrase in self.vocabulary and len(found) > 1:
+                # The scene's description names one thing so: the one seen best is it, the rest are mistaken.
+                found = [max(found, key=lambda i: (sum(b != -1 for b in i.boxes), len(i.points)))]
             self.not_found.pop(phrase, None)
             if not found:
                 if not any(o.phrase == phrase for o in self.store.values()):
-                    self.not_found[phrase] = _seen_summary(seen, phrase)
+                    self.not_found[phrase] = _seen_summary(seen, phrase, self.grounder.account(phrase))
                 continue
             self._update(phrase, found, seen)
+
+    def _robot_masks(self, frames: list) -> list[np.ndarray | None]:
+        if self.robot_index is not None or self.self_filter is None:
+            return robot_masks(frames, self.robot_index)
+        return self.self_filter.masks(frames, self.backend.joint_states())
 
     def _update(self, phrase: str, found: list[Instance3D], seen: Observation) -> None:
         """Puts what was found for ``phrase`` into the store. Earlier objects of the phrase keep their names, given
@@ -233,7 +249,8 @@ class PipelinePerception(Perception):
                 continue
             points, normals = self.parts_seen[handle].points, self.parts_seen[handle].normals
             try:
-                center, normal, _ = front_plane(self.parts_seen[part].points, points.mean(axis=0))
+                front = self.parts_seen[part]
+                center, normal, _ = front_plane(front.points, points.mean(axis=0), normals=front.normals)
             except ValueError:  # the front was seen too poorly to tell
                 continue
             proud = (points - center) @ normal > HANDLE_PROUD
@@ -370,12 +387,25 @@ class PipelinePerception(Perception):
                 f"{self._part_look[handle]}), and its joint is estimated from both as they stand together"
             )
             raise ObjectNotFoundError(part, self.names(), why)
-        estimate = drawer_joint if labelled.type == "prismatic" else door_joint
+        handle_center = self.parts_seen[handle].points.mean(axis=0)
+        best = self._best_joint.get(part)
         try:
-            self._joints[part] = estimate(part, front, self.parts_seen[handle].points.mean(axis=0))
+            joint, support = estimate_joint(
+                labelled.type, part, front, handle_center, self.parts_seen[part].normals
+            )
         except ValueError as exc:
-            raise ObjectNotFoundError(part, self.names(), f"its joint could not be estimated: {exc}") from exc
-        return self._joints[part]
+            if best is None:
+                raise ObjectNotFoundError(part, self.names(), f"its joint could not be estimated: {exc}") from exc
+            joint, support = best[1], -1
+        # A joint does not move with its part: a drawer slides along one line, a door turns about one hinge. The
+        # estimate from the look that saw most of the front stands (the arm at a pulled drawer's handle hides
+        # most of it), moved along with the handle.
+        if best is not None and best[0] >= support:
+            joint = moved_with_handle(best[1], best[2], handle_center)
+        else:
+            self._best_joint[part] = (support, joint, handle_center)
+        self._joints[part] = joint
+        return joint
 
     def _handle(self, part: str) -> str:
         """The handle the labels put on ``part`` (the one seen last); "not found" if none was seen."""
@@ -411,6 +441,9 @@ class PipelinePerception(Perception):
 
     def last_frames(self) -> list:
         return list(self.last.frames) if self.last else []
+
+    def last_masks(self) -> list:
+        return list(self.masks) if self.last else []
 
     def receptacle(self, name: str) -> Receptacle | None:
         obj = self._object(name)
@@ -499,7 +532,7 @@ def _library_type(phrase: str) -> ObjectType | None:
     return None
 
 
-def _seen_summary(seen: Observation, phrase: str) -> str:
+def _seen_summary(seen: Observation, phrase: str, account: str = "") -> str:
     views = len(seen.frames)
     found = {}
     for detections in seen.detections:
@@ -508,6 +541,8 @@ def _seen_summary(seen: Observation, phrase: str) -> str:
     asked = f"no view of {views} ({', '.join(f.name for f in seen.frames)}) found {phrase!r}"
     if seen.skipped:
         asked += "; skipped: " + ", ".join(f"{n} ({why})" for n, why in seen.skipped.items())
+    if account:
+        asked += f"; {account}"
     if not found:
         return asked + "; nothing asked for was seen"
     return asked + "; seen: " + ", ".join(f"{label} in {n} view{'s' * (n > 1)}" for label, n in sorted(found.items()))

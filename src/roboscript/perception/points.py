@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 from collections.abc import Sequence
+from dataclasses import replace
 
 import numpy as np
 
@@ -26,6 +27,13 @@ def robot_masks(frames: Sequence[CameraFrame], robot_index: int | None) -> list[
     """Per frame, the pixels that show the robot (segmentation index ``robot_index``); None where that cannot be
     told (no index, or a frame without segmentation)."""
     return [None if robot_index is None or f.segmentation is None else f.segmentation == robot_index for f in frames]
+
+
+def without_pixels(frame: CameraFrame, mask: np.ndarray | None) -> CameraFrame:
+    """``frame`` with no depth where ``mask`` is set (the robot's own pixels: a detector looks at the rest)."""
+    if mask is None:
+        return frame
+    return replace(frame, depth=np.where(mask, 0, frame.depth).astype(frame.depth.dtype, copy=False))
 
 
 @timed("perceive")

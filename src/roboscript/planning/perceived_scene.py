@@ -18,7 +18,6 @@ import numpy as np
 from roboscript.geometry import Box3D, Transform
 from roboscript.perception.base import Perception, outside, within
 from roboscript.perception.memory import remembered
-from roboscript.perception.points import robot_masks
 from roboscript.planning.occupancy import VOXEL, occupied_boxes
 from roboscript.planning.scene import PlanningScene
 from roboscript.robots.description import RobotDescription
@@ -149,7 +148,7 @@ class PerceivedSceneSource:
 
     ``robot_state`` gives the robot's joint readings by the joint's name in the robot's model (the arm's and the
     gripper's: proprioception, as :meth:`Backend.joint_states` reads it). Surfaces seen in earlier looks that the
-    robot's body (segmentation index ``robot_index``) now hides are remembered
+    robot's body (perception's :meth:`~roboscript.perception.base.Perception.last_masks`) now hides are remembered
     (:mod:`roboscript.perception.memory`). :meth:`current` rebuilds
     the scene when :meth:`mark_stale` was called or perception has looked again since the last build.
     """
@@ -161,10 +160,9 @@ class PerceivedSceneSource:
         mount: Transform,
         robot_state: Callable[[], Mapping[str, float]],
         padding: float = 0.005,
-        robot_index: int | None = None,
     ):
         self.perception, self.description, self.mount = perception, description, mount
-        self.robot_state, self.padding, self.robot_index = robot_state, padding, robot_index
+        self.robot_state, self.padding = robot_state, padding
         self._memory = np.zeros((0, 3))  # the fixed surfaces the last scene was built from
         self.builds = 0
         self._scene: PlanningScene | None = None
@@ -191,7 +189,7 @@ class PerceivedSceneSource:
         scene_points = within_reach(perception.scene_points(), self.mount)
         frames = perception.last_frames()
         if frames:
-            hidden = robot_masks(frames, self.robot_index)
+            hidden = perception.last_masks()
             scene_points = np.vstack([scene_points, remembered(self._memory, frames, hidden)])
         object_boxes = {name: perception.box(name) for name in objects}
         object_points = {
