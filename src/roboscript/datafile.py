@@ -26,6 +26,11 @@ class DataFileError(UsageError, ValueError):
         self.source, self.entry, self.problem = source, entry, problem
         super().__init__(f"{self.kind} file {source}: {entry}: {problem}")
 
+    def __reduce__(self):
+        # Pickled as its three parts, so that it crosses from a worker process intact (the default pickles the
+        # message alone, which this constructor does not take).
+        return (type(self), (self.source, self.entry, self.problem))
+
 
 class Reader:
     """Typed access to one mapping of a data file; every problem raises ``error`` saying where."""

@@ -140,7 +140,12 @@ def scene_views(
     except GenerationError:
         return
     rng = world_seed(seed * 1_000_003 + SCENE_STREAM, index)
-    yield from world_views(spec, variation.poses, lambda backend: _move_things(backend, rng, variation))
+    try:
+        views = list(world_views(spec, variation.poses, lambda backend: _move_things(backend, rng, variation)))
+    except WorldFileError:  # a variation the simulator cannot build (things put away that do not fit together)
+        views = list(world_views(generate_world(recipe, seed, index, name=spec.name).spec, variation.poses,
+                                 lambda backend: _move_things(backend, rng, variation)))  # fmt: skip
+    yield from views
 
 
 def world_views(

@@ -2,7 +2,7 @@
 ``'plate'``, ``'white plate'``, ``'fruits'`` or ``'mug_1'``.
 
 A phrase means every type it may name, each as specifically as it names it: as a name a scene's description gives
-one of its objects (that type, then others of its colour and category), as a type's name (``white_plate``), as a
+one of its objects (that type, then others of its category in its colours), as a type's name (``white_plate``), as a
 colour with a category (``white plate`` names every white plate too), as a category (``plate``), as a group of
 categories (``fruit``, :file:`phrase_groups.yaml`), with or without a colour (``red fruit``). The detector labels
 with a phrase the most specifically named things it sees. Plurals and a trailing number (``boxes``, ``mug_1``) are
@@ -88,6 +88,14 @@ def _readings(phrase: str) -> list[str]:
     return out
 
 
+def _colours_of(kind) -> list[str]:
+    """The colours a thing of type ``kind`` shows: its own, and those its name says (a white and yellow mug may
+    look yellow where its handle fills the view)."""
+    known = {normalize_phrase(t.color) for t in object_types().values()}
+    named = [word for word in normalize_phrase(kind.name).split() if word in known]
+    return list(dict.fromkeys([normalize_phrase(kind.color), *named]))
+
+
 def match_phrase(phrase: str, described: Mapping[str, str] | None = None) -> PhraseMatch | None:
     """The types ``phrase`` names; ``described``: the scene description's object names and their types, which
     come first. None where it names nothing the library knows."""
@@ -98,8 +106,11 @@ def match_phrase(phrase: str, described: Mapping[str, str] | None = None) -> Phr
             # What the description calls it, first; then what looks like it (a white mug for a white-and-yellow
             # one whose handle was not seen), where nothing more like it is in sight.
             kind = object_types()[described[reading]]
-            looser = vocabulary[f"{normalize_phrase(kind.color)} {normalize_phrase(kind.category)}"]
-            return PhraseMatch({**{t: min(s, COLOURED) for t, s in looser.items()}, kind.name: DESCRIBED})
+            looser: dict[str, int] = {}
+            for colour in _colours_of(kind):
+                for t, level in vocabulary.get(f"{colour} {normalize_phrase(kind.category)}", {}).items():
+                    looser[t] = max(looser.get(t, 0), min(level, COLOURED))
+            return PhraseMatch({**looser, kind.name: DESCRIBED})
         if reading in vocabulary:
             return PhraseMatch(dict(vocabulary[reading]))
     return None

@@ -60,6 +60,7 @@ SURFACE_STRIDE = 2  # every how many depth pixels one stands for the observed su
 PLANE_RADIUS = 0.03  # metres around the queried point whose points a face's plane is fitted to
 HANDLE_PROUD = 0.004  # metres out of its front from which a point is the handle's, not the front's
 MOVED = 0.005  # metres the gripper must have moved since a look for another look to be worth it
+SETTLE_INSET = 0.01  # metres: the footprint a let-go object falls within, shrunk by this; smaller drops are none
 
 
 class ObjectNotFoundError(UnknownObjectError):
@@ -127,6 +128,7 @@ class PipelinePerception(Perception):
         self.looks = 0  # how many times the cameras were used
         self._asked: list[str] = []  # every phrase looked for, in order
         self._carried: dict[str, Transform] = {}  # objects in the gripper, with where the gripper took them
+        self._let_go: set[str] = set()  # objects let go since the last look
         self._looked = False
         self._stale = False
         self._joints: dict[str, ArticulationJoint] = {}  # estimated from the last look, by moving part
@@ -183,6 +185,7 @@ class PipelinePerception(Perception):
                 self.parts_seen[part] = ObjectPoints(biggest.points, biggest.normals)
                 self._part_look[part] = self.looks
         self._trim_handles()
+        seen_again = set()
         for phrase in phrases:
             found = [i for i in seen.instances if i.label == phrase]
             if phrase in self.vocabulary and len(found) > 1:
@@ -193,17 +196,21 @@ class PipelinePerception(Perception):
                 if not any(o.phrase == phrase for o in self.store.values()):
                     self.not_found[phrase] = _seen_summary(seen, phrase, self.grounder.account(phrase))
                 continue
-            self._update(phrase, found, seen)
+            seen_again |= self._update(phrase, found, seen)
+        for name in self._let_go - seen_again:
+            if name in self.store and name not in self._carried:
+                self._settle(name)
+        self._let_go.clear()
 
     def _robot_masks(self, frames: list) -> list[np.ndarray | None]:
         if self.robot_index is not None or self.self_filter is None:
             return robot_masks(frames, self.robot_index)
         return self.self_filter.masks(frames, self.backend.joint_states())
 
-    def _update(self, phrase: str, found: list[Instance3D], seen: Observation) -> None:
-        """Puts what was found for ``phrase`` into the store. Earlier objects of the phrase keep their names, given
-        to the nearest new finds (however far they went: one apple seen again is the apple, wherever it rolled);
-        finds beyond their number get new names."""
+    def _update(self, phrase: str, found: list[Instance3D], seen: Observation) -> set[str]:
+        """Puts what was found for ``phrase`` into the store, and returns the names it stored. Earlier objects of
+        the phrase keep their names, given to the nearest new finds (however far they went: one apple seen again
+        is the apple, wherever it rolled); finds beyond their number get new names."""
         old = {n: o for n, o in self.store.items() if o.phrase == phrase}
         found = sorted(found, key=lambda i: (round(float(i.box.center[1]), 3), round(float(i.box.center[0]), 3)))
         pairs = sorted(
@@ -231,6 +238,7 @@ class PipelinePerception(Perception):
             self.store[names[k]] = self._seen(names[k], phrase, instance, seen)
             if names[k] in self._carried:  # seen in the hand: it goes with the gripper from where it is now
                 self._carried[names[k]] = self.backend.tcp_pose()
+        return set(names.values())
 
     def _seen(self, name: str, phrase: str, instance: Instance3D, seen: Observation) -> SeenObject:
         views = sum(1 for b in instance.boxes if b != -1)
@@ -286,6 +294,23 @@ class PipelinePerception(Perception):
         start = self._carried.pop(name, None)
         if start is not None:
             self.store[name] = _moved(self.store[name], gripper.compose(start.inverse()))
+            self._let_go.add(name)
+
+    def _settle(self, name: str) -> None:
+        """Something let go that the last look did not find again (what it lies in hid it, or the detector took it
+        for part of that) has fallen: from above, what the cameras see within its footprint is its own top, so its
+        top goes to the highest surface seen there, though not below what it stands on (the lowest seen)."""
+        obj = self.store[name]
+        lower, upper = obj.box.lower, obj.box.upper
+        xy = self.scene[:, :2]
+        under = np.all((xy > lower[:2] + SETTLE_INSET) & (xy < upper[:2] - SETTLE_INSET), axis=1)
+        below = self.scene[under & (self.scene[:, 2] < upper[2] + SETTLE_INSET), 2]
+        if len(below) < 10:
+            return
+        low, high = np.percentile(below, [2, 98])
+        drop = float(min(upper[2] - high, lower[2] - low))
+        if drop > SETTLE_INSET:
+            self.store[name] = _moved(obj, Transform(np.array([0.0, 0.0, -drop]), np.array([0.0, 0.0, 0.0, 1.0])))
 
     # --- the questions ----------------------------------------------------------------------------------------
 

@@ -24,7 +24,7 @@ NEAR = 0.004  # metres: neighbours closer than this, plus GAP_PIXELS pixel sizes
 GAP_PIXELS = 2.5
 COLOUR_STEP = 28.0  # largest difference of any channel (0-255) between neighbours of one piece
 CREASE = 0.5  # cosine: neighbours whose normals differ more than this and meet concavely are cut apart
-MIN_PIXELS = 12  # pieces with fewer (working) pixels are dropped: edges' anti-aliasing, glimpses
+MIN_PIXELS = 12  # pieces with fewer (working) pixels join a neighbour on their surface, or are dropped
 
 
 @dataclass
@@ -122,6 +122,7 @@ def segment(fp: FramePoints, table: float | None = None) -> Segmentation:
     _, component = connected_components(graph, directed=False)
     component = component.reshape(h, w)
     component[~above] = -1
+    component = _absorb_crumbs(fp, component, above)
     labels = np.full((h, w), -1)
     ids, counts = np.unique(component[above], return_counts=True)
     kept = ids[counts >= MIN_PIXELS]
@@ -129,6 +130,40 @@ def segment(fp: FramePoints, table: float | None = None) -> Segmentation:
     remap[kept] = np.arange(kept.size)
     labels[above] = remap[component[above]]
     return Segmentation(fp, labels, int(kept.size), table)
+
+
+def _absorb_crumbs(fp: FramePoints, component: np.ndarray, above: np.ndarray) -> np.ndarray:
+    """Pieces too small to stand alone (a mug's thin rim between its inside and the arm in front of it, a
+    highlight) join the piece they share most border with, where the two lie on one surface in 3D there; with no
+    such neighbour they are dropped."""
+    ids, counts = np.unique(component[above], return_counts=True)
+    small = np.zeros(component.max() + 2, dtype=bool)
+    small[ids[counts < MIN_PIXELS]] = True
+    if not small.any():
+        return component
+    keys = []
+    for a, b in (((slice(None), slice(0, -1)), (slice(None), slice(1, None))),
+                 ((slice(0, -1), slice(None)), (slice(1, None), slice(None)))):  # fmt: skip
+        ca, cb = component[a], component[b]
+        gap = np.linalg.norm(fp.points[a] - fp.points[b], axis=-1)
+        with np.errstate(invalid="ignore"):
+            near = gap < NEAR + GAP_PIXELS * np.maximum(fp.pixel_size[a], fp.pixel_size[b])
+        edge = (ca >= 0) & (cb >= 0) & (ca != cb) & near
+        for crumb, other in ((ca[edge], cb[edge]), (cb[edge], ca[edge])):
+            mine = small[crumb] & ~small[other]
+            keys.append(np.stack([crumb[mine], other[mine]], axis=1))
+    pairs = np.concatenate(keys)
+    if len(pairs) == 0:
+        return component
+    unique, length = np.unique(pairs, axis=0, return_counts=True)
+    order = np.lexsort((-length, unique[:, 0]))  # per crumb, its longest border first
+    unique = unique[order]
+    first = np.concatenate([[True], unique[1:, 0] != unique[:-1, 0]])
+    target = np.arange(component.max() + 2)
+    target[unique[first, 0]] = unique[first, 1]
+    out = component.copy()
+    out[above] = target[component[above]]
+    return out
 
 
 def _joined(fp: FramePoints, a: tuple, b: tuple) -> np.ndarray:

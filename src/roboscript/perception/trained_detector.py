@@ -144,7 +144,8 @@ class TrainedDetector(Grounder):
             pairs = self._same_class_neighbours(fp, pieces, piece_thing, things, classes)
             if len(pairs):
                 joined = union(count, pairs)
-                things[placed] = joined[things[placed]]
+                piece_thing = joined[piece_thing]
+                things[placed] = piece_thing[seg.labels[placed]]
                 count = int(joined.max()) + 1
                 classes, scores = self._classify(fp, seg, things, count)
         found = FrameThings(fp, seg, things, classes, scores)
@@ -188,6 +189,14 @@ class TrainedDetector(Grounder):
                 groups[i] += groups.pop(j)
         return np.concatenate(pairs)
 
+    def _decide(self, rows: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+        """Each row's class and its probability, leaving out the classes no thing of its size can be."""
+        probabilities = self.model.classifier.probabilities(rows)
+        size = np.maximum(rows[:, RISE], rows[:, EXTENT])
+        probabilities *= size[:, None] <= self._largest[None, :]
+        probabilities /= np.maximum(probabilities.sum(axis=1, keepdims=True), 1e-12)
+        return probabilities.argmax(axis=1), probabilities.max(axis=1)
+
     def _classify(self, fp: FramePoints, seg: Segmentation, things: np.ndarray, count: int):
         if count == 0:
             return np.zeros(0, dtype=int), np.zeros(0)
@@ -197,11 +206,7 @@ class TrainedDetector(Grounder):
         rows = np.array(
             [features_of_pixels(fp, order[bounds[k] : bounds[k + 1]], seg.table_height) for k in range(count)]
         )
-        probabilities = self.model.classifier.probabilities(rows)
-        size = np.maximum(rows[:, RISE], rows[:, EXTENT])
-        probabilities *= size[:, None] <= self._largest[None, :]
-        probabilities /= np.maximum(probabilities.sum(axis=1, keepdims=True), 1e-12)
-        return probabilities.argmax(axis=1), probabilities.max(axis=1)
+        return self._decide(rows)
 
     # --- grounding ---
 
