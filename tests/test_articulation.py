@@ -9,7 +9,8 @@ import pytest
 
 from roboscript.assembly import build_perception
 from roboscript.backends.mujoco_backend import MujocoBackend
-from roboscript.perception.articulation import door_joint, drawer_joint, front_plane
+from roboscript.perception.articulation import door_joint, drawer_joint, front_plane, moved_with_handle
+from roboscript.perception.base import ArticulationJoint
 from roboscript.perception.points import entity_points
 
 
@@ -130,3 +131,26 @@ def test_a_front_and_a_handle_from_different_looks_give_no_joint(cabinet):
     ):
         seen.joints("cabinet.drawer_1")
     assert seen.joints("cabinet.drawer_0")[0].part == "cabinet.drawer_0"
+
+
+def test_a_front_is_fitted_to_points_that_face_its_way():
+    """A pulled drawer seen with the arm at its handle: a few points of its front, many of its bottom. A vertical
+    plane cutting through the bottom holds more points than the front does, but none of them faces its way."""
+    rng = np.random.default_rng(0)
+    front = np.column_stack([np.zeros(60), rng.uniform(-0.15, 0.15, 60), rng.uniform(-0.06, 0.06, 60)])
+    bottom = np.column_stack([rng.uniform(-0.3, 0.0, 4000), rng.uniform(-0.17, 0.17, 4000), np.full(4000, -0.06)])
+    points = np.vstack([front, bottom])
+    normals = np.vstack([np.tile([1.0, 0, 0], (60, 1)), np.tile([0, 0, 1.0], (4000, 1))])
+    handle = np.array([0.03, 0.0, 0.0])
+    _, normal, on_plane = front_plane(points, handle, normals=normals)
+    assert abs(normal[0]) > 0.99 and len(on_plane) == 60
+
+
+def test_a_drawer_joint_moves_with_its_handle_and_a_hinge_stays():
+    drawer = ArticulationJoint("cabinet.drawer_1", "prismatic", np.array([-0.2, 0.6, 1.2]), np.array([1.0, 0, 0]),
+                               0.0, 0.0, 0.3)  # fmt: skip
+    moved = moved_with_handle(drawer, np.array([-0.17, 0.6, 1.2]), np.array([0.05, 0.62, 1.19]))
+    assert np.allclose(moved.position, [0.02, 0.6, 1.2]) and np.allclose(moved.axis, drawer.axis)
+    door = ArticulationJoint("cabinet.door_0", "revolute", np.array([-0.2, 0.4, 1.0]), np.array([0, 0, 1.0]),
+                             0.0, 0.0, 1.5)  # fmt: skip
+    assert moved_with_handle(door, np.zeros(3), np.ones(3)) is door

@@ -42,8 +42,12 @@ def front_plane(
     rng = np.random.default_rng(seed)
     toward = np.asarray(toward, dtype=float)
     best = np.zeros(len(points), dtype=bool)
+    pool = np.arange(len(points))
+    if normals is not None:  # planes are drawn through points on upright faces: a front, not the bottom before it
+        upright = np.flatnonzero(np.abs(np.nan_to_num(normals[:, 2], nan=1.0)) < MAX_TILT)
+        pool = upright if len(upright) >= 10 else pool
     for _ in range(iterations):
-        a, b, c = points[rng.choice(len(points), 3, replace=False)]
+        a, b, c = points[rng.choice(pool, 3, replace=False)]
         normal = np.cross(b - a, c - a)
         norm = np.linalg.norm(normal)
         if norm < 1e-9:
