@@ -38,6 +38,7 @@ class SceneVariation:
     in_drawer: float = 0.7
     drawer_open: float = 0.35
     filled_drawer_open: float = 0.8  # a drawer things were put in is pulled out this often
+    against_cabinet: float = 0.5  # a thing stands against the cabinet's side this often
     door_open: float = 0.4
     arm_spread: float = 0.8
     poses: int = 3  # renders per world: home first, then the arm and the furniture moved (twice)
@@ -84,10 +85,41 @@ def scene_world(recipe: Recipe, seed: int, index: int, variation: SceneVariation
     _maybe_stack(data, rng, variation.stacked)
     if furniture:
         _maybe_put_away(data, rng, variation.in_drawer)
+    source = f"<training scene {seed}/{index}>"
     try:
-        return parse_world(data, f"<training scene {seed}/{index}>")
+        spec = parse_world(data, source)
     except WorldFileError:
         return generated.spec  # a variation that does not fit is left out
+    if furniture and rng.random() < variation.against_cabinet:
+        return _against_cabinet(data, spec, rng, source) or spec
+    return spec
+
+
+def _against_cabinet(data: dict, spec: WorldSpec, rng: np.random.Generator, source: str) -> WorldSpec | None:
+    """The world with one thing on the table moved against the cabinet's side that faces the robot's middle, a few
+    millimetres from it (the paper's basket stands so): which pixels are the thing's and which the cabinet's must
+    then be told from more than a gap. None where the thing does not fit there."""
+    cabinet = spec.cabinets[0]
+    supports = {o.get("on") for o in data["objects"]} | {o.get("inside") for o in data["objects"]}
+    free = [o for o in data["objects"] if "on" not in o and "inside" not in o and o["name"] not in supports]
+    if not free:
+        return None
+    thing = free[int(rng.integers(len(free)))]
+    radius = object_types()[thing["type"]].footprint_radius
+    depth, width = cabinet.depth, cabinet.width
+    x0, y0 = cabinet.position
+    if depth / 2 - radius < 0:
+        return None
+    moved = copy.deepcopy(data)
+    entry = next(o for o in moved["objects"] if o["name"] == thing["name"])
+    entry["position"] = [
+        float(x0 + rng.uniform(-1, 1) * (depth / 2 - radius)),
+        float(y0 - width / 2 - radius - rng.uniform(0.003, 0.02)),
+    ]
+    try:
+        return parse_world(moved, source)
+    except WorldFileError:
+        return None
 
 
 def _pickable_on_table(data: dict) -> list[dict]:

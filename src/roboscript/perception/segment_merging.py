@@ -15,6 +15,7 @@ from roboscript.perception.piece_pairs import Borders, PieceStats, borders, pair
 from roboscript.perception.segments import Segmentation
 
 JOIN = 0.5  # the probability of "one thing" above which a border joins its pieces
+NEAR_SHARE = 0.0  # share of a border's neighbours on one surface above which it may join its pieces
 
 
 @dataclass
@@ -48,8 +49,12 @@ def union(count: int, pairs: np.ndarray) -> np.ndarray:
 
 def merge(pieces: Pieces, network: MLP, threshold: float = JOIN) -> np.ndarray:
     """Each piece's segment, borders joined where ``network`` (two classes: apart, together) scores "together"
-    above ``threshold``."""
+    above ``threshold`` and some of the border lies on one surface."""
     if len(pieces.features) == 0:
         return np.arange(pieces.segmentation.count)
     together = network.probabilities(pieces.features)[:, 1] > threshold
+    # Pieces whose border holds no neighbours on one surface touch in the image only, one in front of the other:
+    # the network, which rarely saw such borders between two things, joined a basket to the cabinet behind it
+    # across one or two pixels. Pieces of one thing seen apart are joined by their class later.
+    together &= pieces.borders.near > NEAR_SHARE
     return join(pieces, together)
