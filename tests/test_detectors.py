@@ -12,7 +12,8 @@ import pytest
 
 from roboscript.assembly import build_perception, build_tools
 from roboscript.backends.mujoco_backend import MujocoBackend
-from roboscript.perception.detectors import DetectorError, OpenVocabularyDetector, _iou, closest_phrase
+from roboscript.perception.detectors import DetectorError, OpenVocabularyDetector, closest_phrase
+from roboscript.perception.grounding import image_box_iou
 from roboscript.perception.modes import DETECTOR_ENV, DetectorSpec, perception_mode
 from roboscript.perception.observation import observe
 from roboscript.perception.trained_detector import TrainedDetector
@@ -141,7 +142,7 @@ def test_a_detector_loads_and_its_boxes_keep_their_promises(models, frames, kind
         assert 0 <= x0 < x1 <= w and 0 <= y0 < y1 <= h
     scores = [d.score for d in detections]
     assert scores == sorted(scores, reverse=True)
-    assert all(_iou(a.box, b.box) <= 0.5 for i, a in enumerate(detections) for b in detections[i + 1 :])
+    assert all(image_box_iou(a.box, b.box) <= 0.5 for i, a in enumerate(detections) for b in detections[i + 1 :])
     assert OpenVocabularyDetector(kind, models[kind], threshold=1.01).detect(frame, PHRASES) == []
     seen = observe(frames, detector, PHRASES)  # the whole chain runs on a detector's boxes
     assert len(seen.detections) == len(frames) and all(i.label in PHRASES for i in seen.instances)

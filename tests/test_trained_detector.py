@@ -12,7 +12,6 @@ import pytest
 
 from roboscript.backends.mujoco_backend import MujocoBackend
 from roboscript.detector_training.classes import class_names, look_alike_classes
-from roboscript.detector_training.evaluation import box_iou
 from roboscript.detector_training.samples import view_samples
 from roboscript.detector_training.scenes import scene_views
 from roboscript.objects import object_types
@@ -23,7 +22,7 @@ from roboscript.perception.detector_model import (
     DetectorModelError,
     load_detector_model,
 )
-from roboscript.perception.grounding import SegmentationGrounder, normalize_phrase
+from roboscript.perception.grounding import SegmentationGrounder, image_box_iou, normalize_phrase
 from roboscript.perception.mlp import Training, train_mlp
 from roboscript.perception.modes import perception_mode
 from roboscript.perception.points import without_pixels
@@ -104,7 +103,7 @@ def test_the_packaged_model_finds_the_objects_of_a_benchmark_world():
             assert len(labels) == len(set(labels)), labels  # one box per thing the description names once
             for d in found:
                 tally = right["objects" if d.label in objects else "parts"]
-                tally[0] += d.label in expected and box_iou(expected[d.label], d.box) >= 0.5
+                tally[0] += d.label in expected and image_box_iou(expected[d.label], d.box) >= 0.5
                 tally[1] += 1
         assert right["objects"][0] >= 0.9 * right["objects"][1] and right["objects"][1] >= 8, right
         # Parts seen nearly edge-on from above are a few pixels high: a pixel off is an IoU below 0.5.

@@ -49,8 +49,8 @@ def add_detector_commands(sub) -> None:
         description=__doc__,
     )
     train.add_argument("--seed", type=int, default=0, help="training worlds 0..N-1 of this seed; validation: another")
-    train.add_argument("--worlds", type=int, default=300, help="training worlds (each seen by 3 cameras, 2 poses)")
-    train.add_argument("--validation-worlds", type=int, default=24, help="unseen worlds to score on (0: none)")
+    train.add_argument("--worlds", type=int, default=500, help="training worlds (each seen by 3 cameras, 3 poses)")
+    train.add_argument("--validation-worlds", type=int, default=16, help="unseen worlds to score on (0: none)")
     train.add_argument("--jobs", type=int, default=2, help="worker processes that render scenes")
     train.add_argument(
         "--out",

@@ -17,7 +17,7 @@ from dataclasses import dataclass, field
 
 from roboscript.detector_training.scenes import LabelledView
 from roboscript.perception.detector_model import DetectorModel
-from roboscript.perception.grounding import Detection2D, SegmentationGrounder, normalize_phrase
+from roboscript.perception.grounding import Detection2D, SegmentationGrounder, image_box_iou, normalize_phrase
 from roboscript.perception.points import without_pixels
 from roboscript.perception.trained_detector import TrainedDetector
 
@@ -49,7 +49,7 @@ class Tally:
         matched = set()
         for d in detections:
             box = truth.get(d.label)
-            if box is not None and d.label not in matched and box_iou(box, d.box) >= IOU:
+            if box is not None and d.label not in matched and image_box_iou(box, d.box) >= IOU:
                 matched.add(d.label)
                 self.right += 1
             else:
@@ -80,14 +80,6 @@ class DetectionScores:
             "parts": {"precision": self.parts.precision, "recall": self.parts.recall,
                       "detections": self.parts.detections, "instances": self.parts.objects},
         }  # fmt: skip
-
-
-def box_iou(a: tuple[int, int, int, int], b: tuple[int, int, int, int]) -> float:
-    ix = max(0, min(a[2], b[2]) - max(a[0], b[0]))
-    iy = max(0, min(a[3], b[3]) - max(a[1], b[1]))
-    inter = ix * iy
-    union = (a[2] - a[0]) * (a[3] - a[1]) + (b[2] - b[0]) * (b[3] - b[1]) - inter
-    return inter / union if union else 0.0
 
 
 def score_views(model: DetectorModel, views: Iterable[LabelledView]) -> DetectionScores:

@@ -34,8 +34,8 @@ class TrainingSettings:
     and how each network is trained."""
 
     seed: int = 0
-    worlds: int = 300
-    validation_worlds: int = 24
+    worlds: int = 500
+    validation_worlds: int = 16
     jobs: int = 2
     merger: Training = field(default_factory=lambda: Training(hidden=(64, 32), epochs=40))
     classifier: Training = field(default_factory=lambda: Training(hidden=(128, 64), epochs=60))

@@ -13,7 +13,7 @@ from collections.abc import Sequence
 import numpy as np
 
 from roboscript.errors import RoboScriptError
-from roboscript.perception.grounding import Detection2D, Grounder, normalize_phrase
+from roboscript.perception.grounding import Detection2D, Grounder, image_box_iou, normalize_phrase
 from roboscript.robot_io import CameraFrame
 
 DETECTOR_KINDS = ("owlv2", "grounding-dino")
@@ -123,15 +123,8 @@ def _best_per_place(boxes, scores, labels, w: int, h: int, overlap: float) -> li
                int(np.clip(np.ceil(x1), 1, w)), int(np.clip(np.ceil(y1), 1, h)))  # fmt: skip
         if box[2] <= box[0] or box[3] <= box[1]:
             continue
-        if any(_iou(box, other.box) > overlap for other in kept):
+        if any(image_box_iou(box, other.box) > overlap for other in kept):
             continue
         kept.append(Detection2D(labels[k], box, float(scores[k])))
     return kept
 
-
-def _iou(a: tuple[int, int, int, int], b: tuple[int, int, int, int]) -> float:
-    ix = max(0, min(a[2], b[2]) - max(a[0], b[0]))
-    iy = max(0, min(a[3], b[3]) - max(a[1], b[1]))
-    inter = ix * iy
-    union = (a[2] - a[0]) * (a[3] - a[1]) + (b[2] - b[0]) * (b[3] - b[1]) - inter
-    return inter / union if union else 0.0

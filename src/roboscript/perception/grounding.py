@@ -35,6 +35,15 @@ class Detection2D:
             raise ValueError(f"a detection box needs x1 > x0 and y1 > y0, got {self.box}")
 
 
+def image_box_iou(a: tuple[int, int, int, int], b: tuple[int, int, int, int]) -> float:
+    """Intersection over union of two image boxes ``(x0, y0, x1, y1)``."""
+    ix = max(0, min(a[2], b[2]) - max(a[0], b[0]))
+    iy = max(0, min(a[3], b[3]) - max(a[1], b[1]))
+    inter = ix * iy
+    union = (a[2] - a[0]) * (a[3] - a[1]) + (b[2] - b[0]) * (b[3] - b[1]) - inter
+    return inter / union if union else 0.0
+
+
 class Grounder(ABC):
     """Finds the things named by ``phrases`` in one frame."""
 
