@@ -45,13 +45,14 @@ def _sample(points: np.ndarray) -> np.ndarray:
 @dataclass
 class FrameThings:
     """What one frame shows, before any phrase: the working-resolution image of each thing's index (-1: none),
-    each thing's class index and probability."""
+    each thing's class index and probability, and the pairs of things that border each other in the image."""
 
     frame: FramePoints
     segmentation: Segmentation
     things: np.ndarray  # (h, w) int
     classes: np.ndarray  # (n,) int
     scores: np.ndarray  # (n,)
+    adjacent: np.ndarray  # (m, 2) int, each pair once
 
     def pixels(self, thing: int) -> np.ndarray:
         return np.flatnonzero(self.things.ravel() == thing)
@@ -113,7 +114,9 @@ class ThingFinder:
                 things[placed] = piece_thing[seg.labels[placed]]
                 count = int(joined.max()) + 1
                 classes, scores = self._classify(fp, seg, things, count)
-        return FrameThings(fp, seg, things, classes, scores)
+        a, b = piece_thing[pieces.borders.pairs[:, 0]], piece_thing[pieces.borders.pairs[:, 1]]
+        adjacent = np.unique(np.sort(np.stack([a, b], axis=1)[a != b], axis=1), axis=0).reshape(-1, 2)
+        return FrameThings(fp, seg, things, classes, scores, adjacent)
 
     def _same_class_neighbours(
         self, fp: FramePoints, pieces, piece_thing: np.ndarray, things: np.ndarray, classes: np.ndarray

@@ -18,6 +18,7 @@ from roboscript.perception.detector_model import OTHER, DetectorModel, load_dete
 from roboscript.perception.furniture_parts import FurnitureRows, split_furniture
 from roboscript.perception.grounding import Detection2D, Grounder, normalize_phrase
 from roboscript.perception.phrases import PhraseMatch, match_phrase
+from roboscript.perception.segment_merging import union
 from roboscript.perception.things import FrameThings, ThingFinder
 from roboscript.robot_io import CameraFrame
 
@@ -79,14 +80,32 @@ class TrainedDetector(Grounder):
             for k, s in named:
                 if s == best:
                     candidates.setdefault(k, []).append((s, -order, phrase))
+        labels = {k: max(options)[2] for k, options in candidates.items()}
+        # A thing a phrase names less specifically that borders one it labels is a part of it the merge left apart
+        # (the lower half of a two-coloured mug, taken for a white one); things it labels twice side by side, too.
+        pairs = [
+            (a, b)
+            for a, b in seen.adjacent.tolist()
+            for x, y in ((a, b), (b, a))
+            if x in labels and self._part_of(labels, matches, seen, x, y)
+        ]
+        groups = union(len(seen.classes), np.array(pairs)) if pairs else np.arange(len(seen.classes))
         out = []
-        for k, options in candidates.items():
-            pixels = seen.pixels(k)
+        for group in {groups[k] for k in labels}:
+            members = [k for k in np.flatnonzero(groups == group)]
+            pixels = np.concatenate([seen.pixels(k) for k in members])
             if pixels.size * seen.frame.stride**2 < MIN_PIXELS:
                 continue
-            label = max(options)[2]
-            out.append(Detection2D(label, seen.box(pixels), float(seen.scores[k])))
+            labelled = [k for k in members if k in labels]
+            best = max(labelled, key=lambda k: max(candidates[k]))
+            out.append(Detection2D(labels[best], seen.box(pixels), float(seen.scores[best])))
         return out
+
+    def _part_of(self, labels: dict[int, str], matches: dict, seen: FrameThings, labelled: int, other: int) -> bool:
+        """Whether ``other``, which borders the labelled thing ``labelled``, is part of what that label names."""
+        if other in labels:
+            return labels[other] == labels[labelled]
+        return self._specificity(matches[labels[labelled]], int(seen.classes[other])) > 0
 
     def _specificity(self, match: PhraseMatch, class_index: int) -> int:
         return max((match.specificity.get(t, 0) for t in self.finder.types[class_index]), default=0)
