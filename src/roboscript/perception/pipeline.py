@@ -43,6 +43,7 @@ from roboscript.perception.base import (
     outside,
 )
 from roboscript.perception.drawers import carcass_front, closed_drawer, drawer_receptacle, opening_frame
+from roboscript.perception.faces import plane_normal_at
 from roboscript.perception.footprints import footprint_of
 from roboscript.perception.fusion import FusionSettings
 from roboscript.perception.grounding import Grounder, normalize_phrase
@@ -57,7 +58,6 @@ SETTLE_TIME = 0.5  # seconds given to what was let go to come to rest before loo
 SHALLOW = 0.035  # metres: containers lower than this (plates, saucers) hold things on top, not inside
 RIM = 0.02  # metres of a shallow container's edge that things should not rest on
 SURFACE_STRIDE = 2  # every how many depth pixels one stands for the observed surfaces (as ground truth's do)
-PLANE_RADIUS = 0.03  # metres around the queried point whose points a face's plane is fitted to
 HANDLE_PROUD = 0.004  # metres out of its front from which a point is the handle's, not the front's
 MOVED = 0.005  # metres the gripper must have moved since a look for another look to be worth it
 SETTLE_INSET = 0.01  # metres: the footprint a let-go object falls within, shrunk by this; smaller drops are none
@@ -571,31 +571,6 @@ def _seen_summary(seen: Observation, phrase: str, account: str = "") -> str:
     if not found:
         return asked + "; nothing asked for was seen"
     return asked + "; seen: " + ", ".join(f"{label} in {n} view{'s' * (n > 1)}" for label, n in sorted(found.items()))
-
-
-def plane_normal_at(
-    points: np.ndarray, position: np.ndarray, radius: float = PLANE_RADIUS, normals: np.ndarray | None = None
-) -> np.ndarray:
-    """Normal of the plane fitted to the points within ``radius`` of ``position``, pointing away from the
-    object's middle, or, given the points' ``normals``, the way theirs point there (a flat front, seen from one
-    side, has its middle on its plane); with too few points there, the normal of the box face nearest
-    ``position``."""
-    close = np.linalg.norm(points - position, axis=1) < radius
-    near = points[close]
-    center = points.mean(axis=0)
-    if len(near) >= 10:
-        centered = near - near.mean(axis=0)
-        normal = np.linalg.svd(centered, full_matrices=False)[2][-1]
-        facing = normals[close].sum(axis=0) if normals is not None else position - center
-        if np.dot(normal, facing) < 0:
-            normal = -normal
-        return normal / np.linalg.norm(normal)
-    box = fit_box(points)
-    gaps = np.concatenate([position - box.lower, box.upper - position])
-    k = int(np.argmin(np.abs(gaps)))
-    normal = np.zeros(3)
-    normal[k % 3] = -1.0 if k < 3 else 1.0
-    return normal
 
 
 def interior_of(points: np.ndarray, outline: np.ndarray, kind: ObjectType, name: str) -> Receptacle:
