@@ -408,6 +408,7 @@ class ToolAPI:
                     "missed, or it slipped out). Open the gripper and grasp it again: nearer its middle, or from "
                     "above (preferred_approach_direction=[0, 0, -1])"
                 )
+            self.perception.hangs_free(name)
 
     @tool
     def detach_object(self, object_name: str) -> None:

@@ -47,6 +47,7 @@ from roboscript.perception.faces import plane_normal_at
 from roboscript.perception.footprints import footprint_of
 from roboscript.perception.fusion import FusionSettings
 from roboscript.perception.grounding import Grounder, normalize_phrase
+from roboscript.perception.in_hand import register
 from roboscript.perception.instances import Instance3D, fit_box, footprint_points, object_box, table_surface
 from roboscript.perception.labels import PartLabels
 from roboscript.perception.observation import Observation, observe
@@ -55,6 +56,7 @@ from roboscript.perception.self_filter import SelfFilter
 from roboscript.phases import timed
 
 SETTLE_TIME = 0.5  # seconds given to what was let go to come to rest before looking again
+HANG_TIME = 0.3  # seconds given to what was just lifted to stop swinging in the hand before looking at it
 SHALLOW = 0.035  # metres: containers lower than this (plates, saucers) hold things on top, not inside
 RIM = 0.02  # metres of a shallow container's edge that things should not rest on
 SURFACE_STRIDE = 2  # every how many depth pixels one stands for the observed surfaces (as ground truth's do)
@@ -211,7 +213,7 @@ class PipelinePerception(Perception):
         """Puts what was found for ``phrase`` into the store, and returns the names it stored. Earlier objects of
         the phrase keep their names, given to the nearest new finds (however far they went: one apple seen again
         is the apple, wherever it rolled); finds beyond their number get new names."""
-        old = {n: o for n, o in self.store.items() if o.phrase == phrase}
+        old = {n: self._expected(n) for n, o in self.store.items() if o.phrase == phrase}
         found = sorted(found, key=lambda i: (round(float(i.box.center[1]), 3), round(float(i.box.center[0]), 3)))
         pairs = sorted(
             (float(np.linalg.norm(i.box.center - o.box.center)), k, n)
@@ -235,10 +237,27 @@ class PipelinePerception(Perception):
             names[k] = f"{base}_{counter}"
             taken.add(names[k])
         for k, instance in enumerate(found):
-            self.store[names[k]] = self._seen(names[k], phrase, instance, seen)
-            if names[k] in self._carried:  # seen in the hand: it goes with the gripper from where it is now
-                self._carried[names[k]] = self.backend.tcp_pose()
+            if names[k] in self._carried:
+                self.store[names[k]] = self._in_hand(old[names[k]], instance)
+            else:
+                self.store[names[k]] = self._seen(names[k], phrase, instance, seen)
         return set(names.values())
+
+    def _in_hand(self, expected: SeenObject, instance: Instance3D) -> SeenObject:
+        """A carried object seen in the hand: the whole of it as seen before, moved to where this look shows the
+        part of it the hand leaves in view (:func:`~roboscript.perception.in_hand.register`), or where the
+        gripper has taken it where that part says too little; from here on it goes with the gripper."""
+        self._carried[expected.name] = self.backend.tcp_pose()
+        motion = register(expected.points, instance.points)
+        return expected if motion is None else _moved(expected, motion)
+
+    def hangs_free(self, name: str) -> None:
+        """Looks at ``name`` in the hand once it hangs free: where it settled between the fingers (turned, slid
+        down) is where it is carried and set down from."""
+        if name not in self._carried or self._holding_looks:
+            return
+        self.backend.wait(HANG_TIME)
+        self._look(list(self._asked))
 
     def _seen(self, name: str, phrase: str, instance: Instance3D, seen: Observation) -> SeenObject:
         views = sum(1 for b in instance.boxes if b != -1)
@@ -343,13 +362,16 @@ class PipelinePerception(Perception):
 
     def _object(self, name: str) -> SeenObject | None:
         self._ensure_looked()
-        if name in self._carried:  # in the gripper: where the gripper has taken it since
-            motion = self.backend.tcp_pose().compose(self._carried[name].inverse())
-            return _moved(self.store[name], motion)
         if name in self.store:
-            return self.store[name]
+            return self._expected(name)
         self.require(name)
         return None
+
+    def _expected(self, name: str) -> SeenObject:
+        """The stored object where it should be now: in the gripper, where the gripper has taken it since."""
+        if name in self._carried:
+            return _moved(self.store[name], self.backend.tcp_pose().compose(self._carried[name].inverse()))
+        return self.store[name]
 
     def _part(self, name: str) -> ObjectPoints:
         """The points of furniture or a part as last seen (:meth:`_object` has checked the name)."""
@@ -528,15 +550,18 @@ def _labelled_part(parts: PartLabels, handle: str) -> str | None:
 
 
 def _moved(obj: SeenObject, motion: Transform) -> SeenObject:
-    """``obj`` as it is after the rigid ``motion`` (world frame); its support rises and falls with it."""
+    """``obj`` as it is after the rigid ``motion`` (world frame); its support and underside rise and fall as its
+    lowest point does."""
+    points = motion.apply(obj.points)
+    rise = float(points[:, 2].min() - obj.points[:, 2].min()) if len(points) else float(motion.position[2])
     return SeenObject(
         obj.name,
         obj.phrase,
-        motion.apply(obj.points),
+        points,
         obj.normals @ motion.rotation.T,
         obj.views,
-        obj.support + float(motion.position[2]),
-        obj.floor + float(motion.position[2]),
+        obj.support + rise,
+        obj.floor + rise,
         obj.kind,
     )
 
