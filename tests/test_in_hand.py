@@ -55,3 +55,13 @@ def test_too_little_seen_or_a_shape_that_does_not_fit_tells_nothing():
     assert register(model, scattered) is None
     far = model + np.array([0.0, 0.0, 0.2])  # the same shape, 20 cm off: not where the hand holds it
     assert register(model, far) is None
+
+
+def test_an_object_where_it_was_expected_or_seen_higher_stays_where_it_was_expected():
+    rng = np.random.default_rng(3)
+    model = _mug(rng)
+    side = model[model[:, 0] > 0.3]
+    assert register(model, side + rng.normal(0.0, 0.0008, side.shape)) is None
+    # Tipped and 2 cm higher than the fingers can have taken it (bits of the fingers taken for it): not believed.
+    raised = _lifted_and_tipped(np.array([0.26, -0.1, 0.915]), 10.0, 0.02).apply(model)
+    assert register(model, raised[(model[:, 0] > 0.29) & (model[:, 2] < 0.9)]) is None

@@ -23,18 +23,23 @@ KEPT = 0.8  # share of the closest pairs each iteration fits (the rest: fingers'
 CONVERGED = 1e-5  # metres of motion of the observed points below which the fit has settled
 LEAST_SEEN = 50  # points seen in the hand below which nothing is told
 FIT = 0.004  # metres: the median distance of the kept pairs at most for the fit to be believed
+BETTER = 0.001  # metres by which the fit must bring the seen points nearer than where the object was expected
+RISE = 0.003  # metres the object's middle may rise in the hand at most: what hangs from fingers turns or slides down
 MOST_TURN = math.radians(45)  # a fit that turns the object more than this in the hand is a wrong one
 MOST_SHIFT = 0.06  # metres: ... or moves it more than this
 
 
 def register(model: np.ndarray, seen: np.ndarray) -> Transform | None:
     """The rigid motion (world frame) that takes ``model`` (the object's surface where it was expected, (N, 3)) to
-    where ``seen`` (the part of it the cameras see now, (M, 3)) shows it; None where too little was seen, the fit
-    is poor, or it would move the object implausibly far."""
+    where ``seen`` (the part of it the cameras see now, (M, 3)) shows it; None where too little was seen, where the
+    object is where it was expected (the fit does not bring the seen points :data:`BETTER` nearer), where the fit
+    is poor, or where it would move the object implausibly: far, or up (bits of the fingers among the seen points
+    pull a fit towards the hand)."""
     if len(seen) < LEAST_SEEN or len(model) < LEAST_SEEN:
         return None
     model, seen = _sample(model), _sample(seen)
     tree = cKDTree(model)
+    expected_fit = _fit(tree, seen)
     # Seen points are fitted onto the model (each has a counterpart there; the model has parts not seen): the
     # transform found takes the seen to the model, so its inverse takes the model to where it is seen.
     to_model = Transform.identity()
@@ -49,15 +54,21 @@ def register(model: np.ndarray, seen: np.ndarray) -> Transform | None:
         moving = moved
         if settled:
             break
-    distances, _ = tree.query(moving)
-    if float(np.median(np.sort(distances)[: max(1, int(len(distances) * KEPT))])) > FIT:
+    fit = _fit(tree, moving)
+    if fit > FIT or fit > expected_fit - BETTER:
         return None
     motion = to_model.inverse()
     center = model.mean(axis=0)
-    shift = float(np.linalg.norm(motion.apply(center[None])[0] - center))
-    if _angle(motion) > MOST_TURN or shift > MOST_SHIFT:
+    shift = motion.apply(center) - center
+    if _angle(motion) > MOST_TURN or float(np.linalg.norm(shift)) > MOST_SHIFT or shift[2] > RISE:
         return None
     return motion
+
+
+def _fit(tree: cKDTree, points: np.ndarray) -> float:
+    """The median distance of the kept share (:data:`KEPT`) of ``points`` nearest the model in ``tree``."""
+    distances = np.sort(tree.query(points)[0])
+    return float(np.median(distances[: max(1, int(len(distances) * KEPT))]))
 
 
 def _best_fit(source: np.ndarray, target: np.ndarray) -> Transform:

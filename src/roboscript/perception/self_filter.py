@@ -19,6 +19,7 @@ import mujoco
 import numpy as np
 
 from roboscript.geometry import Transform
+from roboscript.perception.pixel_masks import grown
 from roboscript.robot_io import CameraFrame
 from roboscript.robots import RobotDescription
 from roboscript.robots.mujoco_model import compiled_robot
@@ -89,7 +90,7 @@ class SelfFilter:
             model_depth = distance / along
             robot = hit & ((seen <= 0) | ~np.isfinite(seen) | (seen > model_depth - self.tolerance))
             out[rows[robot], cols[robot]] = True
-        out = _grow(_grow(out))
+        out = grown(grown(out))
         return np.repeat(np.repeat(out, s, axis=0), s, axis=1)[:h, :w]
 
     def _candidates(self, frame: CameraFrame, h: int, w: int) -> np.ndarray:
@@ -115,13 +116,3 @@ class SelfFilter:
             if c1 > c0 and r1 > r0:
                 out[r0:r1, c0:c1] = True
         return out
-
-
-def _grow(mask: np.ndarray) -> np.ndarray:
-    """``mask`` grown by one pixel in each of the four directions."""
-    out = mask.copy()
-    out[1:] |= mask[:-1]
-    out[:-1] |= mask[1:]
-    out[:, 1:] |= mask[:, :-1]
-    out[:, :-1] |= mask[:, 1:]
-    return out

@@ -16,6 +16,7 @@ from scipy.spatial import cKDTree
 
 from roboscript.objects import object_types
 from roboscript.perception.detector_model import FURNITURE, HANDLE, OTHER, DetectorModel
+from roboscript.perception.pixel_masks import opened
 from roboscript.perception.segment_features import EXTENT, RISE, features_of_pixels
 from roboscript.perception.segment_merging import describe_pieces, merge, union
 from roboscript.perception.segments import FramePoints, Segmentation, frame_points, segment
@@ -32,21 +33,6 @@ def _diameter(points: np.ndarray) -> float:
     """The largest horizontal distance between two of ``points``."""
     xy = points[:, :2]
     return float(np.sqrt(((xy[:, None, :] - xy[None, :, :]) ** 2).sum(axis=-1).max()))
-
-
-def _opened(mask: np.ndarray) -> np.ndarray:
-    """``mask`` eroded then dilated by a 3x3 cross: strips one pixel wide are gone."""
-    eroded = mask.copy()
-    eroded[1:] &= mask[:-1]
-    eroded[:-1] &= mask[1:]
-    eroded[:, 1:] &= mask[:, :-1]
-    eroded[:, :-1] &= mask[:, 1:]
-    opened = eroded.copy()
-    opened[1:] |= eroded[:-1]
-    opened[:-1] |= eroded[1:]
-    opened[:, 1:] |= eroded[:, :-1]
-    opened[:, :-1] |= eroded[:, 1:]
-    return opened
 
 
 def _sample(points: np.ndarray) -> np.ndarray:
@@ -83,7 +69,7 @@ class FrameThings:
         # handle seen edge-on) keeps its pixels.
         mask = np.zeros(h * w, dtype=bool)
         mask[pixels] = True
-        kept = np.flatnonzero(_opened(mask.reshape(h, w)))
+        kept = np.flatnonzero(opened(mask.reshape(h, w)))
         if kept.size >= 0.5 * len(pixels):
             pixels = kept
         rows, cols = pixels // w, pixels % w
