@@ -24,7 +24,8 @@ CONVERGED = 1e-5  # metres of motion of the observed points below which the fit 
 LEAST_SEEN = 50  # points seen in the hand below which nothing is told
 FIT = 0.004  # metres: the median distance of the kept pairs at most for the fit to be believed
 BETTER = 0.001  # metres by which the fit must bring the seen points nearer than where the object was expected
-RISE = 0.003  # metres the object's middle may rise in the hand at most: what hangs from fingers turns or slides down
+RISE = 0.003  # metres its lowest points may rise in the hand at most: what hangs from fingers turns or slides down
+LOWEST = 2.0  # percentile of the heights that stands for its lowest points
 MOST_TURN = math.radians(45)  # a fit that turns the object more than this in the hand is a wrong one
 MOST_SHIFT = 0.06  # metres: ... or moves it more than this
 
@@ -33,8 +34,8 @@ def register(model: np.ndarray, seen: np.ndarray) -> Transform | None:
     """The rigid motion (world frame) that takes ``model`` (the object's surface where it was expected, (N, 3)) to
     where ``seen`` (the part of it the cameras see now, (M, 3)) shows it; None where too little was seen, where the
     object is where it was expected (the fit does not bring the seen points :data:`BETTER` nearer), where the fit
-    is poor, or where it would move the object implausibly: far, or up (bits of the fingers among the seen points
-    pull a fit towards the hand)."""
+    is poor, or where it would move the object implausibly: far, or its bottom up (bits of the fingers among the
+    seen points pull a fit towards the hand; a thing tipping about the fingers may raise its top, not its bottom)."""
     if len(seen) < LEAST_SEEN or len(model) < LEAST_SEEN:
         return None
     model, seen = _sample(model), _sample(seen)
@@ -59,8 +60,9 @@ def register(model: np.ndarray, seen: np.ndarray) -> Transform | None:
         return None
     motion = to_model.inverse()
     center = model.mean(axis=0)
-    shift = motion.apply(center) - center
-    if _angle(motion) > MOST_TURN or float(np.linalg.norm(shift)) > MOST_SHIFT or shift[2] > RISE:
+    shift = float(np.linalg.norm(motion.apply(center) - center))
+    rise = float(np.percentile(motion.apply(model)[:, 2], LOWEST) - np.percentile(model[:, 2], LOWEST))
+    if _angle(motion) > MOST_TURN or shift > MOST_SHIFT or rise > RISE:
         return None
     return motion
 

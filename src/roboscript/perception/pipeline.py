@@ -248,6 +248,9 @@ class PipelinePerception(Perception):
         part of it the hand leaves in view (:func:`~roboscript.perception.in_hand.register`), or where the
         gripper has taken it where that part says too little; from here on it goes with the gripper."""
         self._carried[expected.name] = self.backend.tcp_pose()
+        # Its surfaces in this look are not obstacles: where the fit is not believed, they stand out of the box it
+        # is carried in, and it would collide with itself.
+        self.scene = outside(self.scene, instance.box, OCCUPANCY_MARGIN)
         motion = register(expected.points, instance.points)
         return expected if motion is None else _moved(expected, motion)
 
