@@ -408,7 +408,8 @@ class ToolAPI:
                     "missed, or it slipped out). Open the gripper and grasp it again: nearer its middle, or from "
                     "above (preferred_approach_direction=[0, 0, -1])"
                 )
-            self.perception.hangs_free(name)
+            if self.perception.hangs_free(name):
+                self.motion.world_changed()  # the planning scene carries it as it hangs
 
     @tool
     def detach_object(self, object_name: str) -> None:

@@ -168,10 +168,11 @@ class Perception(ABC):
         the gripper goes. Perception that keeps what it saw follows it; perception that reads the world's state
         has nothing to do."""
 
-    def hangs_free(self, name: str) -> None:  # noqa: B027 (a hook: nothing to do by default)
+    def hangs_free(self, name: str) -> bool:
         """The carried ``name`` has just been lifted off its support and hangs in the hand. Perception that keeps
-        what it saw may look again, for where it settled between the fingers; perception that reads the world's
-        state has nothing to do."""
+        what it saw may look again, for where it settled between the fingers, and says True where it moved there;
+        perception that reads the world's state has nothing to do."""
+        return False
 
     def released(self, name: str, gripper: Transform) -> None:  # noqa: B027 (a hook: nothing to do by default)
         """The robot let ``name`` go with its gripper at ``gripper``: it moved as the gripper did since

@@ -238,6 +238,9 @@ class PipelinePerception(Perception):
             taken.add(names[k])
         for k, instance in enumerate(found):
             if names[k] in self._carried:
+                # Its surfaces in this look are not obstacles: where the fit is not believed, they stand out of the
+                # box it is carried in, and it would collide with itself.
+                self.scene = outside(self.scene, instance.box, OCCUPANCY_MARGIN)
                 self.store[names[k]] = self._in_hand(old[names[k]], instance)
             else:
                 self.store[names[k]] = self._seen(names[k], phrase, instance, seen)
@@ -248,19 +251,26 @@ class PipelinePerception(Perception):
         part of it the hand leaves in view (:func:`~roboscript.perception.in_hand.register`), or where the
         gripper has taken it where that part says too little; from here on it goes with the gripper."""
         self._carried[expected.name] = self.backend.tcp_pose()
-        # Its surfaces in this look are not obstacles: where the fit is not believed, they stand out of the box it
-        # is carried in, and it would collide with itself.
-        self.scene = outside(self.scene, instance.box, OCCUPANCY_MARGIN)
         motion = register(expected.points, instance.points)
         return expected if motion is None else _moved(expected, motion)
 
-    def hangs_free(self, name: str) -> None:
-        """Looks at ``name`` in the hand once it hangs free: where it settled between the fingers (turned, slid
-        down) is where it is carried and set down from."""
+    def hangs_free(self, name: str) -> bool:
+        """Looks at ``name`` alone in the hand once it hangs free: where it settled between the fingers (turned,
+        slid down) is where it is carried and set down from. The rest of what is known stays as the last full look
+        saw it (a look with the arm low over the table sees less of it). True where ``name`` moved in the hand."""
         if name not in self._carried or self._holding_looks:
-            return
+            return False
         self.backend.wait(HANG_TIME)
-        self._look(list(self._asked))
+        frames = [self.backend.capture(c) for c in self.backend.camera_names()]
+        phrase = self.store[name].phrase
+        seen = observe(frames, self.grounder, [phrase], self.settings, self._robot_masks(frames))
+        found = [i for i in seen.instances if i.label == phrase]
+        expected = self._expected(name)
+        if not found:
+            return False
+        nearest = min(found, key=lambda i: float(np.linalg.norm(i.box.center - expected.box.center)))
+        self.store[name] = self._in_hand(expected, nearest)
+        return self.store[name] is not expected
 
     def _seen(self, name: str, phrase: str, instance: Instance3D, seen: Observation) -> SeenObject:
         views = sum(1 for b in instance.boxes if b != -1)
