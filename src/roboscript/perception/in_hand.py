@@ -15,7 +15,8 @@ import math
 import numpy as np
 from scipy.spatial import cKDTree
 
-from roboscript.geometry import Transform
+from roboscript.geometry import Transform, rotation_angle_between
+from roboscript.perception.points import evenly_spread
 
 SAMPLE = 1500  # points of each cloud that take part
 ROUNDS = 40  # ICP iterations at most
@@ -38,7 +39,7 @@ def register(model: np.ndarray, seen: np.ndarray) -> Transform | None:
     seen points pull a fit towards the hand; a thing tipping about the fingers may raise its top, not its bottom)."""
     if len(seen) < LEAST_SEEN or len(model) < LEAST_SEEN:
         return None
-    model, seen = _sample(model), _sample(seen)
+    model, seen = evenly_spread(model, SAMPLE), evenly_spread(seen, SAMPLE)
     tree = cKDTree(model)
     expected_fit = _fit(tree, seen)
     # Seen points are fitted onto the model (each has a counterpart there; the model has parts not seen): the
@@ -62,7 +63,8 @@ def register(model: np.ndarray, seen: np.ndarray) -> Transform | None:
     center = model.mean(axis=0)
     shift = float(np.linalg.norm(motion.apply(center) - center))
     rise = float(np.percentile(motion.apply(model)[:, 2], LOWEST) - np.percentile(model[:, 2], LOWEST))
-    if _angle(motion) > MOST_TURN or shift > MOST_SHIFT or rise > RISE:
+    turn = rotation_angle_between(motion.quaternion, Transform.identity().quaternion)
+    if turn > MOST_TURN or shift > MOST_SHIFT or rise > RISE:
         return None
     return motion
 
@@ -82,12 +84,3 @@ def _best_fit(source: np.ndarray, target: np.ndarray) -> Transform:
     rotation = vt.T @ np.diag([1.0, 1.0, sign]) @ u.T
     return Transform.from_rotation(target_center - rotation @ source_center, rotation)
 
-
-def _angle(motion: Transform) -> float:
-    return math.acos(float(np.clip((np.trace(motion.rotation) - 1.0) / 2.0, -1.0, 1.0)))
-
-
-def _sample(points: np.ndarray) -> np.ndarray:
-    if len(points) <= SAMPLE:
-        return points
-    return points[np.linspace(0, len(points) - 1, SAMPLE).astype(int)]

@@ -265,9 +265,9 @@ class PipelinePerception(Perception):
         phrase = self.store[name].phrase
         seen = observe(frames, self.grounder, [phrase], self.settings, self._robot_masks(frames))
         found = [i for i in seen.instances if i.label == phrase]
-        expected = self._expected(name)
         if not found:
             return False
+        expected = self._expected(name)
         nearest = min(found, key=lambda i: float(np.linalg.norm(i.box.center - expected.box.center)))
         self.store[name] = self._in_hand(expected, nearest)
         return self.store[name] is not expected

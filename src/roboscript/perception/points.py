@@ -23,6 +23,13 @@ def point_map(frame: CameraFrame, hidden: np.ndarray | None = None) -> np.ndarra
     return world
 
 
+def evenly_spread(points: np.ndarray, most: int) -> np.ndarray:
+    """At most ``most`` of ``points``, evenly spread through the array (all of them where there are no more)."""
+    if len(points) <= most:
+        return points
+    return points[np.linspace(0, len(points) - 1, most).astype(int)]
+
+
 def robot_masks(frames: Sequence[CameraFrame], robot_index: int | None) -> list[np.ndarray | None]:
     """Per frame, the pixels that show the robot (segmentation index ``robot_index``); None where that cannot be
     told (no index, or a frame without segmentation)."""

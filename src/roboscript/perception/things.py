@@ -17,6 +17,7 @@ from scipy.spatial import cKDTree
 from roboscript.objects import object_types
 from roboscript.perception.detector_model import FURNITURE, HANDLE, OTHER, DetectorModel
 from roboscript.perception.pixel_masks import opened
+from roboscript.perception.points import evenly_spread
 from roboscript.perception.segment_features import EXTENT, RISE, features_of_pixels
 from roboscript.perception.segment_merging import describe_pieces, merge, union
 from roboscript.perception.segments import FramePoints, Segmentation, frame_points, segment
@@ -37,10 +38,7 @@ def _diameter(points: np.ndarray) -> float:
 
 def _sample(points: np.ndarray) -> np.ndarray:
     """At most :data:`SAMPLE` of the finite ``points``, evenly spread through the array."""
-    points = points[np.isfinite(points).all(axis=1)]
-    if len(points) > SAMPLE:
-        points = points[np.linspace(0, len(points) - 1, SAMPLE).astype(int)]
-    return points
+    return evenly_spread(points[np.isfinite(points).all(axis=1)], SAMPLE)
 
 
 @dataclass

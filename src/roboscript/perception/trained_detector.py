@@ -92,7 +92,7 @@ class TrainedDetector(Grounder):
         groups = union(len(seen.classes), np.array(pairs)) if pairs else np.arange(len(seen.classes))
         out = []
         for group in {groups[k] for k in labels}:
-            members = [k for k in np.flatnonzero(groups == group)]
+            members = np.flatnonzero(groups == group).tolist()
             pixels = np.concatenate([seen.pixels(k) for k in members])
             if pixels.size * seen.frame.stride**2 < MIN_PIXELS:
                 continue
