@@ -10,7 +10,9 @@ RRTConnect gets ``--queries`` queries per arm, every other planner the first ``-
 
 Each query is planned as the product plans (``MotionPlanner.plan``): a planner that runs out of ``--timeout``
 tries again with twice the time, up to three runs. Success is counted after those retries; 'first' is the share
-found by the first run alone, the figure a single-shot planner would give.
+found by the first run alone, the figure a single-shot planner would give. PRM and PRM* are OMPL's roadmaps grown
+and queried in the calling thread (:mod:`roboscript.planning.roadmap`): OMPL's own ``PRM::solve`` deadlocked this
+benchmark on the GIL, its second thread running the Python collision check.
 
 For each returned path: planning time (OMPL solve + simplification), validation time (dense check at the scene's
 5 mm padding), and an independent exact check (no padding, 1 mm steps of any point of the arm) that counts paths

@@ -1,5 +1,8 @@
 """Planning: IK accuracy, planner validity, Cartesian fractions, held objects, timing limits, typed errors."""
 
+import subprocess
+import sys
+
 import numpy as np
 import pytest
 
@@ -25,11 +28,13 @@ from roboscript.planning.ik import TCP_POSE_COLLIDES
 from roboscript.planning.planner import (
     JointPlanner,
     densify,
+    import_ompl,
     pose_distance,
     same_pose,
     whole_turn_equivalents,
     whole_turns,
 )
+from roboscript.planning.roadmap import roadmap_path
 from roboscript.sim.world_file import parse_world
 
 ROBOTS = ("panda", "ur5e")
@@ -242,6 +247,75 @@ def test_every_listed_planner_solves_a_simple_query():
         assert path.planner == name
         motion.planner.validate(path.waypoints)
     assert len(planner_names()) >= 12
+
+
+# A UR5e goal that comes with its whole-turn equivalents: OMPL's own PRM::solve adds all but the first in its second
+# thread, which runs the Python validity checker while holding the roadmap's lock; the calling thread, holding the
+# GIL, waits for that lock. It hung within these ten plans in every run (and once crashed on the shared scene).
+_PRM_PLANS = """
+import numpy as np
+from roboscript.backends.mujoco_backend import MujocoBackend
+from roboscript.planning.ground_truth_scene import ground_truth_motion
+from roboscript.sim.world_file import parse_world
+
+backend = MujocoBackend(parse_world({"name": "empty", "objects": []}), robot="ur5e", settle=0.3)
+motion = ground_truth_motion(backend)
+start, goal = backend.joint_positions(), np.array([-1.1, -1.5, 2.03, -2.11, -1.57, -0.15])
+for name in ("PRM", "PRMstar") * 5:
+    path = motion.planner.plan(start, goal, planner=name, timeout=1.0)
+    print(name, path.planner, len(path.waypoints) >= 2)
+"""
+
+
+def test_prm_and_prm_star_plan_to_several_goals_without_hanging():
+    """In a subprocess, so that a deadlock fails this test at its timeout rather than hanging the suite."""
+    try:
+        done = subprocess.run([sys.executable, "-c", _PRM_PLANS], capture_output=True, text=True, timeout=60)
+    except subprocess.TimeoutExpired:
+        pytest.fail("PRM/PRMstar planning hung: no result in 60 s (OMPL's PRM::solve deadlocks on the GIL)")
+    assert done.returncode == 0, done.stderr[-3000:]
+    assert done.stdout.split("\n")[:-1] == [f"{name} {name} True" for name in ("PRM", "PRMstar") * 5]
+
+
+def _wall_problem(star: bool):
+    """A 2-D roadmap planner (set up) whose states are free outside a wall at |x| < 0.1, y < 0.6 padded by 0.05."""
+    ob, og, _ = import_ompl()
+    space = ob.RealVectorStateSpace(2)
+    bounds = ob.RealVectorBounds(2)
+    bounds.setLow(-1.0)
+    bounds.setHigh(1.0)
+    space.setBounds(bounds)
+    setup = og.SimpleSetup(space)
+    # The planner checks motions at discrete steps and may clip a corner between two: it sees the wall padded.
+    setup.setStateValidityChecker(lambda state: abs(state[0]) >= 0.15 or state[1] >= 0.65)
+    info = setup.getSpaceInformation()
+    start, goal = space.allocState(), space.allocState()
+    start[0], start[1], goal[0], goal[1] = -0.5, -0.5, 0.5, -0.5
+    setup.setStartAndGoalStates(start, goal)
+    planner = og.PRMstar(info) if star else og.PRM(info)
+    setup.setPlanner(planner)
+    setup.setup()
+    return ob, planner, space, info
+
+
+@pytest.mark.parametrize(("star", "improve"), [(False, False), (True, False), (True, True)])
+def test_the_roadmap_planners_find_a_way_round_a_wall_in_the_calling_thread(star, improve):
+    ob, planner, space, info = _wall_problem(star)
+    start, goals = np.array([-0.5, -0.5]), [np.array([0.5, -0.5]), np.array([0.5, 0.9])]  # neither in a straight line
+    waypoints = roadmap_path(ob, planner, space, info, start, goals, timeout=0.5, star=star, improve=improve)
+    assert waypoints is not None
+    np.testing.assert_array_equal(waypoints[0], start)
+    assert any(np.array_equal(waypoints[-1], goal) for goal in goals)
+    dense = densify(waypoints, np.ones(2), 0.001)
+    assert np.all((np.abs(dense[:, 0]) >= 0.1) | (dense[:, 1] >= 0.6)), "the path crosses the wall"
+
+
+def test_the_roadmap_planners_give_up_at_their_timeout_where_the_goal_is_walled_off():
+    ob, planner, space, info = _wall_problem(star=False)
+    # Closed off above the wall too: only the start's side is reachable.
+    info.setStateValidityChecker(lambda state: abs(state[0]) >= 0.15)
+    start, goal = np.array([-0.5, -0.5]), np.array([0.5, -0.5])
+    assert roadmap_path(ob, planner, space, info, start, [goal], timeout=0.2, star=False, improve=False) is None
 
 
 def test_time_parameterisation_handles_corners_closer_than_a_piece():

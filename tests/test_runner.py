@@ -12,7 +12,7 @@ import numpy as np
 import pytest
 
 from roboscript.backends.mujoco_backend import MujocoBackend
-from roboscript.bench import runner
+from roboscript.bench import runner, workers
 from roboscript.bench.runner import TrialPool
 from roboscript.bench.trial import TrialRecord, TrialSpec
 from roboscript.codegen.outcomes import Outcome
@@ -27,6 +27,9 @@ def _fake_trial(spec: TrialSpec) -> dict:
     if spec.task == "crash":
         os.kill(os.getpid(), signal.SIGSEGV)
     if spec.task == "hang":
+        time.sleep(3600)
+    if spec.task == "stuck":  # a program's run that should be over in a second, in a tool that never returns
+        workers._announce(time.monotonic() + 1.0)
         time.sleep(3600)
     if spec.task == "raise":
         raise RuntimeError("no world here")
@@ -120,3 +123,11 @@ def test_a_renderer_kept_for_one_build_of_a_world_renders_another_exactly_as_its
     own.close()
     seed0.close()
     seed1.close()
+
+
+def test_a_trial_stuck_in_a_tool_past_its_announced_deadline_is_ended_by_the_watchdog_as_a_timeout():
+    with TrialPool(1, serve_args=(_fake_trial, _no_warm)) as pool:
+        stuck, after = pool.run([_spec("stuck", timeout=300.0), _spec("ok")])
+    # Ended by the watchdog, not by the runner's own budget (the limit and a minute), which says "(killed)".
+    assert stuck.outcome == Outcome.TIMEOUT.value and "a tool it called did not return" in stuck.error
+    assert after.ok

@@ -60,6 +60,34 @@ HOSTILE = [
     # C code the timer signal cannot interrupt: the CPU-time limit or, on a busy machine, the wall deadline ends it.
     ("x = sum(range(10 ** 13))", TIMEOUT, "TimeoutError: the program ran"),
     ("os = 3\nx = np.os", FORBIDDEN, ".os"),
+    # numpy's raw memory: no object or record arrays, no reinterpreted bytes, no constructor over a buffer.
+    ("a = np.array([1, None])", RUNTIME, "ObjectArrayError: np.array() would make an array of Python objects"),
+    ("a = np.zeros(3, dtype=object)", FORBIDDEN, "the name 'object' is not allowed"),
+    ("a = np.zeros(3, dtype='object')", RUNTIME, "ObjectArrayError"),
+    ("a = np.zeros(2, 'O')", RUNTIME, "ObjectArrayError"),
+    ("a = np.array([1.0], dtype=[('a', 'O')])", RUNTIME, "ObjectArrayError"),
+    ("a = np.full(2, 7, 'V8')", RUNTIME, "ObjectArrayError"),
+    ("a = np.ndarray((1,), dtype='O', buffer=np.zeros(1))", RUNTIME, "np.ndarray(...) cannot be called"),
+    ("a = np.arange(3).view('O')", FORBIDDEN, ".view is not allowed"),
+    ("a = np.arange(3)\na.dtype = 'O'", FORBIDDEN, "assigning .dtype is not allowed"),
+    ("b = np.array([1.0]).astype(object).tobytes()", FORBIDDEN, ".tobytes"),
+    ("m = np.zeros(1).data", FORBIDDEN, ".data"),
+    ("g = np.random.default_rng().bit_generator.cffi", FORBIDDEN, ".cffi"),
+    # Format templates built while the program runs may not walk attributes.
+    ("t = '{0.' + '__class__}'\ns = t.format(1)", RUNTIME, "FormatTemplateError: format fields may not read"),
+    ("t = '{0' + chr(46) + 'real}'\ns = t.format(1)", RUNTIME, "format fields may not read attributes"),
+    ("s = str.format('{0.' + 'real}', 1)", RUNTIME, "format fields may not read attributes"),
+    ("t = '{0:{1.' + 'real}}'\ns = t.format(1, 2)", RUNTIME, "format fields may not read attributes"),
+    ("f = str.format", FORBIDDEN, "take .format only to call it"),
+    ("f = 'x {}'.format\ns = f(1)", FORBIDDEN, "take .format only to call it"),
+    # Programs the parser chokes on are syntax errors, here and in the static checker (the trial's own process).
+    ("x = " + "-" * 100_000 + "1", Outcome.SYNTAX, "cannot be parsed"),
+    ("x = 1\0", Outcome.SYNTAX, "SyntaxError"),
+    # A time-out caught and swallowed is still a time-out.
+    ("for _ in range(1):\n    try:\n        while True:\n            pass\n    finally:\n        break", TIMEOUT,
+     "longer than its 2 s limit"),
+    ("while True:\n    try:\n        while True:\n            pass\n    finally:\n        continue", TIMEOUT,
+     "longer than its 2 s limit"),
 ]
 
 
@@ -81,6 +109,14 @@ def test_hostile_programs_are_rejected_or_contained(tmp_path, program, outcome, 
     assert outcome_got == outcome.value, error_got
     assert error in error_got
     assert not mark.exists() and os.listdir(tmp_path) == []
+
+
+@pytest.mark.parametrize("program", ["x = " + "-" * 100_000 + "1", "x = 1\0", "x = " + "not " * 100_000 + "1"])
+def test_the_static_checker_reports_what_cannot_be_parsed_as_syntax(program):
+    from roboscript.codegen.checker import check_program
+
+    (finding,) = check_program(program)
+    assert finding.outcome is Outcome.SYNTAX and finding.message.startswith("SyntaxError: ")
 
 
 def test_a_well_behaved_program_runs_with_numpy_and_prints():

@@ -1,6 +1,17 @@
-"""The LLM-facing tool API: ``Pose`` and the perception and motion tools (DESIGN.md §3)."""
+"""The LLM-facing tool API: ``Pose`` and the perception and motion tools (DESIGN.md §3).
+
+``ToolAPI`` is imported on first use: a program's process needs the pose types alone, without the planner,
+perception and simulator modules the tools stand on.
+"""
 
 from roboscript.api.pose import Point, Pose, Quaternion
-from roboscript.api.tools import ToolAPI
 
 __all__ = ["Point", "Pose", "Quaternion", "ToolAPI"]
+
+
+def __getattr__(name: str):
+    if name == "ToolAPI":
+        from roboscript.api.tools import ToolAPI
+
+        return ToolAPI
+    raise AttributeError(f"module {__name__!r} has no attribute {name!r}")

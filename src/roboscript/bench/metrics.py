@@ -44,6 +44,7 @@ def task_result(task: str, robot: str, records: Sequence[TrialRecord]) -> dict:
                 "checks": r.checks,
                 "sim_time_s": r.sim_time_s,
                 "wall_time_s": r.wall_time_s,
+                "judged_by": r.judged_by,
             }
             for r in ordered
         ],

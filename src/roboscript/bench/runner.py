@@ -189,6 +189,8 @@ class TrialPool:
                         finish(spec, TrialRecord(**payload))
                     elif status == "died":
                         finish(spec, _death(spec, payload, started))
+                    elif status == "timeout":  # the worker's watchdog ended it
+                        finish(spec, failed_record(spec, payload, started, Outcome.TIMEOUT))
                     else:
                         finish(spec, failed_record(spec, f"the trial could not be run: {payload}", started))
                 now = time.perf_counter()

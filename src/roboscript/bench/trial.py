@@ -7,6 +7,7 @@ process so that a crash or a hang in a program cannot take the runner down.
 from __future__ import annotations
 
 import os
+from collections.abc import Callable
 from dataclasses import asdict, dataclass, field, replace
 from pathlib import Path
 
@@ -88,6 +89,8 @@ class TrialRecord:
     program_source: str | None = None  # which stored program ran (a file, or an entry of a generated-code file)
     # Where the trial's wall time went, in seconds per phase (roboscript.phases), with "rest" and "wall".
     phases: dict[str, float] = field(default_factory=dict)
+    # Which process judged the outcome and the checks, and where the program ran: never the same process.
+    judged_by: str = ""
 
     def first_attempt(self) -> TrialRecord:
         """The trial as it would have ended without repair: its first attempt (itself when there was one)."""
@@ -109,13 +112,16 @@ class TrialRecord:
         return asdict(self)
 
 
-def run_trial(spec: TrialSpec) -> TrialRecord:
+def run_trial(spec: TrialSpec, announce: Callable[[float | None], None] | None = None) -> TrialRecord:
     """Runs one trial in this process, the program in the sandbox (:mod:`roboscript.codegen.sandbox`).
 
     With an LLM and ``repair_rounds``, a program that the checker rejects, or that stops on an error or a planning
     failure, goes back to the LLM with the error, and the repaired program runs again in a freshly built world (the
     same seed, so the same world). Each run is an attempt in the record; the video shows the last one that ended
     (each attempt records into a file of its own, which replaces the video when the attempt is over).
+
+    ``announce`` is told by when each program run must be over, and ``None`` after it (the watchdog of
+    :mod:`roboscript.bench.workers`).
     """
     clock = PhaseClock()
     task = free_task(spec.world, spec.instruction) if spec.world else get_task(spec.task, spec.suite)
@@ -130,7 +136,7 @@ def run_trial(spec: TrialSpec) -> TrialRecord:
                 result = author.failure
             else:
                 limits = Limits(spec.timeout, spec.memory_limit).scaled_to_load()
-                result = check_and_execute(program, world.namespace, limits)
+                result = check_and_execute(program, world.namespace, limits, announce)
             attempt = world.judge(result)
         attempt["program"] = program if spec.llm is not None else None
         attempts.append(attempt)
@@ -163,6 +169,7 @@ def run_trial(spec: TrialSpec) -> TrialRecord:
         else [],
         program_source=spec.program_source,
         phases=phases,
+        judged_by=last["judged_by"],
     )
 
 
@@ -247,7 +254,14 @@ def attempt_record(result: ExecutionResult, checks: list[dict], sim_time: float)
         "checks": checks,
         "sim_time_s": round(sim_time, 3),
         "output": result.output[:MAX_OUTPUT],
+        "judged_by": judged_by(result),
     }
+
+
+def judged_by(result: ExecutionResult) -> str:
+    """Who judged an attempt: this process, from the world's state, after the program's process ended."""
+    where = f"; the program ran in {result.ran_in}" if result.ran_in else "; no program ran"
+    return f"the trial's process {os.getpid()}, from the world's state{where}"
 
 
 def _trial_world(spec: TrialSpec, task: Task):
@@ -309,12 +323,15 @@ def error_report(program: str, result: ExecutionResult) -> list[str]:
     return lines
 
 
-def check_and_execute(program: str, namespace: dict, limits: Limits) -> ExecutionResult:
-    """The static checker first; only a program it passes runs, in a process of its own, its tool calls run here."""
+def check_and_execute(
+    program: str, namespace: dict, limits: Limits, announce: Callable[[float | None], None] | None = None
+) -> ExecutionResult:
+    """The static checker first; only a program it passes runs, in a confined process of its own, its tool calls
+    run here."""
     from roboscript.api import ToolAPI
 
     findings = check_program(program)
     if findings:
         error = "; ".join(f"{f.message} (program line {f.line})" for f in findings[:5])
         return ExecutionResult(findings[0].outcome, error, "")
-    return run_program(program, namespace, limits, forwarded=ToolAPI.TOOL_NAMES)
+    return run_program(program, namespace, limits, forwarded=ToolAPI.TOOL_NAMES, announce=announce)

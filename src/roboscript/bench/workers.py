@@ -8,18 +8,27 @@ allows keeping GL state across a fork (:func:`roboscript.sim.shared_gl.fork_safe
 cameras with their shaders compiled. A trial then finds them made instead of spending half a second on them.
 
 The worker and the runner speak over one pipe. The runner sends a :class:`TrialSpec` (or ``None``: stop); the
-worker answers ``("started", pid)`` with the trial's process id, then ``("ok", record)``, ``("error", text)`` or
-``("died", exit code)``.
+worker answers ``("started", pid)`` with the trial's process id, then ``("ok", record)``, ``("error", text)``,
+``("died", exit code)`` or ``("timeout", text)``.
+
+The worker is also the trial's watchdog. The trial tells it, over the pipe it reports on, by when the program it
+is running must be over (``("deadline", t)``, then ``("deadline", None)`` once it is); a trial still inside that
+run past the deadline and :data:`WATCHDOG_MARGIN` is stuck where its own timer cannot reach (a tool in native code
+that never returns), and is killed and reported as a time-out.
 """
 
 from __future__ import annotations
 
 import contextlib
+import functools
 import os
 import pickle
+import resource
 import select
+import signal
 import struct
 import sys
+import time
 import traceback
 from collections.abc import Callable
 
@@ -28,6 +37,7 @@ from roboscript.processes import die_with_parent, run_exit_hooks
 
 LENGTH = struct.Struct("<Q")  # the length of a trial's message, before it
 POLL_INTERVAL = 0.5  # seconds between looks at whether a trial that has not reported has ended
+WATCHDOG_MARGIN = 5.0  # seconds past a program's announced end before its trial is killed
 
 
 def serve(conn, run: Callable[[TrialSpec], dict] | None = None, warm: Callable[[TrialSpec], None] | None = None):
@@ -70,54 +80,98 @@ def _fork_trial(conn, spec: TrialSpec, run: Callable[[TrialSpec], dict]) -> None
         _trial_child(spec, run, writer)
     os.close(writer)
     conn.send(("started", pid))
-    payload, status = _outcome(reader, pid)
+    payload, status, overdue = _outcome(reader, pid)
     if payload is not None:
         conn.send(pickle.loads(payload))
+    elif overdue is not None:
+        conn.send(("timeout", overdue))
     else:
         conn.send(("died", os.waitstatus_to_exitcode(status)))
 
 
-def _outcome(reader: int, pid: int) -> tuple[bytes | None, int]:
-    """The trial's message (None if it ended without one) and its wait status. Reads until the message is whole
-    or the trial has ended, not until the pipe's end: a process the trial started may still hold the pipe open."""
-    received = bytearray()
+def _outcome(reader: int, pid: int) -> tuple[bytes | None, int, str | None]:
+    """The trial's final message (None if it ended without one), its wait status, and why the watchdog killed it
+    (None if it did not). Reads until the final message is whole or the trial has ended, not until the pipe's end:
+    a process the trial started may still hold the pipe open."""
+    frames = _Frames()
+    deadline: float | None = None
     status = None
     try:
         while status is None:
             if select.select([reader], [], [], POLL_INTERVAL)[0]:
                 chunk = os.read(reader, 1 << 20)
-                received += chunk
-                if _whole(received) or not chunk:
+                if not chunk:
                     break
+                for frame in frames.add(chunk):
+                    if frame[:1] == b"D":  # a deadline frame: the program's run must be over by then
+                        deadline = _deadline(frame)
+                    else:
+                        return frame, os.waitpid(pid, 0)[1], None
                 continue
+            if deadline is not None and time.monotonic() > deadline + WATCHDOG_MARGIN:
+                with contextlib.suppress(ProcessLookupError):
+                    os.kill(pid, signal.SIGKILL)
+                os.waitpid(pid, 0)
+                why = (
+                    "TimeoutError: the program ran past its limit and a tool it called did not return (the trial's "
+                    f"process was killed {WATCHDOG_MARGIN:g} s after the program's deadline)"
+                )
+                return None, 0, why
             done, reaped = os.waitpid(pid, os.WNOHANG)
             if done:
                 status = reaped
                 while select.select([reader], [], [], 0)[0] and (chunk := os.read(reader, 1 << 20)):
-                    received += chunk  # what it wrote just before it ended
+                    for frame in frames.add(chunk):  # what it wrote just before it ended
+                        if frame[:1] != b"D":
+                            return frame, status, None
     finally:
         os.close(reader)
     if status is None:
         status = os.waitpid(pid, 0)[1]
-    return (bytes(received[LENGTH.size :]) if _whole(received) else None), status
+    return None, status, None
 
 
-def _whole(received: bytearray) -> bool:
-    return len(received) >= LENGTH.size and len(received) - LENGTH.size >= LENGTH.unpack_from(received)[0]
+class _Frames:
+    """Splits what the trial writes into its length-prefixed frames."""
+
+    def __init__(self):
+        self.received = bytearray()
+
+    def add(self, chunk: bytes) -> list[bytes]:
+        self.received += chunk
+        frames = []
+        while len(self.received) >= LENGTH.size:
+            (length,) = LENGTH.unpack_from(self.received)
+            if len(self.received) - LENGTH.size < length:
+                break
+            frames.append(bytes(self.received[LENGTH.size : LENGTH.size + length]))
+            del self.received[: LENGTH.size + length]
+        return frames
+
+
+def _deadline(frame: bytes) -> float | None:
+    text = frame[1:].decode()
+    return None if text == "none" else float(text)
+
+
+def _write_frame(writer: int, data: bytes) -> None:
+    view = memoryview(LENGTH.pack(len(data)) + data)
+    while view:
+        view = view[os.write(writer, view) :]
 
 
 def _trial_child(spec: TrialSpec, run: Callable[[TrialSpec], dict], writer: int) -> None:
     """In the forked trial: run it, write the outcome to the worker, and leave without the worker's clean-up."""
     code = 1
+    global _announce
+    _announce = functools.partial(_announce_deadline, writer)
+    _limit_memory(TRIAL_MEMORY)
     try:
         try:
             message = ("ok", run(spec))
         except BaseException as exc:  # the world could not be built, or judging failed: report, do not hang
             message = ("error", f"{type(exc).__name__}: {exc}\n{traceback.format_exc(limit=4)}")
-        data = pickle.dumps(message)
-        view = memoryview(LENGTH.pack(len(data)) + data)
-        while view:
-            view = view[os.write(writer, view) :]
+        _write_frame(writer, pickle.dumps(message))  # a pickle starts with b"\x80", never with the deadline's b"D"
         code = 0
     finally:
         run_exit_hooks()  # what the trial started that ends with its process (a ROS trial's master and its home)
@@ -126,8 +180,30 @@ def _trial_child(spec: TrialSpec, run: Callable[[TrialSpec], dict], writer: int)
         os._exit(code)
 
 
+_announce: Callable[[float | None], None] | None = None  # in a trial's process: tells the worker its deadline
+
+# Address space a trial's process may add to what it was forked with: simulation, perception and planning for one
+# trial take about 2 GiB; a tool driven into unbounded work fails with a MemoryError well before the machine does.
+TRIAL_MEMORY = 12 * 1024**3
+
+
+def _limit_memory(extra: int) -> None:
+    try:
+        with open("/proc/self/statm") as f:
+            mapped = int(f.read().split()[0]) * resource.getpagesize()
+    except (OSError, ValueError, IndexError):
+        return
+    hard = resource.getrlimit(resource.RLIMIT_AS)[1]
+    limit = mapped + extra if hard == resource.RLIM_INFINITY else min(mapped + extra, hard)
+    resource.setrlimit(resource.RLIMIT_AS, (limit, hard))
+
+
+def _announce_deadline(writer: int, deadline: float | None) -> None:
+    _write_frame(writer, b"D" + (b"none" if deadline is None else repr(deadline).encode()))
+
+
 def _run_trial(spec: TrialSpec) -> dict:
-    return run_trial(spec).to_dict()
+    return run_trial(spec, announce=_announce).to_dict()
 
 
 def warm_for(spec: TrialSpec) -> None:

@@ -13,7 +13,7 @@ from dataclasses import dataclass
 from roboscript.api.signature import ALIASES
 from roboscript.codegen.guard import find_violations
 from roboscript.codegen.outcomes import Outcome
-from roboscript.codegen.sandbox import PROGRAM_BUILTINS, safe_numpy
+from roboscript.codegen.sandbox import PROGRAM_BUILTINS, parse_program, safe_numpy
 
 
 @dataclass(frozen=True)
@@ -57,7 +57,7 @@ def check_program(program: str, tools: Mapping[str, inspect.Signature] | None = 
     """Every problem found without running ``program``; empty when it may run."""
     tools = tool_signatures() if tools is None else tools
     try:
-        tree = ast.parse(program)
+        tree = parse_program(program)
     except SyntaxError as exc:
         return [Finding(exc.lineno or 0, Outcome.SYNTAX, f"SyntaxError: {exc.msg}")]
     findings = [Finding(v.line, Outcome.FORBIDDEN_CONSTRUCT, v.message) for v in find_violations(tree)]
@@ -90,7 +90,7 @@ def check_program(program: str, tools: Mapping[str, inspect.Signature] | None = 
 def undefined_calls(program: str, tools: Mapping[str, inspect.Signature] | None = None) -> list[CallSite]:
     """Calls of names that are neither tools, builtins, defined nor assigned: one per name, first call first."""
     tools = tool_signatures() if tools is None else tools
-    tree = ast.parse(program)
+    tree = parse_program(program)
     known = _callable_names(tree, tools)
     lines = program.splitlines()
     sites: dict[str, CallSite] = {}

@@ -11,6 +11,8 @@ from __future__ import annotations
 import ast
 from dataclasses import dataclass
 
+from roboscript.codegen.format_check import uncalled_format_lines
+
 ALLOWED_NODES: tuple[type[ast.AST], ...] = (
     ast.alias,  # only inside an import, which is reported itself
     ast.Module, ast.Expr, ast.Assign, ast.AugAssign, ast.AnnAssign, ast.Pass, ast.Break, ast.Continue,
@@ -37,6 +39,9 @@ FORBIDDEN_ATTRIBUTES = frozenset(
         "lib", "core", "f2py", "distutils", "testing", "os", "sys", "subprocess", "builtins", "importlib",
         "system", "popen", "open", "exec", "eval", "compile", "globals", "locals", "vars", "getattr", "setattr",
         "delattr", "format_map",
+        # numpy's raw memory: reinterpreting an array's bytes (as object pointers, too), reading them or their base
+        "view", "tobytes", "tostring", "data", "base", "getfield", "setfield", "frombuffer", "fromstring", "cffi",
+        "__array_interface__", "byte_bounds",
     }
 )  # fmt: skip
 
@@ -96,7 +101,21 @@ def find_violations(tree: ast.AST) -> list[Violation]:
         elif isinstance(node, ast.Constant) and _dunder_template(node.value):
             # str.format reads attributes named in its template: "{0.__class__}".format(x)
             found.append(Violation(line, "format strings may not name dunder attributes"))
+        elif isinstance(node, ast.Attribute) and node.attr in ASSIGN_ONLY_ATTRIBUTES and not _loads(node):
+            found.append(Violation(line, f"assigning .{node.attr} is not allowed (it reinterprets an array's memory)"))
+    found += [
+        Violation(line, "take .format only to call it: template.format(...), or use an f-string")
+        for line in uncalled_format_lines(tree)
+    ]
     return sorted(found, key=lambda v: v.line)
+
+
+# Attributes a program may read but not assign: numpy reinterprets an array's memory when they change.
+ASSIGN_ONLY_ATTRIBUTES = frozenset({"dtype", "strides"})
+
+
+def _loads(node: ast.Attribute) -> bool:
+    return isinstance(node.ctx, ast.Load)
 
 
 def _dunder_template(value: object) -> bool:

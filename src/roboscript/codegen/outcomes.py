@@ -16,6 +16,7 @@ class Outcome(str, Enum):
     TIMEOUT = "timeout"  # ran past its time limit
     CHECKS_FAILED = "checks_failed"  # ran to its end, but the task's checks did not all pass
     LLM_ERROR = "llm_error"  # no program: the model could not be asked
+    SANDBOX_VIOLATION = "sandbox_violation"  # tried what the sandbox forbids at run time (a system call, the protocol)
 
 
 STATIC = (Outcome.SYNTAX, Outcome.UNKNOWN_FUNCTION, Outcome.BAD_ARGUMENTS, Outcome.FORBIDDEN_CONSTRUCT)

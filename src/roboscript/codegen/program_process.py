@@ -1,228 +1,281 @@
-"""A program runs in a process of its own; its tool calls are forwarded to the process that holds the backend.
+"""A program runs in a confined process of its own; its tool calls are served by the process that holds the backend.
 
-The program's process is forked from the caller, so it starts with the same modules, but it acts on the world only
-through the tools: each call is sent over a pipe, run by the caller, and its result (or exception) sent back.
-Whatever the program does to its own process (exhausts its memory, trips the CPU-time limit, corrupts its
-interpreter) stays there: the caller survives, with the world as the tools left it, and can still judge it. This
-is fault isolation; what keeps a program from reaching outside is the guard (:mod:`roboscript.codegen.guard`).
+The program's process is a fresh interpreter (:mod:`roboscript.codegen.jail`) with an environment that holds no
+credentials and no descriptor but its socket; it confines itself with seccomp before the program starts
+(:mod:`roboscript.codegen.confinement`). Tool calls arrive as data (:mod:`roboscript.codegen.protocol`), checked
+and bounded before anything here acts on them; nothing from the program is unpickled or evaluated in this process.
+What the program's process reports is only a claim about how the program ended: a deadline this side saw pass is
+a time-out whatever it claims, a broken protocol or a forbidden system call is a sandbox violation, and the task's
+checks are judged by the caller from the world, after the program's process has ended.
 
-The protocol is strictly call and reply. The program's timer signal is held while a call is under way, so a
-message is never cut in half; the caller enforces the time limit on the tool itself (the same timer signal, in
-its own process) and the program stops as soon as the reply arrives.
+This side bounds its own time too: a tool still running at the program's limit is stopped by this process's timer
+signal; one stuck in native code, where no signal reaches, is ended by the trial's watchdog in its parent
+(``announce`` tells it when the program's run must be over, see :mod:`roboscript.bench.workers`).
 """
 
 from __future__ import annotations
 
 import contextlib
+import dataclasses
 import os
-import pickle
 import signal
+import socket
+import subprocess
 import sys
 import threading
 import time
 from collections.abc import Callable, Collection
-from multiprocessing import Pipe
-from multiprocessing.connection import Connection
 
+from roboscript.codegen import channel, confinement, protocol, wire
 from roboscript.codegen.outcomes import Outcome
-from roboscript.codegen.sandbox import ExecutionResult, Limits, ProgramTimeout, execute
-from roboscript.errors import UsageError
-from roboscript.processes import die_with_parent
+from roboscript.codegen.sandbox import MAX_ERROR, ExecutionResult, Limits, shortened
+from roboscript.errors import RoboScriptError
 
-EXIT_GRACE = 10.0  # seconds past the time limit before a program's process that does not report is killed
-MAX_MESSAGE = 64 * 1024**2  # bytes of one tool call's arguments or one reply
-MAX_REPORTED_OUTPUT = 8000  # characters of printed output sent back (its start and its end)
+EXIT_GRACE = 5.0  # seconds past the time limit before a program's process that does not report is killed
+STARTUP_LIMIT = 60.0  # seconds a program's process may take to start and confine itself (stretched by load)
+MAX_REPORTED_OUTPUT = 8000  # characters of printed output kept (its start and its end)
+MAX_TOOL_ERROR = 2000  # characters of a tool's error message sent to the program
+JAIL_NAMES = frozenset(("np", "Pose", "Point", "Quaternion"))  # made in the program's process itself
+# What the program's process is told of its surroundings: nothing the user's environment holds (API keys), only
+# what makes it start quickly and alone (one BLAS thread: it may not start threads once confined).
+JAIL_ENVIRONMENT = {
+    "PATH": "/usr/bin:/bin",
+    "LANG": "C.UTF-8",
+    "HOME": "/nonexistent",
+    "OPENBLAS_NUM_THREADS": "1",
+    "OMP_NUM_THREADS": "1",
+    "MKL_NUM_THREADS": "1",
+    "MUJOCO_GL": "disabled",  # roboscript's import looks for a GL library unless told; the program needs none
+}
+REPORTABLE = frozenset(
+    (Outcome.OK, Outcome.RUNTIME_ERROR, Outcome.PLANNING_FAILURE, Outcome.TIMEOUT, Outcome.SYNTAX,
+     Outcome.FORBIDDEN_CONSTRUCT)
+)  # fmt: skip
 
 
-class ToolArgumentError(UsageError, TypeError):
-    """A tool was given something that cannot be passed to it (a function, a generator, too much data)."""
+class SandboxSetupError(RoboScriptError, RuntimeError):
+    """The program's process could not be started or set up (not the program's fault)."""
 
 
 def run_program(
-    program: str, namespace: dict, limits: Limits | None = None, forwarded: Collection[str] = ()
+    program: str,
+    namespace: dict,
+    limits: Limits | None = None,
+    forwarded: Collection[str] = (),
+    announce: Callable[[float | None], None] | None = None,
+    probe: tuple[str, str] | None = None,
 ) -> ExecutionResult:
-    """Runs ``program`` (guarded, within ``limits``) in a forked process where each name in ``forwarded`` is a
-    stand-in that calls ``namespace[name]`` here."""
+    """Runs ``program`` (guarded, within ``limits``) in a confined process where each name in ``forwarded`` is a
+    stand-in that calls ``namespace[name]`` here; every other name of ``namespace`` must be data.
+
+    ``announce(t)`` is told the ``time.monotonic()`` by which the program's run will be over, once it starts, and
+    ``None`` when it is over. ``probe``: for tests, code run unguarded in the program's process, its first part
+    before the process is confined, its second once it is.
+    """
     limits = limits or Limits()
     missing = [name for name in forwarded if not callable(namespace.get(name))]
     if missing:
         raise ValueError(f"forwarded names must be callables in the namespace; not: {', '.join(missing)}")
-    here, there = Pipe()
-    sys.stdout.flush()
-    sys.stderr.flush()
-    parent = os.getpid()
-    pid = os.fork()
-    if pid == 0:  # the program's process: never returns
-        die_with_parent(signal.SIGKILL, parent)  # a killed trial takes its program along
-        _program_side(program, namespace, limits, forwarded, there, keep=there.fileno())
-    there.close()
-    try:
-        return _ToolSide(pid, namespace, limits, here).serve()
-    finally:
-        here.close()
-        _reap(pid)
-
-
-# --- the program's side ----------------------------------------------------------------------------------------
-
-
-def _program_side(
-    program: str, namespace: dict, limits: Limits, forwarded: Collection[str], conn: Connection, keep: int
-) -> None:
-    code = 1
-    try:
-        _close_inherited_files(keep)
-        stand_ins = {name: _stand_in(name, conn) for name in forwarded}
-        result = execute(program, {**namespace, **stand_ins}, limits)
-        result = ExecutionResult(result.outcome, result.error, _shortened(result.output))
-        with _timer_held():
-            conn.send_bytes(pickle.dumps(("done", result)))
-        code = 0
-    finally:
-        os._exit(code)  # no atexit handlers or finalizers of the caller's objects in this copy
-
-
-def _close_inherited_files(keep: int) -> None:
-    """Closes every descriptor but stdio and the pipe: the caller's pipes (to its runner, to ffmpeg, to an LLM)
-    must see their peer go when the caller does, not when this process ends."""
-    os.closerange(3, keep)
-    os.closerange(keep + 1, 1 << 16)
-
-
-def _shortened(output: str) -> str:
-    if len(output) <= MAX_REPORTED_OUTPUT:
-        return output
-    half = MAX_REPORTED_OUTPUT // 2
-    return f"{output[:half]}\n[... {len(output) - 2 * half} characters left out ...]\n{output[-half:]}"
-
-
-@contextlib.contextmanager
-def _timer_held():
-    """Holds the timer signal back (it is delivered when released), so it cannot cut a message in half."""
-    signal.pthread_sigmask(signal.SIG_BLOCK, {signal.SIGALRM})
-    try:
-        yield
-    finally:
-        signal.pthread_sigmask(signal.SIG_UNBLOCK, {signal.SIGALRM})
-
-
-def _stand_in(name: str, conn: Connection) -> Callable:
-    def call(*args, **kwargs):
+    confine = not confinement.unconfined_by_choice()
+    if confine:
+        confinement.require()
+    init = {
+        "program": program,
+        "limits": dataclasses.asdict(limits),
+        "tools": list(forwarded),
+        "data": _data(namespace, forwarded),
+        "confine": confine,
+        "probe": probe,
+    }  # fmt: skip
+    here, there = socket.socketpair()
+    with here, there:
+        process = _start(there)
+        there.close()
+        side = _ToolSide(process, namespace, limits, forwarded, here.fileno(), announce)
         try:
-            message = pickle.dumps(("call", name, args, kwargs))
-        except Exception as exc:  # lambdas, generators, modules...
-            raise ToolArgumentError(
-                f"{name}() can only be given data (numbers, strings, lists, arrays, poses): {exc}"
-            ) from None
-        if len(message) > MAX_MESSAGE:
-            raise ToolArgumentError(f"{name}() was given {len(message)} bytes of arguments; at most {MAX_MESSAGE}")
-        with _timer_held():
-            conn.send_bytes(message)
-            kind, payload = pickle.loads(conn.recv_bytes())
-        if kind == "return":
-            return payload
-        if kind == "timeout":
-            raise ProgramTimeout
-        raise _rebuilt(*payload)
-
-    call.__name__ = call.__qualname__ = name
-    return call
+            channel.send(here.fileno(), init)
+            return side.serve()
+        except BrokenPipeError:
+            return side.died(None)
+        finally:
+            side.end()
 
 
-def _rebuilt(cls: type, args: tuple, state: dict, message: str) -> BaseException:
-    """The tool's exception, of its class (so ``except`` clauses and the outcome categories see it), with its
-    arguments and attributes where they could be carried; its message in any case."""
+def _data(namespace: dict, forwarded: Collection[str]) -> object:
+    data = {k: v for k, v in namespace.items() if k not in forwarded and k not in JAIL_NAMES}
     try:
-        exc = cls(*args)
-    except Exception:
-        exc = cls.__new__(cls)
-        exc.args = args
-    with contextlib.suppress(Exception):
-        exc.__dict__.update(state)
+        return wire.to_tree(data, protocol.MAX_INIT)
+    except wire.WireError as exc:
+        raise ValueError(f"a program's namespace holds tools (forwarded) and data only: {exc}") from None
+
+
+def _start(there: socket.socket) -> subprocess.Popen:
+    environment = dict(JAIL_ENVIRONMENT)
+    if confinement.unconfined_by_choice():
+        environment[confinement.UNCONFINED_VARIABLE] = "1"
+    command = [sys.executable, "-I", "-m", "roboscript.codegen.jail", str(there.fileno()), str(os.getpid())]
     try:
-        if str(exc) == message:
-            return exc
-    except Exception:
-        pass
-    return _relayed(cls, message)
+        return subprocess.Popen(
+            command,
+            pass_fds=(there.fileno(),),
+            env=environment,
+            cwd="/",
+            stdin=subprocess.DEVNULL,
+            stdout=subprocess.DEVNULL,
+            stderr=subprocess.DEVNULL,
+        )
+    except OSError as exc:
+        raise SandboxSetupError(f"cannot start a program's process: {exc}") from exc
 
 
-def _relayed(cls: type, message: str) -> BaseException:
-    """An exception of ``cls`` whose message is ``message``, whatever ``cls`` does with its arguments."""
-    relayed = type(cls.__name__, (cls,), {"__str__": lambda self: message, "__module__": cls.__module__})
-    exc = relayed.__new__(relayed)
-    exc.args = (message,)
-    return exc
+class _ToolSide:
+    """Serves the program's tool calls until it reports, dies, breaks the protocol or runs out of time."""
 
+    def __init__(self, process, namespace, limits, forwarded, fd, announce):
+        self.process, self.namespace, self.limits, self.fd = process, namespace, limits, fd
+        self.forwarded = frozenset(forwarded)
+        self.announce = announce or (lambda deadline: None)
+        self.started: float | None = None
+        self.ran_in = f"process {process.pid}"
 
-# --- the tools' side -------------------------------------------------------------------------------------------
+    @property
+    def deadline(self) -> float:
+        """When the program's time is up (its limit from when it started)."""
+        return (self.started or time.monotonic()) + self.limits.timeout
+
+    def serve(self) -> ExecutionResult:
+        from roboscript.load import load_factor
+
+        startup = time.monotonic() + STARTUP_LIMIT * load_factor()
+        while True:
+            cutoff = self.deadline + EXIT_GRACE if self.started is not None else startup
+            try:
+                message = channel.receive(self.fd, protocol.MAX_ARGUMENTS + 4096, deadline=cutoff)
+            except channel.ChannelTimeout:
+                return self._kill_for_time() if self.started is not None else self._setup_failed("no answer")
+            except (channel.ChannelClosed, ConnectionError):
+                return self.died(None)
+            except channel.ChannelError as exc:
+                return self._violation(f"it broke the tool protocol: {exc}")
+            if self.started is None:
+                if message.get("ready") is True:
+                    self.started = time.monotonic()
+                    self.announce(self.deadline + EXIT_GRACE)
+                    continue
+                if "failed" in message:
+                    return self._setup_failed(str(message["failed"])[:4000])
+            if "done" in message:
+                return self._finish(message["done"])
+            if "call" in message and self.started is not None:
+                reply = self._call(message)
+                if reply is None:
+                    return self._violation("it broke the tool protocol: a call that its own side could not have made")
+                try:
+                    channel.send_raw(self.fd, reply)
+                except OSError:
+                    return self.died(None)
+                continue
+            return self._violation(f"it broke the tool protocol: an unexpected message ({sorted(message)[:5]})")
+
+    def _call(self, message: dict) -> bytes | None:
+        name = message.get("call")
+        if name not in self.forwarded or set(message) != {"call", "args", "kwargs"}:
+            return None
+        try:
+            args = wire.from_tree(message["args"])
+            kwargs = {key: wire.from_tree(tree) for key, tree in message["kwargs"].items()}
+        except (wire.WireError, AttributeError):
+            return None
+        except (ValueError, TypeError) as exc:  # well-formed, yet no valid value (a pose made of NaNs): the tool's say
+            return channel.json_bytes({"raise": protocol.exception_spec(exc, MAX_TOOL_ERROR)})
+        if not isinstance(args, list) or not all(isinstance(key, str) and key.isidentifier() for key in kwargs):
+            return None
+        left = self.deadline - time.monotonic()
+        if left <= 0:
+            return channel.json_bytes({"timeout": True})
+        try:
+            with _time_limit(left):
+                value = self.namespace[name](*args, **kwargs)
+        except _ToolTimeout:
+            return channel.json_bytes({"timeout": True})
+        except Exception as exc:
+            return channel.json_bytes({"raise": protocol.exception_spec(exc, MAX_TOOL_ERROR)})
+        try:
+            return channel.json_bytes({"return": wire.to_tree(value, protocol.MAX_REPLY)})
+        except wire.WireError as exc:
+            error = RuntimeError(f"{name}() returned what cannot be sent to the program: {exc}")
+            return channel.json_bytes({"raise": protocol.exception_spec(error, MAX_TOOL_ERROR)})
+
+    def _finish(self, done: object) -> ExecutionResult:
+        if not isinstance(done, dict):
+            return self._violation("it broke the tool protocol: a report that is not one")
+        try:
+            outcome = Outcome(done.get("outcome"))
+        except ValueError:
+            outcome = None
+        error, output = done.get("error"), done.get("output", "")
+        if outcome not in REPORTABLE or not (error is None or isinstance(error, str)) or not isinstance(output, str):
+            return self._violation("it broke the tool protocol: a report that is not one")
+        output = shortened(output, MAX_REPORTED_OUTPUT)
+        error = None if error is None else shortened(error, MAX_ERROR)
+        if self.started is not None and time.monotonic() > self.deadline:
+            outcome, error = Outcome.TIMEOUT, self._timeout_error("")
+        elif outcome is Outcome.TIMEOUT:
+            error = self._timeout_error("")
+        return self._result(outcome, error, output)
+
+    def _kill_for_time(self) -> ExecutionResult:
+        self._kill()
+        return self._result(Outcome.TIMEOUT, self._timeout_error(" (its process killed)"), "")
+
+    def _timeout_error(self, how: str) -> str:
+        return f"TimeoutError: the program ran longer than its {self.limits.describe()}{how}"
+
+    def died(self, cause: BaseException | None) -> ExecutionResult:
+        """The result when the program's process ended without a report."""
+        status = self._wait(1.0)
+        if status is not None and status < 0 and -status == signal.SIGSYS:
+            return self._violation("it made a system call the sandbox forbids (files, processes, network, signals)")
+        if status is not None and status < 0 and -status == signal.SIGXCPU:
+            error = self._timeout_error(" and its CPU-time margin (its process killed)")
+            return self._result(Outcome.TIMEOUT, error, "")
+        if self.started is not None and time.monotonic() > self.deadline:
+            return self._result(Outcome.TIMEOUT, self._timeout_error(" (its process died)"), "")
+        how = f"killed by signal {-status}" if status is not None and status < 0 else f"exit status {status}"
+        return self._result(Outcome.RUNTIME_ERROR, f"the program's process died ({how}) without a report", "")
+
+    def _violation(self, what: str) -> ExecutionResult:
+        self._kill()
+        error = f"SandboxViolation: the program's process was stopped: {what}"
+        return self._result(Outcome.SANDBOX_VIOLATION, error, "")
+
+    def _setup_failed(self, why: str) -> ExecutionResult:
+        self._kill()
+        raise SandboxSetupError(f"the program's process could not be set up: {why}")
+
+    def _result(self, outcome: Outcome, error: str | None, output: str) -> ExecutionResult:
+        return ExecutionResult(outcome, error, output, ran_in=self.ran_in)
+
+    def _kill(self) -> None:
+        with contextlib.suppress(ProcessLookupError):
+            self.process.kill()
+
+    def _wait(self, seconds: float) -> int | None:
+        try:
+            return self.process.wait(seconds)
+        except subprocess.TimeoutExpired:
+            self._kill()
+            return self.process.wait()
+
+    def end(self) -> None:
+        """Makes sure the program's process is gone, and tells the watchdog that the run is over."""
+        if self.process.poll() is None:
+            self._wait(1.0)
+        self.announce(None)
 
 
 class _ToolTimeout(BaseException):
     """The program's time ran out while a tool was running for it."""
-
-
-class _ToolSide:
-    """Serves the program's tool calls until it reports, dies, or runs out of time."""
-
-    def __init__(self, pid: int, namespace: dict, limits: Limits, conn: Connection):
-        self.pid, self.namespace, self.limits, self.conn = pid, namespace, limits, conn
-        self.started = time.monotonic()
-        self.deadline = self.started + limits.timeout + EXIT_GRACE
-
-    def serve(self) -> ExecutionResult:
-        while True:
-            try:
-                ready = self.conn.poll(max(self.deadline - time.monotonic(), 0.0))
-                message = pickle.loads(self.conn.recv_bytes(MAX_MESSAGE)) if ready else None
-            except (EOFError, OSError, pickle.UnpicklingError, MemoryError, ValueError) as exc:
-                return self._died(exc)
-            if message is None:
-                return self._kill()
-            if message[0] == "done":
-                return message[1]
-            _, name, args, kwargs = message
-            reply = self._call(name, args, kwargs)
-            try:
-                data = pickle.dumps(reply)
-            except Exception as exc:
-                data = pickle.dumps(("raise", _portable(RuntimeError(f"{name}() returned what cannot be sent: {exc}"))))
-            try:
-                self.conn.send_bytes(data)
-            except OSError as exc:
-                return self._died(exc)
-
-    def _call(self, name: str, args: tuple, kwargs: dict) -> tuple:
-        left = self.started + self.limits.timeout - time.monotonic()
-        if left <= 0:
-            return ("timeout", None)
-        try:
-            with _time_limit(left):
-                return ("return", self.namespace[name](*args, **kwargs))
-        except _ToolTimeout:
-            return ("timeout", None)
-        except Exception as exc:
-            return ("raise", _portable(exc))
-
-    def _kill(self) -> ExecutionResult:
-        with contextlib.suppress(ProcessLookupError):
-            os.kill(self.pid, signal.SIGKILL)
-        error = f"TimeoutError: the program ran longer than its {self.limits.describe()} (its process killed)"
-        return ExecutionResult(Outcome.TIMEOUT, error, "")
-
-    def _died(self, cause: BaseException) -> ExecutionResult:
-        status = _reap(self.pid)
-        if status is not None and os.WIFSIGNALED(status) and os.WTERMSIG(status) == signal.SIGXCPU:
-            error = (
-                f"TimeoutError: the program ran past its CPU-time limit ({self.limits.timeout:g} s and a margin; "
-                "its process killed)"
-            )
-            return ExecutionResult(Outcome.TIMEOUT, error, "")
-        if status is not None and os.WIFSIGNALED(status):
-            how = f"killed by signal {os.WTERMSIG(status)}"
-        else:
-            how = f"without a report: {type(cause).__name__}: {cause}"
-        return ExecutionResult(Outcome.RUNTIME_ERROR, f"the program's process died ({how})", "")
 
 
 @contextlib.contextmanager
@@ -242,39 +295,3 @@ def _time_limit(seconds: float):
     finally:
         signal.setitimer(signal.ITIMER_REAL, 0)
         signal.signal(signal.SIGALRM, previous)
-
-
-def _portable(exc: BaseException) -> tuple[type, tuple, dict, str]:
-    """The exception as it can travel: class, arguments, attributes (those that pickle) and message."""
-    message = str(exc)
-    try:
-        pickle.loads(pickle.dumps((type(exc), exc.args)))
-        cls, args = type(exc), exc.args
-    except Exception:
-        cls, args = RuntimeError, (f"{type(exc).__name__}: {message}",)
-        message = args[0]
-    state = {}
-    for key, value in getattr(exc, "__dict__", {}).items():
-        with contextlib.suppress(Exception):
-            state[key] = pickle.loads(pickle.dumps(value))
-    return cls, args, state, message
-
-
-def _reap(pid: int) -> int | None:
-    """The process's wait status once it has ended (killed if it lingers past a second), None if already reaped."""
-    deadline = time.monotonic() + 1.0
-    while True:
-        try:
-            done, status = os.waitpid(pid, os.WNOHANG)
-        except ChildProcessError:
-            return None
-        if done:
-            return status
-        if time.monotonic() > deadline:
-            with contextlib.suppress(ProcessLookupError):
-                os.kill(pid, signal.SIGKILL)
-            try:
-                return os.waitpid(pid, 0)[1]
-            except ChildProcessError:
-                return None
-        time.sleep(0.01)

@@ -16,10 +16,10 @@ import traceback
 import types
 from dataclasses import dataclass, replace
 
-import numpy as np
-
+from roboscript.codegen.format_check import FORMAT_HELPER, checked_format, rewrite_format_calls
 from roboscript.codegen.guard import find_violations
 from roboscript.codegen.outcomes import Outcome
+from roboscript.codegen.program_numpy import program_numpy
 
 PROGRAM_FILENAME = "<program>"
 MAX_RECURSION = 200  # frames a program may stack on top of where it starts
@@ -32,43 +32,19 @@ _SAFE_BUILTIN_NAMES = (
     "StopIteration", "TypeError", "ValueError", "ZeroDivisionError", "NotImplementedError",
 )  # fmt: skip
 
-# numpy as programs see it: maths and arrays, not files, pointers or the module's internals.
-_NUMPY_NAMES = (
-    "array", "asarray", "zeros", "ones", "full", "eye", "arange", "linspace", "empty", "zeros_like", "ones_like",
-    "concatenate", "stack", "vstack", "hstack", "column_stack", "reshape", "transpose", "flip", "roll", "tile",
-    "repeat", "where", "argmin", "argmax", "argsort", "sort", "unique", "clip", "abs", "absolute", "sign", "sqrt",
-    "square", "exp", "log", "log2", "log10", "sin", "cos", "tan", "arcsin", "arccos", "arctan", "arctan2", "hypot",
-    "degrees", "radians", "deg2rad", "rad2deg", "pi", "e", "inf", "nan", "isnan", "isfinite", "isclose",
-    "allclose", "dot", "cross", "outer", "inner", "matmul", "sum", "prod", "mean", "median", "std", "var", "min",
-    "max", "minimum", "maximum", "amin", "amax", "floor", "ceil", "round", "around", "rint", "mod", "cumsum",
-    "diff", "all", "any", "logical_and", "logical_or", "logical_not", "count_nonzero", "nonzero", "ndarray",
-    "float64", "float32", "int64", "int32", "bool_", "newaxis", "interp", "percentile", "trace", "diag",
-)  # fmt: skip
-
-
 PROGRAM_BUILTINS = frozenset((*_SAFE_BUILTIN_NAMES, "print"))  # every builtin name a program may call
 
 
-def _proxy(name: str, module: types.ModuleType, names) -> types.SimpleNamespace:
-    namespace = types.SimpleNamespace(**{n: getattr(module, n) for n in names if hasattr(module, n)})
-    namespace.__name__ = name
-    return namespace
-
-
 def safe_numpy() -> types.SimpleNamespace:
-    """The ``np`` a program gets: an allow-list of numpy, with ``linalg`` and ``random`` trimmed the same way."""
-    proxy = _proxy("np", np, _NUMPY_NAMES)
-    proxy.linalg = _proxy("np.linalg", np.linalg, ("norm", "inv", "pinv", "det", "solve", "eig", "svd", "lstsq"))
-    proxy.random = _proxy(
-        "np.random", np.random, ("default_rng", "uniform", "normal", "rand", "randn", "randint", "choice", "seed")
-    )
-    return proxy
+    """The ``np`` a program gets (:mod:`roboscript.codegen.program_numpy`)."""
+    return program_numpy()
 
 
 def safe_builtins(output: io.StringIO) -> dict:
     """The builtins a program gets; ``print`` writes into ``output``."""
     allowed = {name: getattr(builtins, name) for name in _SAFE_BUILTIN_NAMES}
     allowed["print"] = lambda *args, sep=" ", end="\n", **_: output.write(sep.join(map(str, args)) + end)
+    allowed[FORMAT_HELPER] = checked_format
     return allowed
 
 
@@ -105,96 +81,183 @@ class ExecutionResult:
     outcome: Outcome  # OK, or why the program stopped (the task's checks are judged elsewhere)
     error: str | None
     output: str
+    ran_in: str = ""  # the process the program ran in, where not the caller's
 
 
 def describe_exception(exc: BaseException) -> str:
-    """``Type: message (program line N)``, the line being the deepest one in the program itself."""
+    """``Type: message (program line N)``, the line being the deepest one in the program itself. Reads no source
+    files (a confined process cannot open them)."""
     line = None
-    for frame in traceback.extract_tb(exc.__traceback__):
-        if frame.filename == PROGRAM_FILENAME:
-            line = frame.lineno
+    for frame, lineno in traceback.walk_tb(exc.__traceback__):
+        if frame.f_code.co_filename == PROGRAM_FILENAME:
+            line = lineno
     if isinstance(exc, SyntaxError) and exc.filename == PROGRAM_FILENAME:
         line = exc.lineno
         message = f"SyntaxError: {exc.msg}"
     else:
-        message = f"{type(exc).__name__}: {exc}"
-    return message + (f" (program line {line})" if line else "")
+        message = f"{type(exc).__name__}: {_message(exc)}"
+    return shortened(message, MAX_ERROR) + (f" (program line {line})" if line else "")
+
+
+MAX_ERROR = 4000  # characters of an error message kept (its start and its end)
+
+
+def shortened(text: str, limit: int) -> str:
+    """``text``, or its start and end with how much was left out between them when it is longer than ``limit``."""
+    if len(text) <= limit:
+        return text
+    half = limit // 2
+    return f"{text[:half]}\n[... {len(text) - 2 * half} characters left out ...]\n{text[-half:]}"
+
+
+def _message(exc: BaseException) -> str:
+    try:
+        return str(exc)
+    except Exception:  # a message that cannot be made is no reason to lose the error
+        return "(its message could not be shown)"
 
 
 def classify_exception(exc: BaseException) -> Outcome:
     """Failures (the robot could not do what was asked: :class:`~roboscript.errors.FailureError`) apart from
-    other runtime errors."""
+    other runtime errors. A tool's error relayed into a program's process says so itself (``robot_failure``)."""
     from roboscript.errors import FailureError
 
-    return Outcome.PLANNING_FAILURE if isinstance(exc, FailureError) else Outcome.RUNTIME_ERROR
+    failure = isinstance(exc, FailureError) or getattr(type(exc), "robot_failure", False) is True
+    return Outcome.PLANNING_FAILURE if failure else Outcome.RUNTIME_ERROR
 
 
-def execute(program: str, namespace: dict, limits: Limits = Limits()) -> ExecutionResult:
-    """Checks ``program`` with the guard, then runs it in a copy of ``namespace`` within ``limits``."""
-    output = io.StringIO()
+def parse_program(program: str) -> ast.Module:
+    """The program's syntax tree; a :class:`SyntaxError` for anything that cannot be parsed, however it fails (null
+    bytes, nesting deeper than the parser's stack, a recursion limit)."""
     try:
-        tree = ast.parse(program, PROGRAM_FILENAME)
+        return ast.parse(program, PROGRAM_FILENAME)
+    except SyntaxError:
+        raise
+    except (ValueError, RecursionError, MemoryError) as exc:
+        error = SyntaxError(f"the program cannot be parsed: {type(exc).__name__}: {str(exc)[:200] or 'too deep'}")
+        error.filename, error.lineno = PROGRAM_FILENAME, 1
+        raise error from None
+
+
+def prepare(program: str) -> types.CodeType | ExecutionResult:
+    """The program compiled, its format calls checked at run time; or why it may not run."""
+    try:
+        tree = parse_program(program)
     except SyntaxError as exc:
         return ExecutionResult(Outcome.SYNTAX, describe_exception(exc), "")
     violations = find_violations(tree)
     if violations:
         return ExecutionResult(Outcome.FORBIDDEN_CONSTRUCT, "; ".join(map(str, violations[:5])), "")
-    code = compile(tree, PROGRAM_FILENAME, "exec")
-    scope = {**namespace, "np": safe_numpy(), "__builtins__": safe_builtins(output)}
-    with _limited(limits):
-        try:
-            exec(code, scope)
-            outcome, error = Outcome.OK, None
-        except ProgramTimeout:
-            outcome = Outcome.TIMEOUT
-            error = f"TimeoutError: the program ran longer than its {limits.describe()}"
-        except MemoryError:
-            outcome, error = Outcome.RUNTIME_ERROR, "MemoryError: the program used more memory than it may"
-        except RecursionError as exc:
-            outcome, error = Outcome.RUNTIME_ERROR, describe_exception(exc)
-        except Exception as exc:
-            outcome, error = classify_exception(exc), describe_exception(exc)
+    try:
+        return compile(rewrite_format_calls(tree), PROGRAM_FILENAME, "exec")
+    except (SyntaxError, ValueError, RecursionError, MemoryError) as exc:
+        return ExecutionResult(Outcome.SYNTAX, f"SyntaxError: the program cannot be compiled: {type(exc).__name__}", "")
+
+
+def program_scope(namespace: dict, output: io.StringIO) -> dict:
+    """The globals a program runs in: ``namespace``, the program's ``np`` and the restricted builtins."""
+    return {**namespace, "np": safe_numpy(), "__builtins__": safe_builtins(output)}
+
+
+def execute(program: str, namespace: dict, limits: Limits = Limits()) -> ExecutionResult:
+    """Checks ``program`` with the guard, then runs it in a copy of ``namespace`` within ``limits``, in this
+    process (whose limits are restored afterwards)."""
+    code = prepare(program)
+    if isinstance(code, ExecutionResult):
+        return code
+    output = io.StringIO()
+    scope = program_scope(namespace, output)
+    saved = impose_limits(limits)
+    try:
+        with program_timer(limits):
+            outcome, error = run_code(code, scope, limits)
+    finally:
+        restore_limits(saved)
     return ExecutionResult(outcome, error, output.getvalue())
 
 
+def run_code(code: types.CodeType, scope: dict, limits: Limits) -> tuple[Outcome, str | None]:
+    """Runs compiled program code (under :func:`program_timer`); its outcome and error."""
+    try:
+        exec(code, scope)
+        outcome, error = Outcome.OK, None
+    except ProgramTimeout:
+        outcome, error = Outcome.TIMEOUT, None
+    except MemoryError:
+        outcome, error = Outcome.RUNTIME_ERROR, "MemoryError: the program used more memory than it may"
+    except RecursionError as exc:
+        outcome, error = Outcome.RUNTIME_ERROR, describe_exception(exc)
+    except Exception as exc:
+        outcome, error = classify_exception(exc), describe_exception(exc)
+    if _timer.expired:  # ran past its limit, whatever it caught on the way (a finally that went on, a loop)
+        outcome = Outcome.TIMEOUT
+    if outcome is Outcome.TIMEOUT:
+        error = f"TimeoutError: the program ran longer than its {limits.describe()}"
+    return outcome, error
+
+
+class _Timer:
+    expired = False
+
+
+_timer = _Timer()
+
+
 def _on_alarm(signum, frame):
+    _timer.expired = True
     raise ProgramTimeout
 
 
-class _limited:
-    """Time, memory and recursion limits around a program run, restored afterwards.
-
-    The timer signal stops Python code; a single C-level operation that never returns (``10 ** 10 ** 10``) is
-    stopped by the CPU-time limit, which kills the process: the runner reports that as a crashed trial.
-    """
+class program_timer:
+    """The program's wall-time limit: ``ProgramTimeout`` at the limit, and again each second after it in case a
+    handler swallowed the first one. Leaves the timer off and the previous handler back."""
 
     def __init__(self, limits: Limits):
         self.limits = limits
 
     def __enter__(self):
-        self._alarm = signal.signal(signal.SIGALRM, _on_alarm)
-        # Repeats each second after the limit, in case a handler swallowed the first one.
+        _timer.expired = False
+        self._previous = signal.signal(signal.SIGALRM, _on_alarm)
         signal.setitimer(signal.ITIMER_REAL, self.limits.timeout, 1.0)
-        self._recursion = sys.getrecursionlimit()
-        sys.setrecursionlimit(len(traceback.extract_stack()) + MAX_RECURSION + 100)
-        self._as = resource.getrlimit(resource.RLIMIT_AS)
-        self._cpu = resource.getrlimit(resource.RLIMIT_CPU)
-        used = _address_space()
-        if used is not None:
-            resource.setrlimit(resource.RLIMIT_AS, (used + self.limits.memory, self._as[1]))
-        cpu_now = resource.getrusage(resource.RUSAGE_SELF).ru_utime + resource.getrusage(resource.RUSAGE_SELF).ru_stime
-        cpu_limit = int(cpu_now + self.limits.timeout + self.limits.cpu_margin) + 1
-        if self._cpu[1] == resource.RLIM_INFINITY or cpu_limit < self._cpu[1]:
-            resource.setrlimit(resource.RLIMIT_CPU, (cpu_limit, self._cpu[1]))
         return self
 
     def __exit__(self, *exc):
         signal.setitimer(signal.ITIMER_REAL, 0)
-        signal.signal(signal.SIGALRM, self._alarm)
-        sys.setrecursionlimit(self._recursion)
-        resource.setrlimit(resource.RLIMIT_AS, self._as)
-        resource.setrlimit(resource.RLIMIT_CPU, self._cpu)
+        signal.signal(signal.SIGALRM, self._previous)
         return False
+
+
+def impose_limits(limits: Limits) -> tuple:
+    """Memory (address space), CPU-time and recursion limits on this process; what they were, to restore.
+
+    The timer stops Python code; a single C-level operation that never returns (``10 ** 10 ** 10``) is stopped by
+    the CPU-time limit, which kills the process: the tools' side reports that as a time-out.
+    """
+    saved = (resource.getrlimit(resource.RLIMIT_AS), resource.getrlimit(resource.RLIMIT_CPU), sys.getrecursionlimit())
+    sys.setrecursionlimit(_stack_depth() + MAX_RECURSION + 100)
+    used = _address_space()
+    if used is not None:
+        resource.setrlimit(resource.RLIMIT_AS, (used + limits.memory, saved[0][1]))
+    usage = resource.getrusage(resource.RUSAGE_SELF)
+    cpu_limit = int(usage.ru_utime + usage.ru_stime + limits.timeout + limits.cpu_margin) + 1
+    if saved[1][1] == resource.RLIM_INFINITY or cpu_limit < saved[1][1]:
+        resource.setrlimit(resource.RLIMIT_CPU, (cpu_limit, saved[1][1]))
+    return saved
+
+
+def restore_limits(saved: tuple) -> None:
+    """Puts back what :func:`impose_limits` returned."""
+    address_space, cpu, recursion = saved
+    resource.setrlimit(resource.RLIMIT_AS, address_space)
+    resource.setrlimit(resource.RLIMIT_CPU, cpu)
+    sys.setrecursionlimit(recursion)
+
+
+def _stack_depth() -> int:
+    depth, frame = 0, sys._getframe()
+    while frame is not None:
+        depth, frame = depth + 1, frame.f_back
+    return depth
 
 
 def _address_space() -> int | None:

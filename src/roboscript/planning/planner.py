@@ -27,6 +27,7 @@ from roboscript.planning.errors import (
     UnknownPlannerError,
 )
 from roboscript.planning.path_checks import first_blocked
+from roboscript.planning.roadmap import roadmap_path
 from roboscript.planning.scene import PlanningScene
 
 _OMPL = None
@@ -83,6 +84,10 @@ _UNAVAILABLE["SORRTstar"] = "with ompl 2.0.1 its solve() ignores the time limit"
 _UNAVAILABLE["AORRTC"] = "with ompl 2.0.1 it reports zero-length paths when any solution is good enough"
 # Planners that keep improving until the time is up; they stop at the first exact solution here unless asked.
 _OPTIMIZING = {"RRTstar", "InformedRRTstar", "PRMstar", "BITstar", "FMT", "BFMT", "PRM"}
+# Planners whose OMPL solve() starts a second thread that runs the (Python) validity checker under the roadmap's
+# lock while the calling thread holds the GIL and waits for that lock: a deadlock. Their roadmaps are grown and
+# queried in the calling thread instead (roboscript.planning.roadmap).
+_ROADMAP_PLANNERS = {"PRM", "PRMstar"}
 
 
 def planner_names() -> list[str]:
@@ -300,19 +305,51 @@ class JointPlanner:
             for equivalent in equivalents:
                 goals.addState(self._state(space, equivalent))
             setup.setGoal(goals)
-        setup.setPlanner(getattr(og, _PLANNER_CLASSES[name])(info))
+        planner = getattr(og, _PLANNER_CLASSES[name])(info)
+        setup.setPlanner(planner)
         if name in _OPTIMIZING and not optimize:
             # Any path is good enough: the optimising planners then stop at their first solution.
             objective = ob.PathLengthOptimizationObjective(info)
             objective.setCostThreshold(ob.Cost(float("inf")))
             setup.setOptimizationObjective(objective)
-        setup.solve(timeout)
-        if not setup.haveExactSolutionPath():
-            raise PlannerTimeoutError(name, timeout)
-        path = setup.getSolutionPath()
+        if name in _ROADMAP_PLANNERS:
+            path = self._roadmap_solve(name, planner, setup, space, start, equivalents, timeout, optimize)
+        else:
+            setup.solve(timeout)
+            if not setup.haveExactSolutionPath():
+                raise PlannerTimeoutError(name, timeout)
+            path = setup.getSolutionPath()
         if simplify:
             simplify_path(og, info, path)
         return np.array([[path.getState(i)[j] for j in range(dof)] for i in range(path.getStateCount())])
+
+    def _roadmap_solve(
+        self,
+        name: str,
+        planner,
+        setup,
+        space,
+        start: np.ndarray,
+        goals: list[np.ndarray],
+        timeout: float,
+        optimize: bool,
+    ):
+        """PRM or PRM* without OMPL's solve() (see ``_ROADMAP_PLANNERS``): an OMPL path from ``start`` to the first
+        of ``goals`` reached on the planner's roadmap, grown in this thread."""
+        ob, og, _ = import_ompl()
+        setup.setup()  # hands the planner the problem and sets it up, as solve() would
+        # Asked to optimise (no objective of ours), OMPL's PRM gives its default objective an infinite cost threshold
+        # and stops at its first path all the same; PRM*'s threshold is 0, so it improves until the time is up.
+        improve = optimize and name == "PRMstar"
+        info = setup.getSpaceInformation()
+        star = name == "PRMstar"
+        waypoints = roadmap_path(ob, planner, space, info, start, goals, timeout, star=star, improve=improve)
+        if waypoints is None:
+            raise PlannerTimeoutError(name, timeout)
+        path = og.PathGeometric(info)
+        for q in waypoints:
+            path.append(self._state(space, q))
+        return path
 
     @staticmethod
     def _state(space, q: np.ndarray):

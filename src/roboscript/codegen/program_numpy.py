@@ -1,0 +1,131 @@
+"""The ``np`` a program gets: maths on arrays of numbers, without files, pointers or raw memory.
+
+An allow-list of numpy's functions, with ``linalg`` and ``random`` trimmed the same way. None of them hands a
+program an array of Python objects or of raw records: a ``dtype`` argument naming ``object``, a structured or a
+void type is refused before the call, and a result holding one is refused after it (``np.array([1, None])``).
+``np.ndarray`` answers ``isinstance`` but cannot be called (its ``buffer=`` argument reads any memory). The guard
+forbids what is left: reinterpreting an array's memory (``.view``, assigning ``.dtype``, ``.getfield``), its bytes
+(``.tobytes``, ``.data``) and its pointers (``.ctypes``).
+"""
+
+from __future__ import annotations
+
+import functools
+import types
+from collections.abc import Callable
+
+import numpy as np
+
+from roboscript.errors import UsageError
+
+NUMPY_NAMES = (
+    "array", "asarray", "zeros", "ones", "full", "eye", "arange", "linspace", "empty", "zeros_like", "ones_like",
+    "concatenate", "stack", "vstack", "hstack", "column_stack", "reshape", "transpose", "flip", "roll", "tile",
+    "repeat", "where", "argmin", "argmax", "argsort", "sort", "unique", "clip", "abs", "absolute", "sign", "sqrt",
+    "square", "exp", "log", "log2", "log10", "sin", "cos", "tan", "arcsin", "arccos", "arctan", "arctan2", "hypot",
+    "degrees", "radians", "deg2rad", "rad2deg", "pi", "e", "inf", "nan", "isnan", "isfinite", "isclose",
+    "allclose", "dot", "cross", "outer", "inner", "matmul", "sum", "prod", "mean", "median", "std", "var", "min",
+    "max", "minimum", "maximum", "amin", "amax", "floor", "ceil", "round", "around", "rint", "mod", "cumsum",
+    "diff", "all", "any", "logical_and", "logical_or", "logical_not", "count_nonzero", "nonzero",
+    "float64", "float32", "int64", "int32", "bool_", "newaxis", "interp", "percentile", "trace", "diag",
+)  # fmt: skip
+LINALG_NAMES = ("norm", "inv", "pinv", "det", "solve", "eig", "svd", "lstsq")
+RANDOM_NAMES = ("default_rng", "uniform", "normal", "rand", "randn", "randint", "choice", "seed")
+SCALAR_TYPES = frozenset(("float64", "float32", "int64", "int32", "bool_"))
+
+
+class ObjectArrayError(UsageError, TypeError):
+    """A program asked numpy for an array of objects or raw records."""
+
+
+def program_numpy() -> types.SimpleNamespace:
+    """A fresh ``np`` namespace for one program."""
+    proxy = _namespace("np", np, NUMPY_NAMES)
+    proxy.ndarray = _ndarray_type()
+    proxy.linalg = _namespace("np.linalg", np.linalg, LINALG_NAMES)
+    proxy.random = _namespace("np.random", np.random, RANDOM_NAMES)
+    return proxy
+
+
+def numpy_names() -> frozenset[str]:
+    """Every attribute of the program's ``np`` (for the static checker)."""
+    return frozenset((*NUMPY_NAMES, "ndarray", "linalg", "random"))
+
+
+def _namespace(name: str, module: types.ModuleType, names: tuple[str, ...]) -> types.SimpleNamespace:
+    members = {}
+    for member in names:
+        if not hasattr(module, member):
+            continue
+        value = getattr(module, member)
+        members[member] = value if member in SCALAR_TYPES or not callable(value) else _checked(value, member)
+    namespace = types.SimpleNamespace(**members)
+    namespace.__name__ = name
+    return namespace
+
+
+def _checked(function: Callable, name: str) -> Callable:
+    """``function`` refusing object and record dtypes in its arguments and its result."""
+
+    @functools.wraps(function)
+    def call(*args, **kwargs):
+        for value in (*args, *kwargs.values()):
+            if _names_a_forbidden_dtype(value):
+                raise ObjectArrayError(f"np.{name}(): arrays of objects or records are not available; use numbers")
+        result = function(*args, **kwargs)
+        _refuse_objects(result, name)
+        return result
+
+    if isinstance(function, np.ufunc):  # np.maximum.reduce and the like: the ufunc's own methods
+        for method in ("reduce", "accumulate", "outer", "reduceat"):
+            setattr(call, method, _checked(getattr(function, method), f"{name}.{method}"))
+    return call
+
+
+def _names_a_forbidden_dtype(value: object) -> bool:
+    if value is object:
+        return True
+    if isinstance(value, np.dtype):
+        return _forbidden(value)
+    if isinstance(value, type) and issubclass(value, np.generic):
+        return _forbidden(np.dtype(value))
+    if isinstance(value, str) and len(value) < 16:  # 'O', 'object', 'V8', ...
+        try:
+            return _forbidden(np.dtype(value))
+        except TypeError:
+            return False
+    if isinstance(value, list) and value and all(isinstance(v, tuple) for v in value):  # [('a', 'O')]
+        try:
+            return _forbidden(np.dtype(value))
+        except (TypeError, ValueError):
+            return False
+    return False
+
+
+def _forbidden(dtype: np.dtype) -> bool:
+    return dtype.hasobject or dtype.kind == "V" or dtype.fields is not None
+
+
+def _refuse_objects(result: object, name: str) -> None:
+    parts = result if isinstance(result, tuple) else (result,)
+    for part in parts:
+        if isinstance(part, np.ndarray | np.generic) and _forbidden(part.dtype):
+            raise ObjectArrayError(
+                f"np.{name}() would make an array of Python objects (a list that mixes numbers with None, "
+                "strings or other things?); arrays must hold numbers"
+            )
+
+
+class _ArrayType(type):
+    def __instancecheck__(cls, instance: object) -> bool:
+        return isinstance(instance, np.ndarray)
+
+    def __subclasscheck__(cls, subclass: type) -> bool:
+        return isinstance(subclass, type) and issubclass(subclass, np.ndarray)
+
+
+def _ndarray_type() -> type:
+    def refuse(cls, *args, **kwargs):
+        raise TypeError("np.ndarray(...) cannot be called in a program; make arrays with np.array, np.zeros, ...")
+
+    return _ArrayType("ndarray", (), {"__new__": refuse, "__doc__": "isinstance(x, np.ndarray) only."})

@@ -1,0 +1,15 @@
+# class: swallowed_timeout
+# expect: contained
+# attack: an except clause naming something undefined turns the time-out into a NameError, which an outer except Exception catches; repeated three times, then a normal end
+caught = 0
+while caught < 3:
+    try:
+        try:
+            while True:
+                pass
+        except (ValueError, BaseException):
+            pass
+    except Exception as exc:
+        caught += 1
+        print("caught", str(exc)[:40])
+print("done, everything fine")
