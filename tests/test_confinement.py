@@ -218,3 +218,15 @@ def test_a_programs_exception_carrying_the_tools_objects_cannot_send_them():
 
 def _raise():
     raise ValueError("no")
+
+
+def test_tool_calls_work_where_sockets_default_to_a_timeout():
+    import socket
+
+    before = socket.getdefaulttimeout()
+    socket.setdefaulttimeout(5.0)  # what ROS's client sets in the trial's process; new sockets then do not block
+    try:
+        result = _with_tools("for i in range(50):\n    x = take(list(range(20000)))\nprint(len(x))", take=lambda v: v)
+    finally:
+        socket.setdefaulttimeout(before)
+    assert result.outcome is Outcome.OK and result.output == "20000\n", result

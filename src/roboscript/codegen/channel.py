@@ -1,7 +1,7 @@
 """Framed messages over one socket between a program's process and the tools: a length, then JSON.
 
-Both ends read with a bound on a frame's size; the tools' end also with a deadline, so that a silent or
-misbehaving program's process cannot hold it. Only ``read`` and ``write`` touch the socket, the two system calls a
+Both ends read with a bound on a frame's size; the tools' end, whose descriptor does not block, also reads and
+writes with a deadline, so that a silent or misbehaving program's process cannot hold it. The program's end blocks. Only ``read`` and ``write`` touch the socket, the two system calls a
 confined process keeps (:mod:`roboscript.codegen.confinement`).
 """
 
@@ -40,11 +40,19 @@ def json_bytes(message: dict) -> bytes:
     return json.dumps(message, separators=(",", ":"), allow_nan=True).encode()
 
 
-def send_raw(fd: int, data: bytes) -> None:
-    """Writes ``data`` (JSON already) as one frame."""
+def send_raw(fd: int, data: bytes, deadline: float | None = None) -> None:
+    """Writes ``data`` (JSON already) as one frame; on a non-blocking descriptor, waiting until ``deadline`` at
+    most for the other end to take it (:class:`ChannelTimeout`)."""
     view = memoryview(HEADER.pack(len(data)) + data)
     while view:
-        view = view[os.write(fd, view) :]
+        if deadline is not None:
+            left = max(deadline - time.monotonic(), 0.0)
+            if not select.select([], [fd], [], left)[1]:
+                raise ChannelTimeout(f"the other end took {len(data) + HEADER.size - len(view)} of {len(data)} bytes")
+        try:
+            view = view[os.write(fd, view) :]
+        except BlockingIOError:
+            continue
 
 
 def receive(fd: int, limit: int, deadline: float | None = None) -> dict:
@@ -74,7 +82,10 @@ def _read_exactly(fd: int, size: int, deadline: float | None) -> bytes:
             left = max(deadline - time.monotonic(), 0.0)
             if not select.select([fd], [], [], left)[0]:
                 raise ChannelTimeout(f"no message within the deadline ({got} of {size} bytes arrived)")
-        chunk = os.read(fd, min(size - got, 1 << 20))
+        try:
+            chunk = os.read(fd, min(size - got, 1 << 20))
+        except BlockingIOError:  # a non-blocking descriptor that select called ready too early
+            continue
         if not chunk:
             raise ChannelClosed(f"the other end closed the channel ({got} of {size} bytes arrived)")
         chunks.append(chunk)

@@ -89,13 +89,16 @@ def run_program(
     }  # fmt: skip
     here, there = socket.socketpair()
     with here, there:
+        # Each end's blocking mode set here: a default socket timeout (set by ROS, say) makes new sockets non-blocking.
+        os.set_blocking(there.fileno(), True)
+        os.set_blocking(here.fileno(), False)
         process = _start(there)
         there.close()
         side = _ToolSide(process, namespace, limits, forwarded, here.fileno(), announce)
         try:
-            channel.send(here.fileno(), init)
+            channel.send_raw(here.fileno(), channel.json_bytes(init), deadline=time.monotonic() + STARTUP_LIMIT)
             return side.serve()
-        except BrokenPipeError:
+        except (BrokenPipeError, channel.ChannelTimeout):
             return side.died(None)
         finally:
             side.end()
@@ -171,7 +174,9 @@ class _ToolSide:
                 if reply is None:
                     return self._violation("it broke the tool protocol: a call that its own side could not have made")
                 try:
-                    channel.send_raw(self.fd, reply)
+                    channel.send_raw(self.fd, reply, deadline=self.deadline + EXIT_GRACE)
+                except channel.ChannelTimeout:
+                    return self._kill_for_time()
                 except OSError:
                     return self.died(None)
                 continue
