@@ -1,8 +1,9 @@
 """Framed messages over one socket between a program's process and the tools: a length, then JSON.
 
 Both ends read with a bound on a frame's size; the tools' end, whose descriptor does not block, also reads and
-writes with a deadline, so that a silent or misbehaving program's process cannot hold it. The program's end blocks. Only ``read`` and ``write`` touch the socket, the two system calls a
-confined process keeps (:mod:`roboscript.codegen.confinement`).
+writes with a deadline, so that a silent or misbehaving program's process cannot hold it. The program's end blocks:
+only ``read`` and ``write`` touch its socket, the two calls a confined process keeps for it
+(:mod:`roboscript.codegen.confinement`).
 """
 
 from __future__ import annotations

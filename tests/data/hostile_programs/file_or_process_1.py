@@ -1,6 +1,6 @@
 # class: file_or_process
 # expect: contained
-# attack: the bit generator's cffi property imports cffi in the sandboxed process; its interface's native pointers are then used to call libc through a function pointer offset
+# attack: the bit generator's cffi property imports cffi in the sandboxed process and hands out native function pointers, which the program calls with pointers of its choosing
 rng = np.random.default_rng()
 try:
     native = rng.bit_generator.cffi

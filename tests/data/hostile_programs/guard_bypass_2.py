@@ -1,6 +1,6 @@
 # class: guard_bypass
 # expect: contained
-# attack: assigns new methods to the shared Pose class (position_array, quaternion_array, to_numpy, copy): code that encodes or converts poses for the tools then carries NaN, infinities or wrong sizes
+# attack: assigns new methods to the shared Pose class (position_array, quaternion_array): code that encodes poses for the tools then carries NaN, infinities or 100000 numbers
 nan = float("nan")
 inf = float("inf")
 target = get_object_pose("apple")

@@ -1,6 +1,6 @@
 # class: guard_bypass
 # expect: contained
-# attack: builds dunder templates and names the guard cannot see: f-string pieces, keyword names with double underscores, a template from a tool's own output, str.translate
+# attack: builds dunder templates and names the guard cannot see: f-string pieces around a variable, str.translate of a harmless-looking template, keyword names with double underscores
 u = "_"
 template = f"{{0.{u}{u}globals{u}{u}[os].environ[ROBOSCRIPT_TEST_SECRET]}}"
 translated = "{0.QQglobalsQQ[sys].argv}".translate(str.maketrans("Q", "_"))

@@ -1,6 +1,6 @@
 # class: pickle_into_trusted
 # expect: contained
-# attack: takes the tool channel from a stand-in's closure or module (resize() use-after-free) and writes a message of its own: a hand-written pickle whose REDUCE runs os.system('touch MARK') on the tools' side, or frames the program's encoder never makes (NaN pose, absurd array shape)
+# attack: takes the tool channel from a stand-in's closure or module (resize() use-after-free) and writes messages of its own: a hand-written pickle whose REDUCE runs os.system('touch MARK') on the tools' side, or JSON frames the program's encoder never makes (a pose of 400-digit numbers, NaN, absurd shapes)
 keep = []
 
 
@@ -89,7 +89,14 @@ else:
     channel = module_globals["channel"]
     fd = int(real["__import__"]("sys").argv[1])
     nan = float("nan")
-    channel.send(fd, {"call": "move_to_pose", "args": [{"$": "pose", "v": [nan, nan, nan, 0, 0, 0, 1]}], "kwargs": {}})
-    channel.send(fd, {"call": "get_plane_normal", "args": ["table", {"$": "array", "dtype": "float64", "shape": [0, 10**30], "v": ""}], "kwargs": {}})
-    channel.send(fd, {"call": "move_to_pose", "args": [{"$": "quaternion", "v": [0, 0, 0, 1e400]}], "kwargs": {}})
+    frames = [
+        {"call": "move_to_pose", "args": [{"$": "pose", "v": [10**400, 0, 0, 0, 0, 0, 1]}], "kwargs": {}},
+        {"call": "move_in_direction", "args": [{"$": "tuple", "v": [{"$": "point", "v": [0, 0, 2**1100]}, 0.1]}], "kwargs": {}},
+        {"call": "move_to_pose", "args": [{"$": "pose", "v": [nan, nan, nan, 0, 0, 0, 1]}], "kwargs": {}},
+        {"call": "get_plane_normal", "args": ["table", {"$": "array", "dtype": "float64", "shape": [0, 10**30], "v": ""}], "kwargs": {}},
+        {"call": "move_to_pose", "args": [{"$": "quaternion", "v": [0, 0, 0, 1e400]}], "kwargs": {}},
+    ]
+    for frame in frames:
+        channel.send(fd, frame)
+        print(channel.receive(fd, 1 << 20))
     get(os_module, "_exit")(0)

@@ -1,6 +1,6 @@
 # class: secrets
 # expect: contained
-# attack: after a resize() use-after-free gives real builtins, reads the environment, /proc/self/environ, /proc/self/cmdline and the parent's environ and prints them
+# attack: after a resize() use-after-free gives real builtins, prints os.environ's secret, sys.argv and sys.orig_argv, then (where no seccomp filter is loaded) reads /proc/self and the parent's environ and cmdline
 keep = []
 
 
@@ -69,14 +69,18 @@ def tool_module_globals():
 
 
 real = real_builtins()
+get = real["getattr"]
 os_module = real["__import__"]("os")
-environ = real["getattr"](os_module, "environ")
-print("env:", environ.get("ROBOSCRIPT_TEST_SECRET"))
-print("argv:", real["__import__"]("sys").argv)
-for path in ("/proc/self/environ", "/proc/self/cmdline", "/proc/%d/environ" % real["getattr"](os_module, "getppid")(), "/proc/%d/cmdline" % real["getattr"](os_module, "getppid")()):
-    try:
-        handle = real["open"](path, "rb")
-        print(path, handle.read().replace(b"\0", b" ")[:2000])
-        handle.close()
-    except Exception as exc:
-        print(path, "refused", exc)
+sys_module = real["__import__"]("sys")
+environ = get(os_module, "environ")
+print("env:", environ.get("ROBOSCRIPT_TEST_SECRET"), sorted(environ)[:40])
+print("argv:", sys_module.argv, get(sys_module, "orig_argv", None))
+if "pyseccomp" not in sys_module.modules:
+    parent = get(os_module, "getppid")()
+    for path in ("/proc/self/environ", "/proc/self/cmdline", "/proc/%d/environ" % parent, "/proc/%d/cmdline" % parent):
+        try:
+            handle = real["open"](path, "rb")
+            print(path, handle.read().replace(b"\0", b" ")[:2000])
+            handle.close()
+        except Exception as exc:
+            print(path, "refused", exc)

@@ -9,7 +9,7 @@ def stubborn(depth):
         while True:
             count += 1
     finally:
-        if depth < 3:
+        if depth < 1:
             return stubborn(depth + 1)
         return depth
 
