@@ -80,6 +80,13 @@ HOSTILE = [
     ("t = '{0:{1.' + 'real}}'\ns = t.format(1, 2)", RUNTIME, "format fields may not read attributes"),
     ("f = str.format", FORBIDDEN, "take .format only to call it"),
     ("f = 'x {}'.format\ns = f(1)", FORBIDDEN, "take .format only to call it"),
+    ("t = '{0.' + 'real}'\ns = np.array(['x']).dtype.type.format(t, 1)", RUNTIME, "format fields may not read"),
+    ("a = np.array([1.0]).astype('O')", RUNTIME, "ObjectArrayError: astype()"),
+    ("a = np.array(['a']).astype([('f', 'O')])", RUNTIME, "ObjectArrayError"),
+    ("f = np.zeros(2).astype", FORBIDDEN, "take .astype only to call it"),
+    ("a = np.zeros(4)\na.resize(8, refcheck=False)", FORBIDDEN, ".resize is not allowed"),
+    ("try:\n    x = 1 / 0\nexcept ZeroDivisionError as __builtins__:\n    pass", FORBIDDEN, "'__builtins__'"),
+    ("Pose.position_array = lambda self: [0.0, 0.0, 0.0]", RUNTIME, "Pose's methods and properties cannot be"),
     # Programs the parser chokes on are syntax errors, here and in the static checker (the trial's own process).
     ("x = " + "-" * 100_000 + "1", Outcome.SYNTAX, "cannot be parsed"),
     ("x = 1\0", Outcome.SYNTAX, "SyntaxError"),

@@ -24,7 +24,18 @@ def _real(value: object, field: str) -> float:
     return value
 
 
-class Point:
+class _Sealed(type):
+    """The API's value types cannot be changed: a program that replaced a method or a property of ``Pose`` would
+    change what every pose says of itself, in its own process and in what it hands the tools."""
+
+    def __setattr__(cls, name: str, value: object) -> None:
+        raise TypeError(f"{cls.__name__}'s methods and properties cannot be changed (tried {name!r})")
+
+    def __delattr__(cls, name: str) -> None:
+        raise TypeError(f"{cls.__name__}'s methods and properties cannot be changed (tried {name!r})")
+
+
+class Point(metaclass=_Sealed):
     """A position in metres: ``x``, ``y``, ``z``."""
 
     __slots__ = ("_x", "_y", "_z")
@@ -49,7 +60,7 @@ class Point:
         return f"Point(x={self._x:.4f}, y={self._y:.4f}, z={self._z:.4f})"
 
 
-class Quaternion:
+class Quaternion(metaclass=_Sealed):
     """An orientation as a quaternion ``(x, y, z, w)``; ``Quaternion()`` is the identity."""
 
     __slots__ = ("_w", "_x", "_y", "_z")
@@ -75,7 +86,7 @@ class Quaternion:
         return f"Quaternion(x={self._x:.4f}, y={self._y:.4f}, z={self._z:.4f}, w={self._w:.4f})"
 
 
-class Pose:
+class Pose(metaclass=_Sealed):
     """A pose like ROS ``geometry_msgs/Pose``: ``Pose()`` is the identity at the origin.
 
     ``pose.position.x`` and ``pose.orientation.w`` (and the other fields) can be read and assigned. For gripper

@@ -11,7 +11,7 @@ from __future__ import annotations
 import ast
 from dataclasses import dataclass
 
-from roboscript.codegen.format_check import uncalled_format_lines
+from roboscript.codegen.checked_calls import uncalled_checked_methods
 
 ALLOWED_NODES: tuple[type[ast.AST], ...] = (
     ast.alias,  # only inside an import, which is reported itself
@@ -41,6 +41,7 @@ FORBIDDEN_ATTRIBUTES = frozenset(
         "delattr", "format_map",
         # numpy's raw memory: reinterpreting an array's bytes (as object pointers, too), reading them or their base
         "view", "tobytes", "tostring", "data", "base", "getfield", "setfield", "frombuffer", "fromstring", "cffi",
+        "resize",
         "__array_interface__", "byte_bounds",
     }
 )  # fmt: skip
@@ -92,7 +93,7 @@ def find_violations(tree: ast.AST) -> list[Violation]:
             found.append(Violation(line, f"the attribute .{node.attr} is not allowed"))
         elif isinstance(node, ast.Name) and (node.id.startswith("__") or node.id in FORBIDDEN_NAMES):
             found.append(Violation(line, f"the name {node.id!r} is not allowed"))
-        elif isinstance(node, ast.FunctionDef | ast.arg) and _name_of(node).startswith("__"):
+        elif isinstance(node, _NAMED) and _name_of(node).startswith("__"):  # def __f, f(__x=1), except E as __b
             found.append(Violation(line, f"the name {_name_of(node)!r} is not allowed"))
         elif isinstance(node, ast.ExceptHandler) and node.type is None:
             found.append(Violation(line, "a bare except: is not allowed; name what to catch, e.g. except Exception:"))
@@ -104,8 +105,8 @@ def find_violations(tree: ast.AST) -> list[Violation]:
         elif isinstance(node, ast.Attribute) and node.attr in ASSIGN_ONLY_ATTRIBUTES and not _loads(node):
             found.append(Violation(line, f"assigning .{node.attr} is not allowed (it reinterprets an array's memory)"))
     found += [
-        Violation(line, "take .format only to call it: template.format(...), or use an f-string")
-        for line in uncalled_format_lines(tree)
+        Violation(line, f"take .{method} only to call it on the spot: x.{method}(...)")
+        for line, method in uncalled_checked_methods(tree)
     ]
     return sorted(found, key=lambda v: v.line)
 
@@ -122,5 +123,10 @@ def _dunder_template(value: object) -> bool:
     return isinstance(value, str) and "{" in value and "__" in value
 
 
-def _name_of(node: ast.FunctionDef | ast.arg) -> str:
-    return node.name if isinstance(node, ast.FunctionDef) else node.arg
+_NAMED = (ast.FunctionDef, ast.arg, ast.ExceptHandler, ast.keyword)
+
+
+def _name_of(node: ast.FunctionDef | ast.arg | ast.ExceptHandler | ast.keyword) -> str:
+    if isinstance(node, ast.FunctionDef | ast.ExceptHandler):
+        return node.name or ""
+    return node.arg or ""

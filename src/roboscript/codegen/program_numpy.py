@@ -5,7 +5,8 @@ program an array of Python objects or of raw records: a ``dtype`` argument namin
 void type is refused before the call, and a result holding one is refused after it (``np.array([1, None])``).
 ``np.ndarray`` answers ``isinstance`` but cannot be called (its ``buffer=`` argument reads any memory). The guard
 forbids what is left: reinterpreting an array's memory (``.view``, assigning ``.dtype``, ``.getfield``), its bytes
-(``.tobytes``, ``.data``) and its pointers (``.ctypes``).
+(``.tobytes``, ``.data``), its pointers (``.ctypes``) and resizing it in place (``.resize``, which can leave views
+on freed memory); ``.astype`` is checked as it runs (:mod:`roboscript.codegen.checked_calls`).
 """
 
 from __future__ import annotations
@@ -114,6 +115,18 @@ def _refuse_objects(result: object, name: str) -> None:
                 f"np.{name}() would make an array of Python objects (a list that mixes numbers with None, "
                 "strings or other things?); arrays must hold numbers"
             )
+
+
+def checked_astype(owner: object, *args, **kwargs) -> object:
+    """``owner.astype(*args, **kwargs)``; for an array, refusing object and record dtypes."""
+    if isinstance(owner, np.ndarray | np.generic):
+        for value in (*args, *kwargs.values()):
+            if _names_a_forbidden_dtype(value):
+                raise ObjectArrayError("astype(): arrays of objects or records are not available; use numbers")
+        result = owner.astype(*args, **kwargs)
+        _refuse_objects(result, "ndarray.astype")
+        return result
+    return owner.astype(*args, **kwargs)
 
 
 class _ArrayType(type):

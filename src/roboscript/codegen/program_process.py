@@ -189,10 +189,8 @@ class _ToolSide:
         try:
             args = wire.from_tree(message["args"])
             kwargs = {key: wire.from_tree(tree) for key, tree in message["kwargs"].items()}
-        except (wire.WireError, AttributeError):
+        except Exception:  # anything its own encoder would not have made
             return None
-        except (ValueError, TypeError) as exc:  # well-formed, yet no valid value (a pose made of NaNs): the tool's say
-            return channel.json_bytes({"raise": protocol.exception_spec(exc, MAX_TOOL_ERROR)})
         if not isinstance(args, list) or not all(isinstance(key, str) and key.isidentifier() for key in kwargs):
             return None
         left = self.deadline - time.monotonic()
@@ -221,8 +219,8 @@ class _ToolSide:
         error, output = done.get("error"), done.get("output", "")
         if outcome not in REPORTABLE or not (error is None or isinstance(error, str)) or not isinstance(output, str):
             return self._violation("it broke the tool protocol: a report that is not one")
-        output = shortened(output, MAX_REPORTED_OUTPUT)
-        error = None if error is None else shortened(error, MAX_ERROR)
+        output = _printable(shortened(output, MAX_REPORTED_OUTPUT))
+        error = None if error is None else _printable(shortened(error, MAX_ERROR))
         if self.started is not None and time.monotonic() > self.deadline:
             outcome, error = Outcome.TIMEOUT, self._timeout_error("")
         elif outcome is Outcome.TIMEOUT:
@@ -277,6 +275,11 @@ class _ToolSide:
         if self.process.poll() is None:
             self._wait(1.0)
         self.announce(None)
+
+
+def _printable(text: str) -> str:
+    """``text`` as UTF-8 can carry it: a program's lone surrogates (``chr(0xD800)``) would break every writer."""
+    return text.encode("utf-8", "backslashreplace").decode("utf-8")
 
 
 class _ToolTimeout(BaseException):

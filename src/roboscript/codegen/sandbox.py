@@ -16,7 +16,7 @@ import traceback
 import types
 from dataclasses import dataclass, replace
 
-from roboscript.codegen.format_check import FORMAT_HELPER, checked_format, rewrite_format_calls
+from roboscript.codegen.checked_calls import helpers, rewrite_checked_calls
 from roboscript.codegen.guard import find_violations
 from roboscript.codegen.outcomes import Outcome
 from roboscript.codegen.program_numpy import program_numpy
@@ -44,7 +44,7 @@ def safe_builtins(output: io.StringIO) -> dict:
     """The builtins a program gets; ``print`` writes into ``output``."""
     allowed = {name: getattr(builtins, name) for name in _SAFE_BUILTIN_NAMES}
     allowed["print"] = lambda *args, sep=" ", end="\n", **_: output.write(sep.join(map(str, args)) + end)
-    allowed[FORMAT_HELPER] = checked_format
+    allowed.update(helpers())
     return allowed
 
 
@@ -149,7 +149,7 @@ def prepare(program: str) -> types.CodeType | ExecutionResult:
     if violations:
         return ExecutionResult(Outcome.FORBIDDEN_CONSTRUCT, "; ".join(map(str, violations[:5])), "")
     try:
-        return compile(rewrite_format_calls(tree), PROGRAM_FILENAME, "exec")
+        return compile(rewrite_checked_calls(tree), PROGRAM_FILENAME, "exec")
     except (SyntaxError, ValueError, RecursionError, MemoryError) as exc:
         return ExecutionResult(Outcome.SYNTAX, f"SyntaxError: the program cannot be compiled: {type(exc).__name__}", "")
 

@@ -171,9 +171,7 @@ def _from_wire(tree: object, depth: int) -> object:
         return _array_from_wire(tree)
     if tag in _POSE_TYPES and set(tree) == {TAG, "v"}:
         cls, size = _POSE_TYPES[tag]
-        numbers = tree["v"]
-        if not (isinstance(numbers, list) and len(numbers) == size and all(_is_real(n) for n in numbers)):
-            raise WireError(f"a {tag} must be {size} numbers")
+        numbers = _finite_numbers(tree["v"], size, tag)
         if cls is Pose:
             return Pose(numbers[:3], numbers[3:])
         return cls(*numbers)
@@ -183,8 +181,22 @@ def _from_wire(tree: object, depth: int) -> object:
 _POSE_TYPES: dict[str, tuple[type, int]] = {"pose": (Pose, 7), "point": (Point, 3), "quaternion": (Quaternion, 4)}
 
 
-def _is_real(value: object) -> bool:
-    return isinstance(value, int | float) and not isinstance(value, bool)
+def _finite_numbers(numbers: object, size: int, tag: str) -> list[float]:
+    """A pose type's numbers: ``size`` finite floats (what a pose holds; anything else was not made by one)."""
+    if not (isinstance(numbers, list) and len(numbers) == size):
+        raise WireError(f"a {tag} must be {size} numbers")
+    values = []
+    for number in numbers:
+        if isinstance(number, bool) or not isinstance(number, int | float):
+            raise WireError(f"a {tag} must be {size} numbers")
+        try:
+            value = float(number)
+        except OverflowError:
+            raise WireError(f"a {tag}'s number is too large") from None
+        if not math.isfinite(value):
+            raise WireError(f"a {tag}'s numbers must be finite")
+        values.append(value)
+    return values
 
 
 def _array_from_wire(tree: dict) -> np.ndarray:

@@ -49,7 +49,10 @@ def _writer_class():
     return Writer
 
 
-def _text(value: object) -> str:
+def _text(value: object, quoted: bool = True) -> str:
+    """``value`` as a line of the recording, cut at ``MAX_TEXT`` characters (a program's arguments are its own)."""
+    if not quoted:
+        return value if len(value) <= MAX_TEXT else value[:MAX_TEXT] + "..."
     if isinstance(value, np.ndarray):
         value = np.round(value, 4).tolist()
     try:
@@ -202,7 +205,8 @@ class TrialRecording:
             try:
                 answer = function(*args, **kwargs)
             except BaseException as exc:
-                self._record_call(name, args, kwargs, started, error=f"{type(exc).__name__}: {exc}")
+                error = _text(f"{type(exc).__name__}: {exc}", quoted=False)
+                self._record_call(name, args, kwargs, started, error=error)
                 raise
             self._record_call(name, args, kwargs, started, answer=answer)
             return answer
