@@ -5,6 +5,8 @@ from __future__ import annotations
 
 import os
 import signal
+import subprocess
+import sys
 import time
 from pathlib import Path
 
@@ -33,6 +35,9 @@ def _fake_trial(spec: TrialSpec) -> dict:
         time.sleep(3600)
     if spec.task == "raise":
         raise RuntimeError("no world here")
+    if spec.task == "noisy":  # a library that prints, in Python and in C
+        print('{"whole_task_success": 1.0}', flush=True)
+        os.write(1, b"NOISE from C\n")
     if spec.task == "clean up":  # what a trial's process must do before it ends (a ROS trial stops its master)
         at_process_exit(lambda: Path(spec.program).write_text("cleaned up"))
     if spec.task == "linger":  # leaves a process behind that holds the trial's end of the pipe to the worker
@@ -131,3 +136,15 @@ def test_a_trial_stuck_in_a_tool_past_its_announced_deadline_is_ended_by_the_wat
     # Ended by the watchdog, not by the runner's own budget (the limit and a minute), which says "(killed)".
     assert stuck.outcome == Outcome.TIMEOUT.value and "a tool it called did not return" in stuck.error
     assert after.ok
+
+
+def test_what_a_trial_prints_goes_to_stderr_and_the_commands_stdout_stays_its_own():
+    code = (
+        "from test_runner import _fake_trial, _no_warm, _spec\nfrom roboscript.bench.runner import TrialPool\n"
+        "with TrialPool(1, serve_args=(_fake_trial, _no_warm)) as pool:\n    (record,) = pool.run([_spec('noisy')])\n"
+        "print('RESULT', record.ok)"
+    )
+    environment = {**os.environ, "PYTHONPATH": str(Path(__file__).parent)}
+    done = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, env=environment, timeout=300)
+    assert done.stdout == "RESULT True\n", done.stdout
+    assert "NOISE from C" in done.stderr and "whole_task_success" in done.stderr

@@ -166,6 +166,10 @@ def _trial_child(spec: TrialSpec, run: Callable[[TrialSpec], dict], writer: int)
     global _announce
     _announce = functools.partial(_announce_deadline, writer)
     _limit_memory(TRIAL_MEMORY)
+    # Whatever a trial's libraries print (a tool's notice, a planner's log line) goes to stderr: the command's
+    # stdout carries its own output alone (one JSON document with --json).
+    sys.stdout.flush()
+    os.dup2(2, 1)
     try:
         try:
             message = ("ok", run(spec))

@@ -1,4 +1,4 @@
-"""A program's process: ``python -I -m roboscript.codegen.jail FD PARENT``, started by the tools' side.
+"""A program's process: ``main([ROOT, FD, PARENT])`` in ``python -I``, started by the tools' side.
 
 It starts from nothing of the caller's (a fresh interpreter, an environment without credentials, no descriptors
 but its socket), reads the program and its limits, imports and warms what the program may use, confines itself

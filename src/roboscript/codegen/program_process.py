@@ -25,6 +25,7 @@ import sys
 import threading
 import time
 from collections.abc import Callable, Collection
+from pathlib import Path
 
 from roboscript.codegen import channel, confinement, protocol, wire
 from roboscript.codegen.outcomes import Outcome
@@ -51,6 +52,12 @@ REPORTABLE = frozenset(
     (Outcome.OK, Outcome.RUNTIME_ERROR, Outcome.PLANNING_FAILURE, Outcome.TIMEOUT, Outcome.SYNTAX,
      Outcome.FORBIDDEN_CONSTRUCT)
 )  # fmt: skip
+
+
+# The program's process: isolated mode (no user site, no PYTHON* variables, no current directory on the path), with
+# the folder this roboscript was imported from first, so that a checkout run through PYTHONPATH runs its own jail.
+BOOTSTRAP = "import sys; sys.path.insert(0, sys.argv[1]); from roboscript.codegen.jail import main; main(sys.argv[1:])"
+PACKAGE_ROOT = str(Path(__file__).resolve().parents[2])
 
 
 class SandboxSetupError(RoboScriptError, RuntimeError):
@@ -116,7 +123,7 @@ def _start(there: socket.socket) -> subprocess.Popen:
     environment = dict(JAIL_ENVIRONMENT)
     if confinement.unconfined_by_choice():
         environment[confinement.UNCONFINED_VARIABLE] = "1"
-    command = [sys.executable, "-I", "-m", "roboscript.codegen.jail", str(there.fileno()), str(os.getpid())]
+    command = [sys.executable, "-I", "-c", BOOTSTRAP, PACKAGE_ROOT, str(there.fileno()), str(os.getpid())]
     try:
         return subprocess.Popen(
             command,
