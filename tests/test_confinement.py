@@ -87,7 +87,7 @@ FRAME = "import struct, json\nfd = {fd}\ndef frame(data):\n    os.write(fd, stru
 def _tools_probe(act: str, namespace: dict | None = None):
     namespace = namespace or {"where": lambda name: [1.0, 2.0], "Pose": Pose}
     forwarded = [n for n in namespace if n != "Pose"]
-    setup = "import os\nfd = [int(a) for a in __import__('sys').argv[1:2]][0]\n" + FRAME.replace("{fd}", "fd")
+    setup = "import os\n" + FRAME.replace("{fd}", "channel_fd")  # the hook's scope holds the socket's descriptor
     return run_program("x = 1", namespace, LIMITS, forwarded=forwarded, probe=(setup, act))
 
 

@@ -88,7 +88,9 @@ HOSTILE = [
     ("try:\n    x = 1 / 0\nexcept ZeroDivisionError as __builtins__:\n    pass", FORBIDDEN, "'__builtins__'"),
     ("Pose.position_array = lambda self: [0.0, 0.0, 0.0]", RUNTIME, "Pose's methods and properties cannot be"),
     # Programs the parser chokes on are syntax errors, here and in the static checker (the trial's own process).
-    ("x = " + "-" * 100_000 + "1", Outcome.SYNTAX, "cannot be parsed"),
+    ("x = " + "-" * 50_000 + "1", Outcome.SYNTAX, "cannot be parsed"),
+    ("x = 1\n" * 20_000, Outcome.SYNTAX, "characters long; at most 100000"),
+    ("def f(" + ", ".join(f"a{i}" for i in range(100)) + "):\n    pass", FORBIDDEN, "a function of 100 parameters"),
     ("x = 1\0", Outcome.SYNTAX, "SyntaxError"),
     # A time-out caught and swallowed is still a time-out.
     ("for _ in range(1):\n    try:\n        while True:\n            pass\n    finally:\n        break", TIMEOUT,
@@ -118,7 +120,10 @@ def test_hostile_programs_are_rejected_or_contained(tmp_path, program, outcome, 
     assert not mark.exists() and os.listdir(tmp_path) == []
 
 
-@pytest.mark.parametrize("program", ["x = " + "-" * 100_000 + "1", "x = 1\0", "x = " + "not " * 100_000 + "1"])
+@pytest.mark.parametrize(
+    "program", ["x = " + "-" * 50_000 + "1", "x = 1\0", "x = " + "not " * 20_000 + "1", "def f(a, a):\n    pass"],
+    ids=["deep", "null", "long", "duplicate"],
+)
 def test_the_static_checker_reports_what_cannot_be_parsed_as_syntax(program):
     from roboscript.codegen.checker import check_program
 

@@ -56,6 +56,7 @@ OWN_RETREAT = 0.5  # cosine (60 deg) above which a program's motion is its own r
 PULL_CHECK = 0.25  # metres a drawer handle grasp should be able to pull
 PULL_LEAST = 0.15  # metres the grasp must pull where none pulls PULL_CHECK
 JOINT_TYPES = ("any", "revolute", "prismatic")
+FARTHEST_POSE = 10.0  # metres from the world's origin along any axis: every arm reaches less than one
 
 
 class ToolAPI:
@@ -634,6 +635,11 @@ def _pose(value: object, field: str) -> Transform:
     if not isinstance(value, Pose):
         raise TypeError(
             f"{field} must be a Pose (e.g. from get_gripper_pose() or a parse_* tool), got {type(value).__name__}"
+        )
+    far = float(np.max(np.abs(value.position_array())))
+    if far > FARTHEST_POSE:  # a straight path there is interpolated in steps of millimetres: bounded work only
+        raise ValueError(
+            f"{field} is {far:.3g} m from the world's origin; poses are in metres and within {FARTHEST_POSE:g} m of it"
         )
     return value.to_transform()
 

@@ -7,6 +7,7 @@ process so that a crash or a hang in a program cannot take the runner down.
 from __future__ import annotations
 
 import os
+import time
 from collections.abc import Callable
 from dataclasses import asdict, dataclass, field, replace
 from pathlib import Path
@@ -14,8 +15,8 @@ from pathlib import Path
 from roboscript.bench.tasks import DEFAULT_SUITE, Task, free_task, get_task
 from roboscript.codegen.checker import check_program
 from roboscript.codegen.outcomes import Outcome
-from roboscript.codegen.program_process import run_program
-from roboscript.codegen.sandbox import ExecutionResult, Limits
+from roboscript.codegen.program_process import EXIT_GRACE, run_program
+from roboscript.codegen.sandbox import MAX_ERROR, ExecutionResult, Limits, shortened
 from roboscript.perception.modes import GROUND_TRUTH, PerceptionMode, perception_mode
 from roboscript.phases import PhaseClock, phase
 
@@ -330,8 +331,12 @@ def check_and_execute(
     run here."""
     from roboscript.api import ToolAPI
 
+    if announce is not None:  # the checker's time is the program's too: the watchdog covers it
+        announce(time.monotonic() + limits.timeout + EXIT_GRACE)
     findings = check_program(program)
     if findings:
+        if announce is not None:
+            announce(None)
         error = "; ".join(f"{f.message} (program line {f.line})" for f in findings[:5])
-        return ExecutionResult(findings[0].outcome, error, "")
+        return ExecutionResult(findings[0].outcome, shortened(error, MAX_ERROR), "")
     return run_program(program, namespace, limits, forwarded=ToolAPI.TOOL_NAMES, announce=announce)

@@ -13,7 +13,7 @@ from dataclasses import dataclass
 from roboscript.api.signature import ALIASES
 from roboscript.codegen.guard import find_violations
 from roboscript.codegen.outcomes import Outcome
-from roboscript.codegen.sandbox import PROGRAM_BUILTINS, parse_program, safe_numpy
+from roboscript.codegen.sandbox import MAX_PROGRAM, PROGRAM_BUILTINS, parse_program, safe_numpy
 
 
 @dataclass(frozen=True)
@@ -54,13 +54,36 @@ def _plain(signature: inspect.Signature, drop_first: bool = False) -> inspect.Si
 
 
 def check_program(program: str, tools: Mapping[str, inspect.Signature] | None = None) -> list[Finding]:
-    """Every problem found without running ``program``; empty when it may run."""
+    """Every problem found without running ``program``; empty when it may run. Bounded work whatever the program:
+    its size is bounded first, the guard bounds its functions' parameters and its calls' arguments."""
     tools = tool_signatures() if tools is None else tools
+    if len(program) > MAX_PROGRAM:
+        message = f"the program is {len(program)} characters long; at most {MAX_PROGRAM} (programs are short)"
+        return [Finding(0, Outcome.SYNTAX, message)]
     try:
         tree = parse_program(program)
     except SyntaxError as exc:
-        return [Finding(exc.lineno or 0, Outcome.SYNTAX, f"SyntaxError: {exc.msg}")]
-    findings = [Finding(v.line, Outcome.FORBIDDEN_CONSTRUCT, v.message) for v in find_violations(tree)]
+        return [Finding(exc.lineno or 0, Outcome.SYNTAX, f"SyntaxError: {_short(exc.msg)}")]
+    violations = find_violations(tree)
+    findings = [Finding(v.line, Outcome.FORBIDDEN_CONSTRUCT, v.message) for v in violations]
+    if any(v.oversized for v in violations):  # binding its calls would be work without bound
+        return sorted(set(findings), key=lambda f: (f.line, f.message))
+    try:
+        findings += _call_findings(tree, tools)
+    except (ValueError, TypeError, RecursionError) as exc:  # def f(a, a): parses, but no signature has it
+        findings.append(Finding(0, Outcome.SYNTAX, f"SyntaxError: {_short(str(exc))}"))
+    return sorted({Finding(f.line, f.outcome, _short(f.message)) for f in findings}, key=lambda f: (f.line, f.message))
+
+
+MAX_FINDING = 500  # characters of one finding's message
+
+
+def _short(text: str) -> str:
+    return text if len(text) <= MAX_FINDING else text[:MAX_FINDING] + " [...]"
+
+
+def _call_findings(tree: ast.Module, tools: Mapping[str, inspect.Signature]) -> list[Finding]:
+    findings: list[Finding] = []
     defined = _defined_functions(tree)
     known = _callable_names(tree, tools)
     numpy = safe_numpy()
@@ -80,11 +103,11 @@ def check_program(program: str, tools: Mapping[str, inspect.Signature] | None = 
             for part in path[1:]:
                 parent, target = target, getattr(target, part, None)
                 if target is None:
-                    names = [n for n in vars(parent) if not n.startswith("_")]
+                    names = [n for n in getattr(parent, "__dict__", {}) if not n.startswith("_")]
                     message = f"np.{'.'.join(path[1:])} is not available to programs" + _closest(part, names)
                     findings.append(Finding(call.lineno, Outcome.UNKNOWN_FUNCTION, message))
                     break
-    return sorted(set(findings), key=lambda f: (f.line, f.message))
+    return findings
 
 
 def undefined_calls(program: str, tools: Mapping[str, inspect.Signature] | None = None) -> list[CallSite]:

@@ -76,6 +76,7 @@ class Violation:
 
     line: int
     message: str
+    oversized: bool = False  # past a bound on the program's shape (work on it would be without bound)
 
     def __str__(self) -> str:
         return f"line {self.line}: {self.message}"
@@ -102,6 +103,10 @@ def find_violations(tree: ast.AST) -> list[Violation]:
         elif isinstance(node, ast.Constant) and _dunder_template(node.value):
             # str.format reads attributes named in its template: "{0.__class__}".format(x)
             found.append(Violation(line, "format strings may not name dunder attributes"))
+        elif isinstance(node, ast.arguments) and (count := _parameters(node)) > MAX_PARAMETERS:
+            found.append(Violation(line, f"a function of {count} parameters; at most {MAX_PARAMETERS}", True))
+        elif isinstance(node, ast.Call) and (count := len(node.args) + len(node.keywords)) > MAX_CALL_ARGUMENTS:
+            found.append(Violation(line, f"a call with {count} arguments; at most {MAX_CALL_ARGUMENTS}", True))
         elif isinstance(node, ast.Attribute) and node.attr in ASSIGN_ONLY_ATTRIBUTES and not _loads(node):
             found.append(Violation(line, f"assigning .{node.attr} is not allowed (it reinterprets an array's memory)"))
     found += [
@@ -109,6 +114,16 @@ def find_violations(tree: ast.AST) -> list[Violation]:
         for line, method in uncalled_checked_methods(tree)
     ]
     return sorted(found, key=lambda v: v.line)
+
+
+# Bounds on a program's shape: past them, compiling it (CPython's symbol tables copy a function's names into every
+# scope nested in it) and binding its calls grow with their product.
+MAX_PARAMETERS = 64
+MAX_CALL_ARGUMENTS = 256
+
+
+def _parameters(node: ast.arguments) -> int:
+    return len(node.posonlyargs) + len(node.args) + len(node.kwonlyargs) + bool(node.vararg) + bool(node.kwarg)
 
 
 # Attributes a program may read but not assign: numpy reinterprets an array's memory when they change.

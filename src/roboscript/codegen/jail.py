@@ -64,21 +64,23 @@ class _Run:
         self.limits = Limits(**init["limits"])
         self.confine = init["confine"] is True
         self.probe = init.get("probe")  # a test's (setup, act): code run unguarded, before and once confined
-        self.probe_scope: dict = {"__builtins__": __builtins__}
+        self.probe_scope: dict = {"__builtins__": __builtins__, "channel_fd": fd}
         if self.probe is not None:
             exec(self.probe[0], self.probe_scope)
         self.output = io.StringIO()
         stand_ins = {name: _stand_in(name, fd) for name in init["tools"]}
         data = wire.from_tree(init["data"])
         namespace = {**data, "Pose": Pose, "Point": Point, "Quaternion": Quaternion, **stand_ins}
-        self.code = prepare(init["program"])
+        self.program = init["program"]
         self.scope = program_scope(namespace, self.output)
         _quiet_runtime(self.output)
         _warm_up()
 
     def start(self, parent: int) -> None:
-        if isinstance(self.code, ExecutionResult):
-            self._report(self.code.outcome, self.code.error)  # the guard or the parser refused it
+        channel.send(self.fd, {"ready": True})  # the program's time starts: compiling it counts (it can be slow)
+        code = prepare(self.program)
+        if isinstance(code, ExecutionResult):
+            self._report(code.outcome, code.error)  # the guard or the parser refused it
             return
         try:
             impose_limits(self.limits)
@@ -87,7 +89,7 @@ class _Run:
         except Exception as exc:  # not the program's doing: the tools' side raises it as a set-up error
             channel.send(self.fd, {"failed": f"{type(exc).__name__}: {exc}"})
             return
-        channel.send(self.fd, {"ready": True})
+        channel.send(self.fd, {"confined": True})  # from here on, it may be the program that speaks
         if self.probe is not None:  # shows what the confinement stops
             try:
                 exec(self.probe[1], self.probe_scope)
@@ -95,7 +97,7 @@ class _Run:
                 self._report(Outcome.RUNTIME_ERROR, f"probe: {type(exc).__name__}: {exc}")
                 return
         with program_timer(self.limits):
-            outcome, error = run_code(self.code, self.scope, self.limits)
+            outcome, error = run_code(code, self.scope, self.limits)
         self._report(outcome, error)
 
     def _report(self, outcome: Outcome, error: str | None) -> None:
@@ -109,6 +111,9 @@ def _stand_in(name: str, fd: int):
     """The program's ``name``: sends the call to the tools as data and returns (or raises) what they answer."""
 
     def call(*args, **kwargs):
+        odd = [key for key in kwargs if not key.isidentifier()]
+        if odd:
+            raise protocol.ToolArgumentError(f"{name}() takes keyword arguments by their names, not {odd[0][:40]!r}")
         try:
             arguments = wire.to_tree(list(args), protocol.MAX_ARGUMENTS)
             keywords = {key: wire.to_tree(value, protocol.MAX_ARGUMENTS) for key, value in kwargs.items()}

@@ -146,6 +146,7 @@ class _ToolSide:
         self.forwarded = frozenset(forwarded)
         self.announce = announce or (lambda deadline: None)
         self.started: float | None = None
+        self.confined = False  # what arrives after that may be the program's doing
         self.ran_in = f"process {process.pid}"
 
     @property
@@ -167,13 +168,15 @@ class _ToolSide:
                 return self.died(None)
             except channel.ChannelError as exc:
                 return self._violation(f"it broke the tool protocol: {exc}")
-            if self.started is None:
-                if message.get("ready") is True:
-                    self.started = time.monotonic()
-                    self.announce(self.deadline + EXIT_GRACE)
-                    continue
-                if "failed" in message:
-                    return self._setup_failed(str(message["failed"])[:4000])
+            if self.started is None and message.get("ready") is True:
+                self.started = time.monotonic()
+                self.announce(self.deadline + EXIT_GRACE)
+                continue
+            if message.get("confined") is True and not self.confined:
+                self.confined = True
+                continue
+            if "failed" in message and not self.confined:  # its process could not set itself up
+                return self._setup_failed(str(message["failed"])[:4000])
             if "done" in message:
                 return self._finish(message["done"])
             if "call" in message and self.started is not None:
@@ -191,7 +194,9 @@ class _ToolSide:
 
     def _call(self, message: dict) -> bytes | None:
         name = message.get("call")
-        if name not in self.forwarded or set(message) != {"call", "args", "kwargs"}:
+        if not isinstance(name, str) or name not in self.forwarded or set(message) != {"call", "args", "kwargs"}:
+            return None
+        if not isinstance(message["args"], list) or not isinstance(message["kwargs"], dict):
             return None
         try:
             args = wire.from_tree(message["args"])
@@ -226,8 +231,8 @@ class _ToolSide:
         error, output = done.get("error"), done.get("output", "")
         if outcome not in REPORTABLE or not (error is None or isinstance(error, str)) or not isinstance(output, str):
             return self._violation("it broke the tool protocol: a report that is not one")
-        output = _printable(shortened(output, MAX_REPORTED_OUTPUT))
-        error = None if error is None else _printable(shortened(error, MAX_ERROR))
+        output = shortened(_printable(output), MAX_REPORTED_OUTPUT)
+        error = None if error is None else shortened(_printable(error), MAX_ERROR)
         if self.started is not None and time.monotonic() > self.deadline:
             outcome, error = Outcome.TIMEOUT, self._timeout_error("")
         elif outcome is Outcome.TIMEOUT:

@@ -1,12 +1,14 @@
 """The messages between a program's process and the tools, and their bounds.
 
-Program to tools: ``{"ready": true}`` once confined, ``{"call": name, "args": tree, "kwargs": tree}`` for each
-tool call, ``{"done": {"outcome", "error", "output"}}`` at the end (``{"failed": text}`` if it could not be set
-up). Tools to program: the ``init`` message first, then for each call ``{"return": tree}``, ``{"raise": spec}``
-or ``{"timeout": true}``. Trees are :mod:`roboscript.codegen.wire` values. An exception crosses as its class's
-name, the builtin exception classes it derives from (what a program's ``except`` can name), whether it is the
-robot's failure, its message and its data attributes: the program's side makes a class of that name from those
-builtins, never a class of the tools' side.
+Program to tools: ``{"ready": true}`` once set up (its time starts; it then compiles the program),
+``{"confined": true}`` once confined (a set-up failure, ``{"failed": text}``, is believed only before),
+``{"call": name, "args": tree, "kwargs": tree}`` for each tool call, ``{"done": {"outcome", "error", "output"}}``
+at the end. Tools to program: the ``init`` message first, then for each call ``{"return": tree}``,
+``{"raise": spec}`` or ``{"timeout": true}``. Trees are :mod:`roboscript.codegen.wire` values.
+
+An exception crosses as its class's name, the builtin exception classes it derives from (what a program's
+``except`` can name), whether it is the robot's failure, its message and its data attributes: the program's side
+makes a class of that name from those builtins, never a class of the tools' side.
 """
 
 from __future__ import annotations

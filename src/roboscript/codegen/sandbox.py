@@ -139,8 +139,14 @@ def parse_program(program: str) -> ast.Module:
         raise error from None
 
 
+MAX_PROGRAM = 100_000  # characters: the longest program of any corpus here is under 10,000
+
+
 def prepare(program: str) -> types.CodeType | ExecutionResult:
     """The program compiled, its format calls checked at run time; or why it may not run."""
+    if len(program) > MAX_PROGRAM:
+        error = f"SyntaxError: the program is {len(program)} characters long; at most {MAX_PROGRAM}"
+        return ExecutionResult(Outcome.SYNTAX, error, "")
     try:
         tree = parse_program(program)
     except SyntaxError as exc:
