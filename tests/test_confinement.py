@@ -231,3 +231,16 @@ def test_tool_calls_work_where_sockets_default_to_a_timeout():
     finally:
         socket.setdefaulttimeout(before)
     assert result.outcome is Outcome.OK and result.output == "20000\n", result
+
+
+def test_what_a_tool_noticed_on_the_programs_behalf_is_in_its_output_and_never_printed(capsys):
+    from roboscript.notices import notice
+
+    def move():
+        notice("retreat: backed off 0.030 m of 0.060 m: the rest is out of reach")
+        return None
+
+    result = run_program("move()\nprint('after')", {"move": move}, LIMITS, forwarded=["move"])
+    assert result.outcome is Outcome.OK, result
+    assert result.output == "[notice] retreat: backed off 0.030 m of 0.060 m: the rest is out of reach\nafter\n"
+    assert "retreat" not in capsys.readouterr().out

@@ -19,6 +19,7 @@ from roboscript.api.spots import DROP
 from roboscript.backends.base import Backend
 from roboscript.geometry import Transform, rotation_angle_between
 from roboscript.names import is_part, kind_of
+from roboscript.notices import notice
 from roboscript.perception.base import ObjectPoints, Perception, UnknownObjectError
 from roboscript.perception.grasp_detection import (
     UNCLEAN_RELEASE_PENALTY,
@@ -294,8 +295,8 @@ class ToolAPI:
             higher = self.placer.raised_for_release(target, exc, self.held)
             if higher is None:
                 raise
-            print(
-                f"[move_to_pose] {', '.join(self.held)} sits lower in the hand than when the pose was made: "
+            notice(
+                f"move_to_pose: {', '.join(self.held)} sits lower in the hand than when the pose was made: "
                 f"going {higher.position[2] - target.position[2]:.3f} m higher"
             )
             self.motion.move_to_pose(higher)
@@ -433,7 +434,7 @@ class ToolAPI:
             self.motion.retreat(*owed[:2])
             return False
         if moved < distance - 1e-3:
-            print(f"[retreat] backed off {moved:.3f} m of {distance:.3f} m: the rest is out of reach")
+            notice(f"retreat: backed off {moved:.3f} m of {distance:.3f} m: the rest is out of reach")
         self.contacts.withdraw_cleared(self.held)
         return True
 

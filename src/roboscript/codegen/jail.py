@@ -68,7 +68,7 @@ class _Run:
         if self.probe is not None:
             exec(self.probe[0], self.probe_scope)
         self.output = io.StringIO()
-        stand_ins = {name: _stand_in(name, fd) for name in init["tools"]}
+        stand_ins = {name: _stand_in(name, fd, self.output) for name in init["tools"]}
         data = wire.from_tree(init["data"])
         namespace = {**data, "Pose": Pose, "Point": Point, "Quaternion": Quaternion, **stand_ins}
         self.program = init["program"]
@@ -107,8 +107,9 @@ class _Run:
             channel.send(self.fd, {"done": {"outcome": outcome.value, "error": error, "output": output}})
 
 
-def _stand_in(name: str, fd: int):
-    """The program's ``name``: sends the call to the tools as data and returns (or raises) what they answer."""
+def _stand_in(name: str, fd: int, output: io.StringIO):
+    """The program's ``name``: sends the call to the tools as data and returns (or raises) what they answer; what
+    the tool noticed on the program's behalf goes into the program's output."""
 
     def call(*args, **kwargs):
         odd = [key for key in kwargs if not key.isidentifier()]
@@ -130,6 +131,8 @@ def _stand_in(name: str, fd: int):
         with _timer_held():
             channel.send_raw(fd, data)
             reply = channel.receive(fd, protocol.MAX_REPLY)
+        for text in reply.get("notices", ()):
+            output.write(f"[notice] {text}\n")
         if "return" in reply:
             return wire.from_tree(reply["return"])
         if "timeout" in reply:

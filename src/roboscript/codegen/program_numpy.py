@@ -1,8 +1,10 @@
 """The ``np`` a program gets: maths on arrays of numbers, without files, pointers or raw memory.
 
-An allow-list of numpy's functions, with ``linalg`` and ``random`` trimmed the same way. None of them hands a
-program an array of Python objects or of raw records: a ``dtype`` argument naming ``object``, a structured or a
-void type is refused before the call, and a result holding one is refused after it (``np.array([1, None])``).
+An allow-list of numpy's functions, with ``linalg`` and ``random`` trimmed the same way. None of these functions
+hands a program an array of Python objects or of raw records: a ``dtype`` argument naming ``object``, a structured
+or a void type is refused before the call, and a result holding one is refused after it (``np.array([1, None])``).
+Methods of arrays and of random generators can still make object arrays (``a.cumsum(dtype="O")``,
+``rng.permutation([1, None])``): they are values, not pointers, once nothing can reinterpret an array's memory.
 ``np.ndarray`` answers ``isinstance`` but cannot be called (its ``buffer=`` argument reads any memory). The guard
 forbids what is left: reinterpreting an array's memory (``.view``, assigning ``.dtype``, ``.getfield``), its bytes
 (``.tobytes``, ``.data``), its pointers (``.ctypes``) and resizing it in place (``.resize``, which can leave views

@@ -27,6 +27,7 @@ import time
 from collections.abc import Callable, Collection
 from pathlib import Path
 
+from roboscript import notices
 from roboscript.codegen import channel, confinement, protocol, wire
 from roboscript.codegen.outcomes import Outcome
 from roboscript.codegen.sandbox import MAX_ERROR, ExecutionResult, Limits, shortened
@@ -208,18 +209,20 @@ class _ToolSide:
         left = self.deadline - time.monotonic()
         if left <= 0:
             return channel.json_bytes({"timeout": True})
+        with notices.collected() as noticed:
+            try:
+                with _time_limit(left):
+                    value = self.namespace[name](*args, **kwargs)
+            except _ToolTimeout:
+                return channel.json_bytes({"timeout": True})
+            except Exception as exc:
+                spec = protocol.exception_spec(exc, MAX_TOOL_ERROR)
+                return channel.json_bytes({"raise": spec, "notices": noticed})
         try:
-            with _time_limit(left):
-                value = self.namespace[name](*args, **kwargs)
-        except _ToolTimeout:
-            return channel.json_bytes({"timeout": True})
-        except Exception as exc:
-            return channel.json_bytes({"raise": protocol.exception_spec(exc, MAX_TOOL_ERROR)})
-        try:
-            return channel.json_bytes({"return": wire.to_tree(value, protocol.MAX_REPLY)})
+            return channel.json_bytes({"return": wire.to_tree(value, protocol.MAX_REPLY), "notices": noticed})
         except wire.WireError as exc:
             error = RuntimeError(f"{name}() returned what cannot be sent to the program: {exc}")
-            return channel.json_bytes({"raise": protocol.exception_spec(error, MAX_TOOL_ERROR)})
+            return channel.json_bytes({"raise": protocol.exception_spec(error, MAX_TOOL_ERROR), "notices": noticed})
 
     def _finish(self, done: object) -> ExecutionResult:
         if not isinstance(done, dict):

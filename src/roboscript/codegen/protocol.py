@@ -4,7 +4,8 @@ Program to tools: ``{"ready": true}`` once set up (its time starts; it then comp
 ``{"confined": true}`` once confined (a set-up failure, ``{"failed": text}``, is believed only before),
 ``{"call": name, "args": tree, "kwargs": tree}`` for each tool call, ``{"done": {"outcome", "error", "output"}}``
 at the end. Tools to program: the ``init`` message first, then for each call ``{"return": tree}``,
-``{"raise": spec}`` or ``{"timeout": true}``. Trees are :mod:`roboscript.codegen.wire` values.
+``{"raise": spec}`` (both with the ``"notices"`` the tool gave, :mod:`roboscript.notices`) or
+``{"timeout": true}``. Trees are :mod:`roboscript.codegen.wire` values.
 
 An exception crosses as its class's name, the builtin exception classes it derives from (what a program's
 ``except`` can name), whether it is the robot's failure, its message and its data attributes: the program's side
