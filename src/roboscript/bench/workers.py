@@ -33,6 +33,7 @@ import traceback
 from collections.abc import Callable
 
 from roboscript.bench.trial import TrialSpec, run_trial
+from roboscript.codegen.sandbox import address_space
 from roboscript.processes import die_with_parent, run_exit_hooks
 
 LENGTH = struct.Struct("<Q")  # the length of a trial's message, before it
@@ -192,10 +193,8 @@ TRIAL_MEMORY = 12 * 1024**3
 
 
 def _limit_memory(extra: int) -> None:
-    try:
-        with open("/proc/self/statm") as f:
-            mapped = int(f.read().split()[0]) * resource.getpagesize()
-    except (OSError, ValueError, IndexError):
+    mapped = address_space()
+    if mapped is None:
         return
     hard = resource.getrlimit(resource.RLIMIT_AS)[1]
     limit = mapped + extra if hard == resource.RLIM_INFINITY else min(mapped + extra, hard)

@@ -13,7 +13,7 @@ from dataclasses import dataclass
 from roboscript.api.signature import ALIASES
 from roboscript.codegen.guard import find_violations
 from roboscript.codegen.outcomes import Outcome
-from roboscript.codegen.sandbox import MAX_PROGRAM, PROGRAM_BUILTINS, parse_program, safe_numpy
+from roboscript.codegen.sandbox import MAX_PROGRAM, PROGRAM_BUILTINS, parse_program, safe_numpy, shortened
 
 
 @dataclass(frozen=True)
@@ -79,7 +79,7 @@ MAX_FINDING = 500  # characters of one finding's message
 
 
 def _short(text: str) -> str:
-    return text if len(text) <= MAX_FINDING else text[:MAX_FINDING] + " [...]"
+    return shortened(text, MAX_FINDING)
 
 
 def _call_findings(tree: ast.Module, tools: Mapping[str, inspect.Signature]) -> list[Finding]:

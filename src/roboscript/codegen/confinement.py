@@ -16,12 +16,12 @@ unless ``ROBOSCRIPT_UNCONFINED=1`` is set on purpose (then only the guard and re
 
 from __future__ import annotations
 
-import ctypes
 import os
 import resource
 import signal
 
 from roboscript.errors import RoboScriptError
+from roboscript.processes import die_with_parent
 
 # System calls a confined process may make. Everything Python and numpy do while a program computes and talks to
 # the tools: no file system, no processes, no network, no signals to others, no descriptors made.
@@ -36,7 +36,6 @@ ALLOWED_SYSCALLS = (
 
 UNCONFINED_VARIABLE = "ROBOSCRIPT_UNCONFINED"
 NOBODY = 65534
-PR_SET_PDEATHSIG = 1
 INSTALL_HINT = (
     "install libseccomp (Debian: apt-get install libseccomp2) and the pyseccomp package (pip install "
     "pyseccomp==0.1.2), or set ROBOSCRIPT_UNCONFINED=1 to run programs with the Python-level sandbox alone"
@@ -84,7 +83,7 @@ def confine(parent: int) -> None:
         os.setgroups([])
         os.setgid(NOBODY)
         os.setuid(NOBODY)
-    _die_with(parent)  # after the change of user, which clears the parent-death signal
+    die_with_parent(signal.SIGKILL, parent)  # after the change of user, which clears the parent-death signal
     rules = seccomp.SyscallFilter(defaction=seccomp.KILL_PROCESS)
     rules.set_attr(seccomp.Attr.ACT_BADARCH, seccomp.KILL_PROCESS)  # a 32-bit or x32 system call is no way out
     for name in ALLOWED_SYSCALLS:
@@ -93,13 +92,6 @@ def confine(parent: int) -> None:
         except (OSError, ValueError):  # a call this architecture does not have (``time`` on aarch64)
             continue
     rules.load()
-
-
-def _die_with(parent: int) -> None:
-    libc = ctypes.CDLL(None, use_errno=True)
-    libc.prctl(PR_SET_PDEATHSIG, signal.SIGKILL)
-    if os.getppid() != parent:  # the parent died before the signal was armed
-        os._exit(1)
 
 
 def killed_by_confinement(status: int) -> bool:

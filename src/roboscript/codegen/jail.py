@@ -37,8 +37,6 @@ from roboscript.codegen.sandbox import (
     shortened,
 )
 
-MAX_REPORTED_OUTPUT = 8000  # characters of printed output sent back (its start and its end)
-
 
 def main(argv: list[str]) -> None:
     fd, parent = int(argv[1]), int(argv[2])
@@ -48,7 +46,7 @@ def main(argv: list[str]) -> None:
             init = channel.receive(fd, protocol.MAX_INIT)
             run = _Run(fd, init)
         except Exception as exc:
-            channel.send(fd, {"failed": shortened(f"{type(exc).__name__}: {exc}\n{traceback.format_exc()}", 4000)})
+            channel.send(fd, {"failed": shortened(f"{type(exc).__name__}: {exc}\n{traceback.format_exc()}", MAX_ERROR)})
             return
         run.start(parent)
         code = 0
@@ -101,7 +99,7 @@ class _Run:
         self._report(outcome, error)
 
     def _report(self, outcome: Outcome, error: str | None) -> None:
-        output = shortened(self.output.getvalue(), MAX_REPORTED_OUTPUT)
+        output = shortened(self.output.getvalue(), protocol.MAX_REPORTED_OUTPUT)
         error = None if error is None else shortened(error, MAX_ERROR)
         with _timer_held():
             channel.send(self.fd, {"done": {"outcome": outcome.value, "error": error, "output": output}})

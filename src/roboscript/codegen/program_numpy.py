@@ -72,9 +72,7 @@ def _checked(function: Callable, name: str) -> Callable:
 
     @functools.wraps(function)
     def call(*args, **kwargs):
-        for value in (*args, *kwargs.values()):
-            if _names_a_forbidden_dtype(value):
-                raise ObjectArrayError(f"np.{name}(): arrays of objects or records are not available; use numbers")
+        _refuse_dtype_arguments(args, kwargs, f"np.{name}()")
         result = function(*args, **kwargs)
         _refuse_objects(result, name)
         return result
@@ -83,6 +81,12 @@ def _checked(function: Callable, name: str) -> Callable:
         for method in ("reduce", "accumulate", "outer", "reduceat"):
             setattr(call, method, _checked(getattr(function, method), f"{name}.{method}"))
     return call
+
+
+def _refuse_dtype_arguments(args: tuple, kwargs: dict, call: str) -> None:
+    for value in (*args, *kwargs.values()):
+        if _names_a_forbidden_dtype(value):
+            raise ObjectArrayError(f"{call}: arrays of objects or records are not available; use numbers")
 
 
 def _names_a_forbidden_dtype(value: object) -> bool:
@@ -122,9 +126,7 @@ def _refuse_objects(result: object, name: str) -> None:
 def checked_astype(owner: object, *args, **kwargs) -> object:
     """``owner.astype(*args, **kwargs)``; for an array, refusing object and record dtypes."""
     if isinstance(owner, np.ndarray | np.generic):
-        for value in (*args, *kwargs.values()):
-            if _names_a_forbidden_dtype(value):
-                raise ObjectArrayError("astype(): arrays of objects or records are not available; use numbers")
+        _refuse_dtype_arguments(args, kwargs, "astype()")
         result = owner.astype(*args, **kwargs)
         _refuse_objects(result, "ndarray.astype")
         return result

@@ -35,7 +35,6 @@ from roboscript.errors import RoboScriptError
 
 EXIT_GRACE = 5.0  # seconds past the time limit before a program's process that does not report is killed
 STARTUP_LIMIT = 60.0  # seconds a program's process may take to start and confine itself (stretched by load)
-MAX_REPORTED_OUTPUT = 8000  # characters of printed output kept (its start and its end)
 MAX_TOOL_ERROR = 2000  # characters of a tool's error message sent to the program
 JAIL_NAMES = frozenset(("np", "Pose", "Point", "Quaternion"))  # made in the program's process itself
 # What the program's process is told of its surroundings: nothing the user's environment holds (API keys), only
@@ -234,12 +233,10 @@ class _ToolSide:
         error, output = done.get("error"), done.get("output", "")
         if outcome not in REPORTABLE or not (error is None or isinstance(error, str)) or not isinstance(output, str):
             return self._violation("it broke the tool protocol: a report that is not one")
-        output = shortened(_printable(output), MAX_REPORTED_OUTPUT)
+        output = shortened(_printable(output), protocol.MAX_REPORTED_OUTPUT)
         error = None if error is None else shortened(_printable(error), MAX_ERROR)
-        if self.started is not None and time.monotonic() > self.deadline:
+        if outcome is Outcome.TIMEOUT or (self.started is not None and time.monotonic() > self.deadline):
             outcome, error = Outcome.TIMEOUT, self._timeout_error("")
-        elif outcome is Outcome.TIMEOUT:
-            error = self._timeout_error("")
         return self._result(outcome, error, output)
 
     def _kill_for_time(self) -> ExecutionResult:

@@ -17,6 +17,7 @@ from __future__ import annotations
 import contextlib
 
 from roboscript.codegen import wire
+from roboscript.codegen.sandbox import shortened
 from roboscript.errors import FailureError, UsageError, error_message
 
 MAX_ARGUMENTS = 1024**2  # bytes of one tool call (a path of 1000 poses takes about 150 kB)
@@ -24,6 +25,7 @@ MAX_REPLY = 64 * 1024**2  # bytes of one tool's answer
 MAX_INIT = 4 * 1024**2  # bytes of the program and its data
 MAX_DONE = 64 * 1024  # bytes of the final report: the error and the output are shortened before
 MAX_ERROR_ATTRIBUTES = 16 * 1024  # bytes of an exception's data attributes
+MAX_REPORTED_OUTPUT = 8000  # characters of a program's printed output reported (its start and its end)
 MAX_EXCEPTION_NAME = 64
 
 # The builtin exceptions a relayed one may derive from: those a program can name, and their relatives.
@@ -45,9 +47,7 @@ def exception_spec(exc: BaseException, message_limit: int) -> dict:
     builtins = [c for c in cls.__mro__ if c in _RELAYABLE.values()]
     most_specific = [c.__name__ for c in builtins if not any(o is not c and issubclass(o, c) for o in builtins)]
     message = error_message(exc)
-    if len(message) > message_limit:
-        half = message_limit // 2
-        message = f"{message[:half]} [... {len(message) - 2 * half} characters left out ...] {message[-half:]}"
+    message = shortened(message, message_limit)
     attributes = {}
     for key, value in getattr(exc, "__dict__", {}).items():
         if key.isidentifier() and not key.startswith("_"):

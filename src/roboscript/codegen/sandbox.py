@@ -241,7 +241,7 @@ def impose_limits(limits: Limits) -> tuple:
     """
     saved = (resource.getrlimit(resource.RLIMIT_AS), resource.getrlimit(resource.RLIMIT_CPU), sys.getrecursionlimit())
     sys.setrecursionlimit(_stack_depth() + MAX_RECURSION + 100)
-    used = _address_space()
+    used = address_space()
     if used is not None:
         resource.setrlimit(resource.RLIMIT_AS, (used + limits.memory, saved[0][1]))
     usage = resource.getrusage(resource.RUSAGE_SELF)
@@ -266,7 +266,7 @@ def _stack_depth() -> int:
     return depth
 
 
-def _address_space() -> int | None:
+def address_space() -> int | None:
     """Bytes of address space the process maps now (Linux), or None where that cannot be read."""
     try:
         with open("/proc/self/statm") as f:

@@ -13,7 +13,6 @@ from __future__ import annotations
 import base64
 import json
 import math
-from collections.abc import Mapping
 
 import numpy as np
 
@@ -114,7 +113,7 @@ def _to_wire(value: object, depth: int, budget: _Budget) -> object:
         return {TAG: "tuple", "v": [_to_wire(item, depth + 1, budget) for item in value]}
     if isinstance(value, set | frozenset):  # a set of names is a list of them to every tool
         return [_to_wire(item, depth + 1, budget) for item in sorted(value, key=repr)]
-    if isinstance(value, Mapping) and type(value) is dict:
+    if type(value) is dict:
         for key in value:
             if not isinstance(key, str):
                 raise WireError(f"a dict with a key of type {type(key).__name__}; keys must be strings")

@@ -49,16 +49,18 @@ def _writer_class():
     return Writer
 
 
-def _text(value: object, quoted: bool = True) -> str:
+def _text(value: object) -> str:
     """``value`` as a line of the recording, cut at ``MAX_TEXT`` characters (a program's arguments are its own)."""
-    if not quoted:
-        return value if len(value) <= MAX_TEXT else value[:MAX_TEXT] + "..."
     if isinstance(value, np.ndarray):
         value = np.round(value, 4).tolist()
     try:
         text = json.dumps(value, default=str)
     except (TypeError, ValueError):
         text = repr(value)
+    return _cut(text)
+
+
+def _cut(text: str) -> str:
     return text if len(text) <= MAX_TEXT else text[:MAX_TEXT] + "..."
 
 
@@ -205,7 +207,7 @@ class TrialRecording:
             try:
                 answer = function(*args, **kwargs)
             except BaseException as exc:
-                error = _text(f"{type(exc).__name__}: {exc}", quoted=False)
+                error = _cut(f"{type(exc).__name__}: {exc}")
                 self._record_call(name, args, kwargs, started, error=error)
                 raise
             self._record_call(name, args, kwargs, started, answer=answer)
