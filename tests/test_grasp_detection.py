@@ -4,10 +4,10 @@ import math
 
 import numpy as np
 
-from roboscript.api.spots import Footprint, fits, gap, spot_at, spots_in_receptacle
+from roboscript.api.spots import Footprint, fits, gap, spots_in_receptacle
 from roboscript.geometry import Box3D, Transform
 from roboscript.perception.base import ObjectPoints, Receptacle
-from roboscript.perception.grasp_detection import (
+from roboscript.grasping.detection import (
     GraspPreferences,
     GripperGeometry,
     _gripper_reach,
@@ -107,13 +107,6 @@ def test_a_turned_occupant_blocks_only_the_strip_it_covers():
     as_a_box = Footprint.of_box(Box3D(np.array([-0.08, -0.08, 0.8]), np.array([0.08, 0.08, 0.85])))
     assert spots_in_receptacle(plate, np.array([0.025, 0.025]), 0.0, 0.05, [as_a_box], np.array([-1.0, 1.0])) == []
     assert gap(Footprint(np.array([0.3, 0.0]), 0.0, np.array([0.1, 0.1])), banana) > 0.1
-
-
-def test_spot_at_never_sinks_below_the_support():
-    spot = spot_at(np.array([0.1, 0.2, 0.5]), np.array([0.05, 0.05, 0.08]), support_top=0.82)
-    assert math.isclose(spot.center[2], 0.82 + 0.04 + 0.012)
-    high = spot_at(np.array([0.1, 0.2, 1.0]), np.array([0.05, 0.05, 0.08]), support_top=0.82)
-    assert high.center[2] == 1.0
 
 
 def test_each_robots_hand_box_holds_its_hand():

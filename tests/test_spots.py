@@ -5,7 +5,7 @@ import math
 import numpy as np
 
 from roboscript.api.placement import _clear_of
-from roboscript.api.spots import Footprint, gap, gaps, spot_at, spots_in_receptacle
+from roboscript.api.spots import Footprint, PlacementSpot, gap, gaps, spots_in_receptacle
 from roboscript.geometry import Transform, quat_from_yaw
 from roboscript.perception.base import Receptacle
 
@@ -59,9 +59,7 @@ def test_spots_in_a_turned_tray_keep_clear_of_what_is_in_it():
 def test_spots_clear_of_points_are_those_with_no_point_within_the_radius():
     rng = np.random.default_rng(5)
     points = np.column_stack([rng.uniform(0, 1, (3000, 2)), rng.uniform(0.75, 1.4, 3000)])
-    spots = [
-        spot_at(np.array([x, y, 0.9]), np.array([0.05, 0.05, 0.05]), 0.8) for x, y in rng.uniform(-0.1, 1.1, (300, 2))
-    ]
+    spots = [PlacementSpot(np.array([x, y, 0.837]), 0.0, 0.0) for x, y in rng.uniform(-0.1, 1.1, (300, 2))]
     radius, table_top = 0.03, 0.8
     band = points[(points[:, 2] > table_top + 0.005) & (points[:, 2] < table_top + 0.5)][:, :2]
     expected = [s for s in spots if np.min(np.linalg.norm(band - s.center[:2], axis=1)) > radius]

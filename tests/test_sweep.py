@@ -73,7 +73,7 @@ def test_sweep_file_errors_name_the_problem_and_the_choices(tmp_path, fields, me
 
 def test_a_suite_sweep_names_unknown_tasks():
     with pytest.raises(
-        SweepFileError, match=re.escape("no task 'simple_9' in suite 'paper'; did you mean simple_1 or simple_0")
+        SweepFileError, match=re.escape("no task 'simple_9' in suite 'paper'; did you mean simple_1, simple_0")
     ):
         parse_sweep({"sweep": "s", "suite": "paper", "tasks": ["simple_9"]})
 

@@ -164,4 +164,8 @@ def test_a_pear_set_down_beside_a_plate_stands():
         backend.wait(1.0)
         upright = backend.ground_truth.pose("pear").rotation[2, 2]
         assert upright > np.cos(np.radians(15)), np.degrees(np.arccos(upright))
-        assert np.linalg.norm(backend.ground_truth.box("pear").center[:2]) < 0.02
+        # The plate's rim reaches under [0, 0] (its box, 3.6 cm away, less the randomised shift): the pear goes to
+        # the nearest spot clear of it.
+        pear = backend.ground_truth.box("pear")
+        assert np.linalg.norm(pear.center[:2]) < 0.07
+        assert pear.upper[1] < backend.ground_truth.box("white_plate").lower[1] + 0.01

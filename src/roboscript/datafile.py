@@ -3,7 +3,6 @@ the file, the entry and the problem."""
 
 from __future__ import annotations
 
-import difflib
 import json
 import math
 import re
@@ -12,7 +11,7 @@ from typing import Any, ClassVar, NoReturn
 
 import yaml
 
-from roboscript.errors import UsageError
+from roboscript.errors import UsageError, did_you_mean
 
 DATA_SUFFIXES = (".yaml", ".yml", ".json")
 
@@ -41,8 +40,8 @@ class Reader:
             self.fail(f"expected a mapping, got {type(data).__name__} {data!r}")
         unknown = sorted(str(k) for k in set(data) - allowed)
         if unknown:
-            close = difflib.get_close_matches(unknown[0], allowed, n=1)
-            hint = f" (did you mean {close[0]!r}?)" if close else ""
+            close = did_you_mean(unknown[0], allowed, n=1, cutoff=0.6, quoted=True)
+            hint = f" ({close})" if close else ""
             self.fail(f"unknown field {unknown[0]!r}{hint}; valid fields: {', '.join(sorted(allowed))}")
         self.data = data
 

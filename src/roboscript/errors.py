@@ -16,6 +16,9 @@ working.
 
 from __future__ import annotations
 
+import difflib
+from collections.abc import Iterable
+
 
 class RoboScriptError(Exception):
     """Anything RoboScript raises on purpose."""
@@ -34,3 +37,12 @@ def error_message(exc: BaseException) -> str:
     if isinstance(exc, KeyError) and exc.args:
         return str(exc.args[0])
     return str(exc)
+
+
+def did_you_mean(word: object, choices: Iterable[str], n: int = 3, cutoff: float = 0.5, quoted: bool = False) -> str:
+    """``"did you mean a, b?"`` naming the ``n`` choices closest to ``word``, or ``""`` where none is close: the one
+    way every error that refuses a name suggests what was meant."""
+    close = difflib.get_close_matches(str(word), list(choices), n=n, cutoff=cutoff)
+    if not close:
+        return ""
+    return f"did you mean {', '.join(repr(c) if quoted else c for c in close)}?"

@@ -13,18 +13,20 @@ from collections.abc import Collection
 
 import numpy as np
 
+from roboscript.api import supports
+from roboscript.api.nearby import MOVED, NEAREST_BOUND, REPORT_BOUND, distance_moved, free_spots, ring_candidates
 from roboscript.api.spots import (
     MARGIN,
     Footprint,
     PlacementSpot,
     fits,
-    spot_at,
     spots_in_receptacle,
 )
 from roboscript.errors import FailureError
 from roboscript.geometry import Box3D, Transform, quat_from_axis_angle, quat_from_yaw, quat_to_matrix
 from roboscript.names import TABLE, kind_of
-from roboscript.perception.base import Perception, Receptacle, UnknownObjectError
+from roboscript.notices import notice
+from roboscript.perception.base import Perception, Receptacle
 from roboscript.planning.cartesian import cartesian_path
 from roboscript.planning.errors import IKError
 from roboscript.planning.motion import MotionPlanner
@@ -45,6 +47,8 @@ PLACE_LEANS = (20.0, 35.0)
 # Where things may be put down on the table, from the robot's base: in front of it, clear of it, within reach.
 TABLE_REACH = (np.array([0.15, -0.45]), np.array([0.73, 0.45]))
 ASIDE_CLEARANCE = 0.035  # metres kept around a thing put aside on the table, for the fingers that come for it again
+REPEAT_SPACING = 0.05  # metres: a receptacle's spot this near one that failed is not tried
+NEAR_SPACING = 0.015  # the same round a program's position: a spot 2 cm further in may be the one within reach
 # Nearer than this to the base, the Panda lifting a thing straight up from a grasp from above meets its joint limits.
 ASIDE_MIN_REACH = 0.3
 
@@ -77,11 +81,22 @@ class _Search:
     """What one pass over the spots found: a pose (with its configuration) that leaves the full retreat, the one
     that leaves the longest (``room`` metres), how many spots were tried, and why poses were out of reach."""
 
-    leaving: tuple[Transform, np.ndarray] | None = None
-    longest: tuple[Transform, np.ndarray] | None = None
+    leaving: tuple[Transform, np.ndarray, PlacementSpot] | None = None
+    longest: tuple[Transform, np.ndarray, PlacementSpot] | None = None
     room: float = 0.0
     tried: int = 0
     errors: list[str] = dataclasses.field(default_factory=list)
+
+
+@dataclasses.dataclass(frozen=True)
+class PlaceRequest:
+    """Where a held object may go, best first; the words that say where, for errors; the position a program
+    asked for (None: a receptacle's spots); and how near a spot may be to one that failed and still be tried."""
+
+    spots: list[PlacementSpot]
+    where: str
+    target: np.ndarray | None = None
+    spacing: float = REPEAT_SPACING
 
 
 class Placer:
@@ -92,33 +107,80 @@ class Placer:
         self.motion = motion
         self.base_xy = np.asarray(base_xy, dtype=float)
 
-    def spots(
-        self, name: str, receptacle_name: str | None, position: np.ndarray | None
-    ) -> tuple[list[PlacementSpot], str]:
-        """Where the held ``name`` could go: free spots in ``receptacle_name`` (``'table'``: aside on the table),
-        or the one at ``position``; with the words that say where, for errors."""
-        others = [o for o in self.perception.objects() if o not in (name, receptacle_name)]
+    def spots(self, name: str, receptacle_name: str | None, position: np.ndarray | None) -> PlaceRequest:
+        """Where the held ``name`` could go: free spots in or on ``receptacle_name`` (``'table'``: aside on the
+        table), or the nearest free ones to ``position`` (on that receptacle where one is named, else on whatever
+        is under it), nearest first; with the words that say where, for errors."""
         if position is not None:
             target = np.asarray(position, dtype=float)
-            spots, where = [self._spot_at(name, target, others)], f"at {np.round(target, 3).tolist()}"
+            on = "" if receptacle_name is None else f" on {receptacle_name!r}"
+            where = f"at {np.round(target, 3).tolist()}{on} or within {NEAREST_BOUND * 100:.0f} cm of it"
+            return PlaceRequest(self._spots_near(name, receptacle_name, target), where, target, NEAR_SPACING)
+        others = [o for o in self.perception.objects() if o not in (name, receptacle_name)]
+        receptacle = self._receptacle(receptacle_name, name)
+        if receptacle_name == TABLE:
+            spots = self._spots_aside(name, receptacle, others)
+        elif self.perception.receptacle(receptacle.name) is None:
+            spots = self._spots_on_top(name, receptacle)
         else:
-            receptacle = self._receptacle(receptacle_name, name)
-            if receptacle_name == TABLE:
-                spots = self._spots_aside(name, receptacle, others)
-            else:
-                spots = self._spots_in(name, receptacle, others)
-            if not spots:
-                inside = [o for o in others if _within(self.perception.box(o), receptacle)]
-                size = self.perception.box(name).size
-                raise ReceptacleFullError(
-                    f"{receptacle_name!r} has no free spot for {name!r} "
-                    f"({size[0] * 100:.0f} x {size[1] * 100:.0f} cm); "
-                    f"it holds {', '.join(inside) or 'nothing'}"
-                )
-            where = f"in {receptacle_name!r}"
-        return spots, where
+            spots = self._spots_in(name, receptacle, others)
+            surface = supports.whole_surface(self.perception, receptacle)
+            if not spots and surface is not None:
+                spots = self._spots_in(name, surface, others)
+        if not spots:
+            inside = [o for o in others if _within(self.perception.box(o), receptacle)]
+            size = self.perception.box(name).size
+            raise ReceptacleFullError(
+                f"{receptacle_name!r} has no free spot for {name!r} "
+                f"({size[0] * 100:.0f} x {size[1] * 100:.0f} cm); "
+                f"it holds {', '.join(inside) or 'nothing'}"
+            )
+        return PlaceRequest(spots, f"in {receptacle_name!r}")
 
-    def reachable(self, name: str, tcp: Transform, spots: list[PlacementSpot], where: str) -> Transform:
+    def _spots_near(self, name: str, receptacle_name: str | None, target: np.ndarray) -> list[PlacementSpot]:
+        """Free spots for the held ``name`` at ``target`` or round it within :data:`NEAREST_BOUND`, nearest
+        first; a PlacementError that says how far the nearest free one is where there is none."""
+        _, yaw, half = self.perception.footprint(name)
+        height = self.perception.box(name).size[2]
+        if receptacle_name is None:
+            support = supports.support_under(self.perception, name, target[:2], np.asarray(half))
+        else:
+            # On the table at a position: anywhere on its top (reach is for the motion planner to judge), not only
+            # where things are put aside.
+            named = supports.table_top(self.perception) if receptacle_name == TABLE else None
+            support = supports.support_named(self.perception, name, named or self._receptacle(receptacle_name, name))
+        spots = free_spots(ring_candidates(target[:2], NEAREST_BOUND, self.base_xy), half, yaw, height, support)
+        # Put down where the arm can take it up again: nearer the base than ASIDE_MIN_REACH, a grasp from above
+        # meets the arm's joint limits (a swap's "20 cm towards the robot" from a thing 43 cm out).
+        pickable = [s for s in spots if np.linalg.norm(s.center[:2] - self.base_xy) >= ASIDE_MIN_REACH]
+        if pickable or spots:
+            return pickable or spots
+        farther = free_spots(ring_candidates(target[:2], REPORT_BOUND, self.base_xy), half, yaw, height, support)
+        where = f"on {support.region.name!r}"
+        nearest = (
+            f"the nearest free spot {where} is {distance_moved(farther[0], target) * 100:.0f} cm away, at "
+            f"{np.round(farther[0].center[:2], 3).tolist()}"
+            if farther
+            else f"no spot {where} within {REPORT_BOUND * 100:.0f} cm is free"
+        )
+        raise PlacementError(
+            f"{np.round(target[:2], 3).tolist()} has no room for {name!r} within {NEAREST_BOUND * 100:.0f} cm "
+            f"(something stands there, or it is off {support.region.name!r}): {nearest}"
+        )
+
+    def _spots_on_top(self, name: str, top: Receptacle) -> list[PlacementSpot]:
+        """Spots on an object's flat top (stacking): its middle first, the held object squared to it."""
+        _, yaw, half = self.perception.footprint(name)
+        height = self.perception.box(name).size[2]
+        support = supports.support_named(self.perception, name, top)
+        middle = top.frame.position[:2]
+        frame_yaw = math.atan2(top.frame.rotation[1, 0], top.frame.rotation[0, 0])
+        spots = free_spots(ring_candidates(middle, 0.02, self.base_xy), half, yaw, height, support)
+        # Squared to the top it stands on: turned by the difference of yaws (any quarter turn).
+        square = math.remainder(frame_yaw - yaw, math.pi / 2)
+        return [dataclasses.replace(s, yaw=square) for s in spots]
+
+    def reachable(self, name: str, tcp: Transform, request: PlaceRequest) -> tuple[Transform, PlacementSpot]:
         """The gripper pose, from the hand at ``tcp`` holding ``name``, for the first of ``spots`` the arm can
         reach and leave; the configuration chosen becomes the motion's goal for that pose
         (:meth:`MotionPlanner.prefer_goal`).
@@ -134,18 +196,19 @@ class Placer:
         box = self.perception.box(name)
         pivot = np.array([footprint_center[0], footprint_center[1], box.center[2]])
         carried = _Carried(tcp, pivot, box.corners() - pivot)
-        upright = self._search(carried, spots, PLACE_IK_QUICK, (0.0,))
+        spots, where, spacing = request.spots, request.where, request.spacing
+        upright = self._search(carried, spots, PLACE_IK_QUICK, (0.0,), spacing)
         best = upright.leaving
         leaning: _Search | None = None
         if best is None:
             # A pose the hand cannot back out of straight up would leave a program's own approach from above
             # (or its retreat) no room: leaning out from under what stands over the spot is better.
-            leaning = self._search(carried, spots, PLACE_IK_QUICK, PLACE_LEANS)
+            leaning = self._search(carried, spots, PLACE_IK_QUICK, PLACE_LEANS, spacing)
             best = leaning.leaving or upright.longest
         if best is None:
             # The quick screen may miss the one IK branch that clears the furniture (a mug going into a drawer
             # pulled 20 cm, at the edge of the Panda's reach): the spots are searched again, widely.
-            best = self._search(carried, spots, PLACE_IK_WIDE, (0.0,)).longest
+            best = self._search(carried, spots, PLACE_IK_WIDE, (0.0,), spacing).longest
         if best is None and leaning is not None:
             best = leaning.longest
         if best is None:
@@ -153,8 +216,21 @@ class Placer:
                 f"no reachable, collision-free pose puts {name!r} {where} ({upright.tried} spots tried): "
                 f"{upright.errors[0] if upright.errors else 'no spot'}"
             )
-        self.motion.prefer_goal(*best)
-        return best[0]
+        self.motion.prefer_goal(best[0], best[1])
+        return best[0], best[2]
+
+    def place_pose(self, name: str, receptacle: str | None, target: np.ndarray | None, tcp: Transform) -> Transform:
+        """The gripper pose, from the hand at ``tcp``, that sets the held ``name`` down in or on ``receptacle``, at
+        ``target`` or both (:meth:`spots`, :meth:`reachable`); a notice says where a position was moved to."""
+        request = self.spots(name, receptacle, target)
+        pose, spot = self.reachable(name, tcp, request)
+        if request.target is not None and distance_moved(spot, request.target) > MOVED:
+            notice(
+                f"parse_place_pose: {np.round(request.target[:2], 3).tolist()} is taken, out of reach or off its "
+                f"support; putting {name!r} {distance_moved(spot, request.target) * 100:.1f} cm away, at "
+                f"{np.round(spot.center[:2], 3).tolist()}"
+            )
+        return pose
 
     def raised_for_release(self, target: Transform, error: IKError, held: Collection[str]) -> Transform | None:
         """Where the TCP reaches ``target`` but only what it holds collides (an object that turned or slid down
@@ -175,14 +251,6 @@ class Placer:
                 continue
             return raised
         return None
-
-    def _spot_at(self, name: str, target: np.ndarray, others: list[str]) -> PlacementSpot:
-        """The held object at ``target``, resting on whatever is under it there (the table at least)."""
-        size = self.perception.box(name).size
-        below = [self.perception.box(o) for o in others]
-        table_top = float(self.perception.box(TABLE).upper[2])
-        support = max([table_top] + [b.upper[2] for b in below if _bears(b, target[:2], size[:2] / 2)])
-        return spot_at(target, size, support)
 
     def _spots_aside(self, name: str, table: Receptacle, others: list[str]) -> list[PlacementSpot]:
         """Spots on the table for putting the held object aside: clear of objects, furniture and whatever the
@@ -226,29 +294,24 @@ class Placer:
             spots = [dataclasses.replace(s, open_side=out) for s in spots]
         return spots
 
-    def _holds_things(self, name: str) -> bool:
-        """Whether ``name`` is a receptacle, for an error message: False where perception cannot tell."""
-        try:
-            return self.perception.receptacle(name) is not None
-        except (UnknownObjectError, ValueError):
-            return False
-
     def _receptacle(self, receptacle_name: str, held: str) -> Receptacle:
+        """What ``receptacle_name`` holds things in or on: its interior, or its flat top (stacking)."""
         if receptacle_name == TABLE:
             return self._table_region()
         name = self.perception.require(receptacle_name)
         if name == held:
             raise ValueError(f"cannot place {held!r} into itself")
-        receptacle = self.perception.receptacle(name)
+        receptacle = supports.holds(self.perception, name)
         if receptacle is None:
-            containers = [n for n in self.perception.names() if self._holds_things(n)]
+            holding = [n for n in self.perception.names() if n != held and supports.holds(self.perception, n)]
             raise ValueError(
-                f"{name!r} cannot hold things; receptacles here: {', '.join([*containers, TABLE])}; or pass position="
+                f"{name!r} cannot hold things: it has no interior and no flat top; receptacles here: "
+                f"{', '.join([*holding, TABLE])}; or pass position=[x, y, z]"
             )
-        if receptacle.upper[0] - receptacle.lower[0] < 0.04 and kind_of(name) == "drawer":
+        if supports.is_closed_drawer(receptacle):
             raise PlacementError(f"{name!r} is closed: open it before placing anything into it")
         _, _, half = self.perception.footprint(held)
-        if not fits(receptacle, half):
+        if self.perception.receptacle(name) is not None and not fits(receptacle, half):
             inner = receptacle.upper - receptacle.lower
             raise PlacementError(
                 f"{held!r} ({half[0] * 200:.0f} x {half[1] * 200:.0f} cm) does not fit into {name!r}, "
@@ -281,7 +344,12 @@ class Placer:
         return fronts[int(np.argmin(np.linalg.norm(fronts - self.base_xy, axis=1)))]
 
     def _search(
-        self, carried: _Carried, spots: list[PlacementSpot], search: tuple[int, int], leans: tuple[float, ...]
+        self,
+        carried: _Carried,
+        spots: list[PlacementSpot],
+        search: tuple[int, int],
+        leans: tuple[float, ...],
+        spacing: float = REPEAT_SPACING,
     ) -> _Search:
         """Spots in order (skipping near-repeats of spots that failed), for a collision-free IK from which the
         hand can also retreat straight up (:data:`PLACE_RETREAT`), as a place's retreat would: a hand put down
@@ -300,7 +368,7 @@ class Placer:
         for spot in spots:
             if budget <= 0 or done:
                 break
-            if any(np.linalg.norm(spot.center - t.center) < 0.05 and _same_turn(spot.yaw, t.yaw) for t in tried):
+            if any(np.linalg.norm(spot.center - t.center) < spacing and _same_turn(spot.yaw, t.yaw) for t in tried):
                 continue
             tried.append(spot)
             found.tried += 1
@@ -310,18 +378,18 @@ class Placer:
                 options = [(self._retreat_room(pose, g), pose, g) for pose, goals in reached for g in goals]
                 for room, pose, g in options:
                     if found.longest is None or room > found.room + 1e-3:
-                        found.room, found.longest = room, (pose, g)
+                        found.room, found.longest = room, (pose, g, spot)
                 if search == PLACE_IK_WIDE:
                     done = bool(options)
                 else:
-                    leaving = [(pose, g) for room, pose, g in options if room >= PLACE_RETREAT - 1e-3]
+                    leaving = [(pose, g, spot) for room, pose, g in options if room >= PLACE_RETREAT - 1e-3]
                     leaving.sort(key=lambda c: float(np.sum((c[1] - q) ** 2)))
-                    for pose, goal in leaving[:screens]:
+                    for pose, goal, _ in leaving[:screens]:
                         screens -= 1
                         # As a grasp's pre-grasp is screened: a configuration IK reaches may be walled in (a UR5e
                         # branch turned back over its shoulder beside the basket), and no path reaches it.
                         if self.motion.connects(q, goal):
-                            found.leaving = (pose, goal)
+                            found.leaving = (pose, goal, spot)
                             return found
                     # Leaving the full retreat though no path was found to it in one planner run: the motion's
                     # own retries may find one.
@@ -401,16 +469,6 @@ def _clear_of(spots: list, points: np.ndarray, radius: float, table_top: float) 
 def _same_turn(a: float, b: float) -> bool:
     """Whether two yaw turns face the same way, or opposite ways (a spot tried both ways round already)."""
     return abs(math.remainder(a - b, math.pi)) < 0.1
-
-
-def _bears(box: Box3D, center: np.ndarray, half: np.ndarray) -> bool:
-    """Whether what ``box`` bounds is under a footprint at ``center`` (half-extents ``half``): the footprint's
-    middle is over it, or half the footprint is. A sliver over a round plate's box corner is beside the plate,
-    not on it: counting it would release the object from the plate's height, a drop that topples tall things."""
-    if np.all(np.abs(box.center[:2] - center) <= box.size[:2] / 2):
-        return True
-    overlap = np.clip(np.minimum(box.upper[:2], center + half) - np.maximum(box.lower[:2], center - half), 0, None)
-    return bool(np.prod(overlap) >= 0.5 * np.prod(2 * half))
 
 
 def _within(box: Box3D, receptacle: Receptacle) -> bool:

@@ -7,21 +7,12 @@ easy to use from this project's code. Quaternions are (x, y, z, w), as in ROS.
 
 from __future__ import annotations
 
-import math
 from collections.abc import Sequence
 
 import numpy as np
 
+from roboscript.api.arguments import ArgumentTypeError, real, within_world
 from roboscript.geometry import Transform, matrix_to_quat, quat_to_matrix
-
-
-def _real(value: object, field: str) -> float:
-    if isinstance(value, bool) or not isinstance(value, (int, float, np.integer, np.floating)):
-        raise TypeError(f"{field} must be a number, got {type(value).__name__} {value!r}")
-    value = float(value)
-    if not math.isfinite(value):
-        raise ValueError(f"{field} must be finite, got {value}")
-    return value
 
 
 class _Sealed(type):
@@ -43,9 +34,9 @@ class Point(metaclass=_Sealed):
     def __init__(self, x: float = 0.0, y: float = 0.0, z: float = 0.0):
         self.x, self.y, self.z = x, y, z
 
-    x = property(lambda self: self._x, lambda self, v: setattr(self, "_x", _real(v, "position.x")))
-    y = property(lambda self: self._y, lambda self, v: setattr(self, "_y", _real(v, "position.y")))
-    z = property(lambda self: self._z, lambda self, v: setattr(self, "_z", _real(v, "position.z")))
+    x = property(lambda self: self._x, lambda self, v: setattr(self, "_x", real(v, "position.x")))
+    y = property(lambda self: self._y, lambda self, v: setattr(self, "_y", real(v, "position.y")))
+    z = property(lambda self: self._z, lambda self, v: setattr(self, "_z", real(v, "position.z")))
 
     def to_numpy(self) -> np.ndarray:
         return np.array([self._x, self._y, self._z])
@@ -68,10 +59,10 @@ class Quaternion(metaclass=_Sealed):
     def __init__(self, x: float = 0.0, y: float = 0.0, z: float = 0.0, w: float = 1.0):
         self.x, self.y, self.z, self.w = x, y, z, w
 
-    x = property(lambda self: self._x, lambda self, v: setattr(self, "_x", _real(v, "orientation.x")))
-    y = property(lambda self: self._y, lambda self, v: setattr(self, "_y", _real(v, "orientation.y")))
-    z = property(lambda self: self._z, lambda self, v: setattr(self, "_z", _real(v, "orientation.z")))
-    w = property(lambda self: self._w, lambda self, v: setattr(self, "_w", _real(v, "orientation.w")))
+    x = property(lambda self: self._x, lambda self, v: setattr(self, "_x", real(v, "orientation.x")))
+    y = property(lambda self: self._y, lambda self, v: setattr(self, "_y", real(v, "orientation.y")))
+    z = property(lambda self: self._z, lambda self, v: setattr(self, "_z", real(v, "orientation.z")))
+    w = property(lambda self: self._w, lambda self, v: setattr(self, "_w", real(v, "orientation.w")))
 
     def to_numpy(self) -> np.ndarray:
         return np.array([self._x, self._y, self._z, self._w])
@@ -186,3 +177,13 @@ def _vector(value: object, n: int, field: str) -> np.ndarray:
     if not np.all(np.isfinite(array)):
         raise ValueError(f"{field} must be finite, got {array.tolist()}")
     return array
+
+
+def pose_argument(value: object, field: str) -> Transform:
+    """A tool's Pose argument as a transform, within reach of bounded work (:func:`within_world`)."""
+    if not isinstance(value, Pose):
+        raise ArgumentTypeError(
+            f"{field} must be a Pose (e.g. from get_gripper_pose() or a parse_* tool), got {type(value).__name__}"
+        )
+    within_world(value.position_array(), field)
+    return value.to_transform()

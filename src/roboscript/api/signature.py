@@ -6,7 +6,7 @@ import functools
 import inspect
 from collections.abc import Callable
 
-from roboscript.errors import UsageError
+from roboscript.errors import UsageError, did_you_mean
 
 # Keyword names that programs written for the original system use, and the names they stand for here.
 ALIASES: dict[str, str] = {"obj_name": "object_name", "direction": "axis", "category_list": "object_list"}
@@ -28,7 +28,11 @@ def tool(function: Callable) -> Callable:
         for key, value in kwargs.items():
             target = ALIASES.get(key, key) if key not in signature.parameters else key
             if target not in signature.parameters or target == "self":
-                raise ToolCallError(f"{function.__name__}() got an unexpected keyword argument {key!r}; use {usage}")
+                close = did_you_mean(key, [p.name for p in params], n=1, cutoff=0.6)
+                hint = f" ({close})" if close else ""
+                raise ToolCallError(
+                    f"{function.__name__}() got an unexpected keyword argument {key!r}{hint}; use {usage}"
+                )
             if target in renamed:
                 raise ToolCallError(
                     f"{function.__name__}() got {target!r} twice (as {key!r} and {target!r}); use {usage}"

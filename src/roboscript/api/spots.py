@@ -136,10 +136,3 @@ def fits(receptacle: Receptacle, half_xy: np.ndarray) -> bool:
     inner = receptacle.upper[:2] - receptacle.lower[:2] - 2 * MARGIN
     size = 2 * np.asarray(half_xy)
     return bool(np.all(size <= inner + 1e-9) or np.all(size[::-1] <= inner + 1e-9))
-
-
-def spot_at(position: np.ndarray, object_size: np.ndarray, support_top: float) -> PlacementSpot:
-    """The object centred at ``position``; never lower than resting on the support beneath it."""
-    rest = support_top + object_size[2] / 2 + DROP
-    center = np.array([position[0], position[1], max(float(position[2]), rest)])
-    return PlacementSpot(center, 0.0, 0.0, (0.0, math.pi / 2, -math.pi / 2, math.pi))

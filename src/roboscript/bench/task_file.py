@@ -26,7 +26,6 @@ lacks, a check on an object that is not there or in something that holds nothing
 
 from __future__ import annotations
 
-import difflib
 import re
 from dataclasses import dataclass
 from pathlib import Path
@@ -35,6 +34,7 @@ from typing import Any
 from roboscript.bench.checks import Check
 from roboscript.codegen.prompt import task_query
 from roboscript.datafile import DataFileError, Reader, names_a_file, read_data_file
+from roboscript.errors import did_you_mean
 from roboscript.names import kind_of
 from roboscript.sim.ground_truth import GroundTruth
 from roboscript.sim.world_catalog import load_world
@@ -43,7 +43,7 @@ from roboscript.sim.world_file import TABLE_NAME, WorldFileError, WorldSpec
 CHECK_KINDS = ("in", "on", "near", "at", "joint")
 _QUERY = re.compile(r"^\s*#?\s*objects\s*=\s*\[(?P<names>[^\]]*)\]\s*;\s*#\s?(?P<instruction>.*)$", re.DOTALL)
 _ID = re.compile(r"^[A-Za-z0-9_.-]+$")
-_SUITE_FIELDS = {"suite", "description", "source", "tasks"}
+_SUITE_FIELDS = {"suite", "version", "description", "source", "tasks"}
 _TASK_FIELDS = {"id", "label", "world", "query", "checks"}
 
 
@@ -159,8 +159,8 @@ def _entry(source: str, entry: str, data: Any, allowed: set[str]) -> Reader:
 def _name_check(entry: Reader, name: object, valid: list[str], kinds: str) -> str:
     """``name`` if it is one of ``valid`` (the world's ``kinds``), else the entry fails naming the valid ones."""
     if not isinstance(name, str) or name not in valid:
-        close = difflib.get_close_matches(str(name), valid, n=3, cutoff=0.5)
-        hint = f"did you mean {', '.join(close)}? " if close else ""
+        close = did_you_mean(name, valid)
+        hint = f"{close} " if close else ""
         entry.fail(f"{name!r} is not one of the world's {kinds}; {hint}valid: {', '.join(valid) or 'none'}")
     return name
 
@@ -283,6 +283,9 @@ def parse_suite(data: Any, source: str = "<memory>", base: Path | None = None) -
     suite = entry.string("suite")
     for optional in ("description", "source"):
         entry.text(optional)  # optional, but text where it is given
+    version = data.get("version", 1)
+    if isinstance(version, bool) or not isinstance(version, int) or version < 1:
+        entry.fail(f"field 'version' must be a whole number from 1, got {version!r}")
     if not _ID.match(suite):
         entry.fail(f"suite {suite!r} may hold letters, digits, '_', '.' and '-' only")
     items = data.get("tasks")

@@ -7,7 +7,6 @@ worlds with other objects and shortened instructions. The format is :mod:`robosc
 
 from __future__ import annotations
 
-import difflib
 from functools import lru_cache
 from importlib import resources
 from pathlib import Path
@@ -15,6 +14,7 @@ from pathlib import Path
 from roboscript.bench.task_file import Task, TaskFileError, load_suite_file
 from roboscript.codegen.prompt import task_query
 from roboscript.datafile import names_a_file
+from roboscript.errors import did_you_mean
 from roboscript.sim.world_catalog import load_world
 
 DEFAULT_SUITE = "paper"
@@ -37,8 +37,8 @@ def suite_path(suite: str) -> Path:
         return Path(suite).resolve()
     path = _suite_dir() / f"{suite}.yaml"
     if not path.is_file():
-        close = difflib.get_close_matches(suite, suite_names(), n=2, cutoff=0.4)
-        hint = f"did you mean {' or '.join(close)}? " if close else ""
+        close = did_you_mean(suite, suite_names(), n=2, cutoff=0.4)
+        hint = f"{close} " if close else ""
         raise KeyError(f"unknown suite {suite!r}; {hint}suites: {', '.join(suite_names())}, or a suite file's path")
     return path
 
@@ -62,8 +62,8 @@ def get_task(task_id: str, suite: str = DEFAULT_SUITE) -> Task:
     """Task ``task_id`` of ``suite``; ``KeyError`` with the closest ids and every id of the suite."""
     tasks = load_suite(suite)
     if task_id not in tasks:
-        close = difflib.get_close_matches(task_id, tasks, n=2)
-        hint = f"; did you mean {' or '.join(close)}?" if close else ""
+        close = did_you_mean(task_id, tasks, n=2, cutoff=0.6)
+        hint = f"; {close}" if close else ""
         raise KeyError(f"no task {task_id!r} in suite {suite!r}{hint} Tasks: {', '.join(tasks)}")
     return tasks[task_id]
 

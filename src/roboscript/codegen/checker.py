@@ -5,7 +5,6 @@ from __future__ import annotations
 
 import ast
 import builtins
-import difflib
 import inspect
 from collections.abc import Callable, Mapping
 from dataclasses import dataclass
@@ -14,6 +13,7 @@ from roboscript.api.signature import ALIASES
 from roboscript.codegen.guard import find_violations
 from roboscript.codegen.outcomes import Outcome
 from roboscript.codegen.sandbox import MAX_PROGRAM, PROGRAM_BUILTINS, parse_program, safe_numpy, shortened
+from roboscript.errors import did_you_mean
 
 
 @dataclass(frozen=True)
@@ -205,8 +205,8 @@ def _unknown(name: str, known: set[str]) -> str:
 
 
 def _closest(name: str, candidates) -> str:
-    close = difflib.get_close_matches(name, list(candidates), n=3, cutoff=0.6)
-    return f" (did you mean {', '.join(close)}?)" if close else ""
+    close = did_you_mean(name, candidates, cutoff=0.6)
+    return f" ({close})" if close else ""
 
 
 Checker = Callable[[str], list[Finding]]

@@ -16,10 +16,12 @@ RULES = """You write Python programs that make a robot arm with a parallel gripp
 Rules:
 - Start with comments: the task, then a numbered plan, step by step. Then the code.
 - Use only the tools below, `np` (numpy) and `Pose`. Do not import anything; there is no file or network access.
-- Refer to objects by the names in the query; parts of furniture are named like `cabinet.drawer_1` and
-  `cabinet.handle_1` (the handle of drawer 1). The table and the furniture are objects too (`get_3d_bbox('table')`,
-  `parse_place_pose(name, 'table')`), and `get_object_name_list()` lists them: leave out `table`, `cabinet` and
-  its parts when you mean the things on the table.
+- Refer to objects by the names in the query. Parts of furniture are numbered from the top down:
+  `cabinet.drawer_0` is the top drawer, `cabinet.door_0` the top door, and `cabinet.handle_k` is the handle on the
+  k-th row from the top, drawers and doors counted together (in a cabinet of two drawers above a door,
+  `cabinet.handle_1` is the second drawer's and `cabinet.handle_2` the door's). The table and the furniture are
+  objects too (`get_3d_bbox('table')`, `parse_place_pose(name, 'table')`), and `get_object_name_list()` lists
+  them: leave out `table`, `cabinet` and its parts when you mean the things on the table.
 - Positions are in metres in the robot's frame: x forward, y left, z up.
 - To pick something: open_gripper(), grasp(a grasp pose), close_gripper(), attach_object(name), then lift it.
 - To put something down: move_to_pose(a place pose), open_gripper(), detach_object(name), then move up.

@@ -17,7 +17,8 @@ import numpy as np
 
 from roboscript.generate.describe import ORDINALS
 from roboscript.generate.programs import OPEN_DRAWER, SPOT_BESIDE, Program, move_into, move_to, words
-from roboscript.generate.scene import DRAWER_HEIGHT_LIMIT, KINDS, Scene, fits, in_or_on, kind_of_type, room_for
+from roboscript.generate.scene import DRAWER_HEIGHT_LIMIT, KINDS, Scene, fits, in_or_on, room_for
+from roboscript.objects.reading import said_colour, said_kind
 
 NEAR_GAP = 0.03  # how far beside its target the oracle puts a thing (the `near` check allows 8 cm)
 
@@ -153,25 +154,53 @@ def swap(scene: Scene, rng: np.random.Generator) -> TemplateTask | None:
     return TemplateTask("swap", instruction, checks, program.text())
 
 
-def _groups(scene: Scene, by: str) -> dict[str, list[str]]:
-    """Things on the table by colour or by kind."""
+# The kinds by library category that sorting enumerated its options with when the packaged generated suite was
+# made: enumerating them so still gives that suite's tasks from its worlds and seed (the checks follow the words).
+_LIBRARY_KINDS: dict[str, frozenset[str]] = {
+    "fruit": frozenset({"apple", "orange", "lemon", "lime", "plum", "peach", "strawberry", "banana", "pear"}),
+    "ball": frozenset({"tennis ball", "baseball", "golf ball"}),
+    "block": frozenset({"block", "cube"}),
+    "box": frozenset({"box"}),
+    "toy": frozenset({"toy bus", "toy car"}),
+    "drinkware": frozenset({"cup", "mug"}),
+    "bottle": frozenset({"bottle", "can"}),
+}
+
+
+def _library_groups(scene: Scene, by: str) -> dict[str, list[str]]:
+    """Things on the table by the colour they are drawn in or their library category's kind: how sorting tasks
+    are drawn (see :data:`_LIBRARY_KINDS`), not what they check."""
     groups: dict[str, list[str]] = {}
     for thing in scene.on_table:
-        key = scene.type(thing).color if by == "colour" else kind_of_type(scene.type(thing))
+        kind = scene.type(thing)
+        key = (
+            kind.appearance
+            if by == "colour"
+            else next((k for k, c in _LIBRARY_KINDS.items() if kind.category in c), None)
+        )
         if key is not None:
             groups.setdefault(key, []).append(thing)
     return groups
 
 
+def _read_group(scene: Scene, by: str, key: str, receptacle: str) -> list[str]:
+    """What "the <key> objects" (or "the <kind>") are to a reader of the instruction: every pickable thing whose
+    name says that colour or kind (:mod:`roboscript.objects.reading`), on the table or on another receptacle, and
+    not already in or on ``receptacle``."""
+    say = said_colour if by == "colour" else said_kind
+    there = set(scene.holding(receptacle))
+    return [n for n, o in scene.placements.items() if o.type.pickable and n not in there and say(n) == key]
+
+
 def sort(scene: Scene, rng: np.random.Generator) -> TemplateTask | None:
     """Sort things by colour (each onto the receptacle of its colour) or by kind (one kind into each receptacle)."""
     options = []
-    colours = _groups(scene, "colour")
+    colours = _library_groups(scene, "colour")
     for receptacle in scene.receptacles:
-        group = colours.get(scene.type(receptacle).color, [])
+        group = colours.get(scene.type(receptacle).appearance, [])
         if group and not scene.holding(receptacle) and room_for([scene.type(t) for t in group], scene.type(receptacle)):
-            options.append(("colour", scene.type(receptacle).color, group, receptacle))
-    kinds = _groups(scene, "kind")
+            options.append(("colour", scene.type(receptacle).appearance, group, receptacle))
+    kinds = _library_groups(scene, "kind")
     for kind, group in kinds.items():
         for receptacle in scene.receptacles:
             empty = not scene.holding(receptacle)
@@ -182,15 +211,20 @@ def sort(scene: Scene, rng: np.random.Generator) -> TemplateTask | None:
     by, key, group, receptacle = _one(rng, options)
     # A second group sorted into another receptacle, where the world has one.
     seconds = [o for o in options if o[0] == by and o[1] != key and o[3] != receptacle]
-    chosen = [(key, group, receptacle)] + ([_one(rng, seconds)[1:]] if seconds else [])
+    chosen = [(key, receptacle)] + ([_one(rng, seconds)[1::2]] if seconds else [])
+    read = [(key, _read_group(scene, by, key, receptacle), receptacle) for key, receptacle in chosen]
+    if not all(group for _, group, _ in read) or not all(
+        room_for([scene.type(t) for t in group], scene.type(r)) for _, group, r in read
+    ):
+        return None  # the words select nothing, or more than fits: no fair task here
     said = []
-    for key, _, receptacle in chosen:
-        what = f"the {words(key)} objects" if by == "colour" else f"the {KINDS[key][0]}"
+    for key, _, receptacle in read:
+        what = f"the {words(key)} objects" if by == "colour" else f"the {KINDS[key]}"
         said.append(f"{what} {'on' if scene.type(receptacle).shape == 'flat' else 'into'} the {words(receptacle)}")
     instruction = f"sort the objects on the table by {by}: put " + " and ".join(said)
     program = Program(instruction)
     checks = []
-    for _, group, receptacle in chosen:
+    for _, group, receptacle in read:
         for thing in group:
             move_into(program, thing, receptacle, onto=scene.type(receptacle).shape == "flat")
             checks.append(_put_into(scene, thing, receptacle))

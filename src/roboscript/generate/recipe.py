@@ -7,13 +7,13 @@ problem is a :class:`RecipeFileError` naming the file, the entry and what is wro
 
 from __future__ import annotations
 
-import difflib
 from dataclasses import dataclass
 from importlib import resources
 from pathlib import Path
 from typing import Any
 
 from roboscript.datafile import DataFileError, Reader, names_a_file, read_data_file
+from roboscript.errors import did_you_mean
 from roboscript.objects import object_types
 from roboscript.sim.world_file import VALID_ROBOTS
 
@@ -109,8 +109,8 @@ def _types(entry: Reader, names: Any, what: str) -> tuple[str, ...]:
         entry.fail(f"{what} must be a non-empty list of object types (see `roboscript objects`), got {names!r}")
     for name in names:
         if name not in library:
-            close = difflib.get_close_matches(str(name), library, n=3, cutoff=0.5)
-            hint = f"did you mean {', '.join(close)}? " if close else ""
+            close = did_you_mean(name, library)
+            hint = f"{close} " if close else ""
             entry.fail(f"{what}: unknown object type {name!r}; {hint}see `roboscript objects` for the list")
     return tuple(names)
 

@@ -13,26 +13,18 @@ from roboscript.names import kind_of
 from roboscript.objects import ObjectType
 from roboscript.sim.world_file import ObjectPlacement, WorldSpec
 
-# Kinds that sorting by kind speaks of, by library category; the plural is what an instruction says.
-KINDS: dict[str, tuple[str, frozenset[str]]] = {
-    "fruit": (
-        "fruits",
-        frozenset({"apple", "orange", "lemon", "lime", "plum", "peach", "strawberry", "banana", "pear"}),
-    ),
-    "ball": ("balls", frozenset({"tennis ball", "baseball", "golf ball"})),
-    "block": ("blocks", frozenset({"block", "cube"})),
-    "box": ("boxes", frozenset({"box"})),
-    "toy": ("toy vehicles", frozenset({"toy bus", "toy car"})),
-    "drinkware": ("cups and mugs", frozenset({"cup", "mug"})),
-    "bottle": ("bottles and cans", frozenset({"bottle", "can"})),
+# What an instruction calls each kind of thing sorting by kind speaks of (the kinds of ``objects/reading.yaml``).
+KINDS: dict[str, str] = {
+    "fruit": "fruits",
+    "ball": "balls",
+    "block": "blocks",
+    "box": "boxes",
+    "toy": "toy vehicles",
+    "drinkware": "cups and mugs",
+    "bottle": "bottles and cans",
 }
 DRAWER_HEIGHT_LIMIT = 0.1  # taller things stand out of a drawer (the object-shape study: 50-79% inside)
 DRAWERS_USED = 2  # the top two: the lower ones are low for a hand coming from above
-
-
-def kind_of_type(t: ObjectType) -> str | None:
-    """The sorting kind of a library type (``fruit`` for an apple), None if it has none."""
-    return next((k for k, (_, cats) in KINDS.items() if t.category in cats), None)
 
 
 def in_or_on(thing: ObjectType, receptacle: ObjectType) -> str:

@@ -115,11 +115,12 @@ def _draw_receptacles(recipe: Recipe, rng: np.random.Generator) -> list[str]:
 def _draw_objects(recipe: Recipe, rng: np.random.Generator, receptacles: list[str]) -> list[str]:
     low, high = recipe.object_count
     count = int(rng.integers(low, high + 1))
-    colours = {get_object_type(r).color for r in receptacles}
+    # Matched by the colour things are drawn in, as the packaged generated suite's worlds were.
+    colours = {get_object_type(r).appearance for r in receptacles}
     pool = list(recipe.object_types)
     chosen: list[str] = []
     while pool and len(chosen) < count:
-        matching = [p for p in pool if get_object_type(p).color in colours]
+        matching = [p for p in pool if get_object_type(p).appearance in colours]
         source = matching if matching and rng.random() < recipe.match_colour else pool
         pick = source[int(rng.integers(len(source)))]
         pool.remove(pick)

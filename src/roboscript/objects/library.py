@@ -11,6 +11,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
+from roboscript.errors import did_you_mean
 from roboscript.objects import designs as shapes
 from roboscript.objects.designs import COLORS
 from roboscript.objects.shapes import RGBA, Part, parts_bounds
@@ -41,6 +42,8 @@ class ObjectType:
     round: bool = False  # rolls: given rolling friction so it settles like a real, not quite round, fruit
     # The shape class the object-shape study groups by (SHAPES); set for every type.
     shape: str = ""
+    # The colour it is drawn in where that differs from the one its name says (a green apple of a lighter green).
+    shade: str = ""
     bounds: tuple[np.ndarray, np.ndarray] = field(init=False, repr=False, compare=False)
 
     def __post_init__(self) -> None:
@@ -55,8 +58,13 @@ class ObjectType:
         return self.category not in RECEPTACLE_CATEGORIES
 
     @property
+    def appearance(self) -> str:
+        """The colour it is drawn in (a key of COLORS)."""
+        return self.shade or self.color
+
+    @property
     def rgba(self) -> RGBA:
-        return COLORS[self.color]
+        return COLORS[self.appearance]
 
     @property
     def size(self) -> np.ndarray:
@@ -86,7 +94,7 @@ def _register(obj: ObjectType) -> ObjectType:
 
 for _name, _category, _color, _parts, _density, _desc in [
     ("apple", "apple", "red", shapes.sphere(0.038), 850, "a red apple, 7.6 cm"),
-    ("green_apple", "apple", "light_green", shapes.sphere(0.036), 850, "a green apple, 7.2 cm"),
+    ("green_apple", "apple", "green", shapes.sphere(0.036), 850, "a green apple, 7.2 cm"),
     ("orange", "orange", "orange", shapes.sphere(0.036), 900, "an orange, 7.2 cm"),
     ("lemon", "lemon", "yellow", shapes.ellipsoid(0.034, 0.026, 0.026), 900, "a lemon, 6.8 cm long"),
     ("lime", "lime", "green", shapes.ellipsoid(0.028, 0.024, 0.024), 900, "a lime, 5.6 cm long"),
@@ -98,7 +106,8 @@ for _name, _category, _color, _parts, _density, _desc in [
     ("golf_ball", "golf ball", "white", shapes.sphere(0.021), 1150, "a golf ball, 4.3 cm"),
     ("softball", "softball", "yellow", shapes.sphere(0.048), 420, "a softball, 9.6 cm"),
 ]:
-    _register(ObjectType(_name, _category, _color, _parts, _density, _desc, round=True, shape="round"))
+    shade = "light_green" if _name == "green_apple" else ""  # green as its name says, drawn a lighter green
+    _register(ObjectType(_name, _category, _color, _parts, _density, _desc, round=True, shape="round", shade=shade))
 
 _register(ObjectType("banana", "banana", "yellow", shapes.banana(), 900, "a banana, 20 cm long", shape="elongated"))
 _register(ObjectType("pear", "pear", "light_green", shapes.pear(), 900, "a pear, 10 cm tall", shape="irregular"))
@@ -455,8 +464,6 @@ def get_object_type(name: str) -> ObjectType:
     try:
         return _LIBRARY[name]
     except KeyError:
-        import difflib
-
-        close = difflib.get_close_matches(name, _LIBRARY, n=4, cutoff=0.5)
-        hint = f"; did you mean {', '.join(close)}?" if close else f"; valid types: {', '.join(sorted(_LIBRARY))}"
+        close = did_you_mean(name, _LIBRARY, n=4)
+        hint = f"; {close}" if close else f"; valid types: {', '.join(sorted(_LIBRARY))}"
         raise KeyError(f"unknown object type {name!r}{hint}") from None

@@ -13,7 +13,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from roboscript.errors import UsageError
+from roboscript.errors import UsageError, did_you_mean
 from roboscript.geometry import Box3D, Transform
 from roboscript.names import TABLE
 
@@ -27,11 +27,10 @@ class UnknownObjectError(UsageError, KeyError):
     """No object of that name is known; the message suggests the closest known names."""
 
     def __init__(self, name: object, known: list[str]):
-        import difflib
 
         self.name, self.known = name, list(known)
-        close = difflib.get_close_matches(str(name), self.known, n=3, cutoff=0.4)
-        hint = f"; did you mean {', '.join(repr(c) for c in close)}?" if close else ""
+        close = did_you_mean(name, self.known, cutoff=0.4, quoted=True)
+        hint = f"; {close}" if close else ""
         message = f"no object named {name!r}{hint} Known objects: {', '.join(self.known)}"
         super().__init__(message)
 

@@ -15,6 +15,7 @@ from typing import Literal
 import mujoco
 import numpy as np
 
+from roboscript.errors import did_you_mean
 from roboscript.geometry import Transform, quat_from_yaw, quat_to_mujoco
 from roboscript.kept import Kept
 from roboscript.names import kind_of
@@ -62,10 +63,8 @@ class SimWorld:
         try:
             return self._by_name[name]
         except KeyError:
-            import difflib
-
-            close = difflib.get_close_matches(name, self._by_name, n=3, cutoff=0.4)
-            hint = f"; did you mean {', '.join(close)}?" if close else ""
+            close = did_you_mean(name, self._by_name, cutoff=0.4)
+            hint = f"; {close}" if close else ""
             raise KeyError(f"no object named {name!r} in world {self.spec.name!r}{hint}") from None
 
     def entity_names(self, kinds: tuple[EntityKind, ...] = ("object", "furniture", "part")) -> list[str]:

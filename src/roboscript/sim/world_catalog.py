@@ -2,11 +2,11 @@
 
 from __future__ import annotations
 
-import difflib
 from importlib import resources
 from pathlib import Path
 
 from roboscript.datafile import names_a_file
+from roboscript.errors import did_you_mean
 from roboscript.sim.world_file import WorldSpec, load_world_file
 
 
@@ -23,8 +23,8 @@ def world_path(name: str) -> Path:
     """The file of packaged world ``name``; raises ``KeyError`` naming the valid worlds."""
     path = _world_dir() / f"{name}.yaml"
     if not path.is_file():
-        close = difflib.get_close_matches(name, world_names(), n=3, cutoff=0.4)
-        hint = f"did you mean {', '.join(close)}? " if close else ""
+        close = did_you_mean(name, world_names(), cutoff=0.4)
+        hint = f"{close} " if close else ""
         raise KeyError(f"unknown world {name!r}; {hint}valid worlds: {', '.join(world_names())}")
     return path
 

@@ -19,7 +19,6 @@ Example::
 
 from __future__ import annotations
 
-import difflib
 import math
 from dataclasses import dataclass, field, replace
 from pathlib import Path
@@ -28,6 +27,7 @@ from typing import Any
 import numpy as np
 
 from roboscript.datafile import DataFileError, Reader, read_data_file
+from roboscript.errors import did_you_mean
 from roboscript.names import TABLE, kind_of
 from roboscript.objects import ObjectType, object_types
 from roboscript.sim.cameras import CameraSpec, default_camera_rig
@@ -201,8 +201,7 @@ def _parse_objects(source: str, items: Any, part_names: set[str]) -> tuple[Objec
             r.fail(f"name {name!r} must not contain '.' or '/'")
         type_name = r.string("type")
         if type_name not in library:
-            close = difflib.get_close_matches(type_name, library, n=3, cutoff=0.5)
-            hint = f"did you mean {', '.join(close)}?" if close else "run `roboscript objects` for the list"
+            hint = did_you_mean(type_name, library) or "run `roboscript objects` for the list"
             r.fail(f"unknown object type {type_name!r}; {hint}")
         if "on" in r.data and "inside" in r.data:
             r.fail("give either 'on' or 'inside', not both")

@@ -9,7 +9,6 @@ is a :class:`StudyFileError` that names the file, the entry and what is wrong.
 
 from __future__ import annotations
 
-import difflib
 from dataclasses import dataclass
 from importlib import resources
 from pathlib import Path
@@ -17,6 +16,7 @@ from string import Template
 from typing import Any
 
 from roboscript.datafile import DataFileError, Reader, names_a_file, read_data_file
+from roboscript.errors import did_you_mean
 from roboscript.objects import object_types
 
 PLACEHOLDERS = ("object", "words", "grasp")
@@ -85,8 +85,8 @@ def _fill(data: Any, values: dict[str, str]) -> Any:
 def choose(options: dict, key: str, kind: str):
     """``options[key]``; a ``KeyError`` naming the closest keys and all of them where there is none."""
     if key not in options:
-        close = difflib.get_close_matches(key, options, n=2, cutoff=0.5)
-        hint = f"did you mean {' or '.join(close)}? " if close else ""
+        close = did_you_mean(key, options, n=2)
+        hint = f"{close} " if close else ""
         raise KeyError(f"unknown {kind} {key!r}; {hint}{kind}s: {', '.join(options)}")
     return options[key]
 
@@ -160,8 +160,8 @@ def _parse_objects(entry: Reader, value: Any) -> tuple[str, ...]:
         entry.fail(f"field 'objects' must be 'pickable' or a non-empty list of object types, got {value!r}")
     for name in value:
         if name not in library:
-            close = difflib.get_close_matches(str(name), library, n=3, cutoff=0.5)
-            hint = f"; did you mean {', '.join(close)}?" if close else "; `roboscript objects` lists them"
+            close = did_you_mean(name, library)
+            hint = f"; {close}" if close else "; `roboscript objects` lists them"
             entry.fail(f"objects: unknown object type {name!r}{hint}")
     return tuple(value)
 
@@ -178,7 +178,7 @@ def load_study(name_or_path: str) -> Study:
     else:
         path = Path(str(resources.files("roboscript") / "study" / f"{name_or_path}.yaml"))
         if not path.is_file():
-            close = difflib.get_close_matches(name_or_path, study_names(), n=2, cutoff=0.4)
-            hint = f"did you mean {' or '.join(close)}? " if close else ""
+            close = did_you_mean(name_or_path, study_names(), n=2, cutoff=0.4)
+            hint = f"{close} " if close else ""
             raise KeyError(f"unknown study {name_or_path!r}; {hint}studies: {', '.join(study_names())}, or a file")
     return parse_study(read_data_file(path, StudyFileError), str(path))

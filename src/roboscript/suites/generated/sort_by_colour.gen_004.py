@@ -1,6 +1,6 @@
 # Task: sort the objects on the table by colour: put the green objects on the green plate
 # Plan:
-# 1. Pick up the tea box and put it onto the green plate.
+# 1. Pick up the green apple and put it onto the green plate.
 detect_objects()
 
 
@@ -22,5 +22,5 @@ def put(name, place_pose):
     move_in_direction(direction=[0, 0, 1], distance=0.1)
 
 
-pick('tea_box')
-put('tea_box', parse_place_pose(object_name='tea_box', receptacle_name='green_plate'))
+pick('green_apple')
+put('green_apple', parse_place_pose(object_name='green_apple', receptacle_name='green_plate'))

@@ -1,6 +1,6 @@
 # Task: sort the objects on the table by colour: put the white objects on the white plate
 # Plan:
-# 1. Pick up the rubiks cube and put it onto the white plate.
+# 1. Pick up the white medication bottle and put it onto the white plate.
 detect_objects()
 
 
@@ -22,5 +22,5 @@ def put(name, place_pose):
     move_in_direction(direction=[0, 0, 1], distance=0.1)
 
 
-pick('rubiks_cube')
-put('rubiks_cube', parse_place_pose(object_name='rubiks_cube', receptacle_name='white_plate'))
+pick('white_medication_bottle')
+put('white_medication_bottle', parse_place_pose(object_name='white_medication_bottle', receptacle_name='white_plate'))

@@ -1,7 +1,6 @@
 # Task: sort the objects on the table by kind: put the blocks on the green plate
 # Plan:
-# 1. Pick up the rubiks cube and put it onto the green plate.
-# 2. Pick up the green block and put it onto the green plate.
+# 1. Pick up the green block and put it onto the green plate.
 detect_objects()
 
 
@@ -23,7 +22,5 @@ def put(name, place_pose):
     move_in_direction(direction=[0, 0, 1], distance=0.1)
 
 
-pick('rubiks_cube')
-put('rubiks_cube', parse_place_pose(object_name='rubiks_cube', receptacle_name='green_plate'))
 pick('green_block')
 put('green_block', parse_place_pose(object_name='green_block', receptacle_name='green_plate'))

@@ -62,10 +62,14 @@ def central_lift_grasps(
     outward = np.append(center_xy - base_xy, 0.0)
     outward = outward / (np.linalg.norm(outward) + 1e-9)
     candidates = []
-    for k in order:
-        if 2 * half[k] > max_width - 0.003:
-            continue
-        candidates.append(Transform.from_rotation(np.array([*center_xy, z]), _frame(axes[k], DOWN, outward)))
+    # Shallower grasps follow the one asked for: where the hand would meet what stands round the object at that
+    # depth (a block in a bowl, the hand on its rim), a grasp nearer the top still holds it.
+    depths = [z] + [d for d in (box.upper[2] - 0.03, box.upper[2] - SHALLOWEST) if d > z + 0.005]
+    for depth in depths:
+        for k in order:
+            if 2 * half[k] > max_width - 0.003:
+                continue
+            candidates.append(Transform.from_rotation(np.array([*center_xy, depth]), _frame(axes[k], DOWN, outward)))
     if not candidates:
         raise GraspError(
             f"{name!r} is {2 * half.min() * 100:.1f} cm across its narrowest side, wider than the gripper's "
@@ -74,6 +78,8 @@ def central_lift_grasps(
     return candidates
 
 
+SHALLOWEST = 0.018  # metres below an object's top: the shallowest top-down grasp (fingertip pads are ~2 cm)
+RIM_GRIP = 0.02  # metres below a tall object's top where the higher horizontal grip closes (a cup at its rim)
 HAND_CLEARANCE = 0.008  # metres kept between an object's top and the hand behind the fingers
 
 
@@ -120,6 +126,52 @@ def _handle_normal(perception: Perception, name: str, box) -> np.ndarray:
     return normal / max(float(np.linalg.norm(normal)), 1e-9)
 
 
+def _level_grasps(
+    box,
+    is_handle: bool,
+    points: np.ndarray,
+    approach: np.ndarray,
+    outward_normal: np.ndarray,
+    yaws: list[float],
+    height: float,
+    max_width: float,
+) -> list[Transform]:
+    """The horizontal grasps at one ``height`` (for handles, their bar), one per approach yaw that fits."""
+    size = box.size
+    out = []
+    # Level with the middle of a low object, the hand (6.6 cm tall across a horizontal closing) would touch its
+    # support: such an object is approached from the side tilted downwards, the level approach tried last.
+    # Anything else is gripped level first, then tilted down: near the table, a level hand brings the arm's
+    # wrist down onto it (a Panda gripping a cup 4.5 cm up), where a tilted one keeps it higher.
+    if is_handle:
+        tilts: tuple[float, ...] = (0.0,)
+    else:
+        tilts = LOW_TILTS if height - box.lower[2] < LOW_OBJECT else (0.0, *LOW_TILTS[:-1])
+    for tilt, dyaw in ((t, y) for t in tilts for y in yaws):
+        c, s = math.cos(dyaw), math.sin(dyaw)
+        a = np.array([c * approach[0] - s * approach[1], s * approach[0] + c * approach[1], 0.0])
+        if is_handle:
+            long_axis = np.eye(3)[int(np.argmax(size))]
+            closing = np.cross(a, long_axis)
+            if np.linalg.norm(closing) < 1e-6:
+                continue
+            # Aim at the bar: just inside the handle's outermost surface along the part's opening direction.
+            reach = float(np.abs(outward_normal) @ size) / 2
+            target = box.center + outward_normal * (reach - HANDLE_BAR_RADIUS)
+            up = np.array([0.0, 0.0, 1.0])
+            outward = up if abs(closing[2]) < 0.5 else np.cross(up, a)
+        else:
+            closing = np.cross(np.array([0.0, 0.0, 1.0]), a)
+            across = _extent(points, closing) if len(points) else float(np.abs(closing) @ size)
+            if across > max_width - 0.003:
+                continue
+            target = np.array([box.center[0], box.center[1], height])
+            outward = np.array([0.0, 0.0, -1.0])
+            a = math.cos(tilt) * a + math.sin(tilt) * DOWN
+        out.append(Transform.from_rotation(target, _frame(closing, a, outward)))
+    return out
+
+
 def horizontal_grasps(
     perception: Perception,
     name: str,
@@ -150,39 +202,18 @@ def horizontal_grasps(
         approach = -_handle_normal(perception, name, box) if is_handle else np.append(box.center[:2] - base_xy, 0.0)
         yaws = list(APPROACH_YAWS)
     approach = approach / np.linalg.norm(approach)
-    if not is_handle:
-        points = _finger_band(perception.points(name).points, min(box.center[2], box.lower[2] + 0.06))
-        if approach_direction is None:
-            yaws = _with_side_on_yaws(yaws, approach, perception.footprint(name)[1])
+    if not is_handle and approach_direction is None:
+        yaws = _with_side_on_yaws(yaws, approach, perception.footprint(name)[1])
     outward_normal = -approach if approach_direction is None else _handle_normal(perception, name, box)
-    size = box.size
     candidates = []
     target_z = min(box.center[2], box.lower[2] + 0.06)
-    # Level with the middle of a low object, the hand (6.6 cm tall across a horizontal closing) would touch its
-    # support: such an object is approached from the side tilted downwards, the level approach tried last.
-    tilts = LOW_TILTS if not is_handle and target_z - box.lower[2] < LOW_OBJECT else (0.0,)
-    for tilt, dyaw in ((t, y) for t in tilts for y in yaws):
-        c, s = math.cos(dyaw), math.sin(dyaw)
-        a = np.array([c * approach[0] - s * approach[1], s * approach[0] + c * approach[1], 0.0])
-        if is_handle:
-            long_axis = np.eye(3)[int(np.argmax(size))]
-            closing = np.cross(a, long_axis)
-            if np.linalg.norm(closing) < 1e-6:
-                continue
-            # Aim at the bar: just inside the handle's outermost surface along the part's opening direction.
-            reach = float(np.abs(outward_normal) @ size) / 2
-            target = box.center + outward_normal * (reach - HANDLE_BAR_RADIUS)
-            up = np.array([0.0, 0.0, 1.0])
-            outward = up if abs(closing[2]) < 0.5 else np.cross(up, a)
-        else:
-            closing = np.cross(np.array([0.0, 0.0, 1.0]), a)
-            across = _extent(points, closing) if len(points) else float(np.abs(closing) @ size)
-            if across > max_width - 0.003:
-                continue
-            target = np.array([box.center[0], box.center[1], target_z])
-            outward = np.array([0.0, 0.0, -1.0])
-            a = math.cos(tilt) * a + math.sin(tilt) * DOWN
-        candidates.append(Transform.from_rotation(target, _frame(closing, a, outward)))
+    # Higher grips follow on a tall object: a cup's rim is narrower than its body's widest part, and a hand
+    # that grips higher keeps the wrist off the table (a Panda gripping a cup 4.5 cm up met the table with it).
+    heights = [target_z] if is_handle else [target_z] + [h for h in (box.upper[2] - RIM_GRIP,) if h > target_z + 0.01]
+    all_points = perception.points(name).points if not is_handle else np.zeros((0, 3))
+    for height in heights:
+        points = _finger_band(all_points, height) if not is_handle else all_points
+        candidates += _level_grasps(box, is_handle, points, approach, outward_normal, yaws, height, max_width)
     if not candidates:
         raise GraspError(
             f"{name!r} is wider than the gripper's {max_width * 100:.1f} cm opening from every horizontal approach "

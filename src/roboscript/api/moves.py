@@ -1,0 +1,127 @@
+"""The motions the tools make for a program: each one preceded by the retreat it owes, with the contacts it may
+make allowed and withdrawn once clear, and taking hold of what the fingers closed on.
+
+A program's own motion may be the retreat itself (it lifts after a grasp, backs off after a release); a lift or a
+retreat beyond the arm's reach is made as far as it goes, with a notice, where failing would serve no purpose.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+from roboscript.api.held import Held
+from roboscript.api.placement import Placer
+from roboscript.api.retreats import Retreats
+from roboscript.api.touching import Touching
+from roboscript.backends.base import Backend
+from roboscript.geometry import Transform, rotation_angle_between
+from roboscript.grasping.choice import PRE_GRASP_DISTANCE
+from roboscript.grasping.heuristics import GraspError
+from roboscript.notices import notice
+from roboscript.perception.base import Perception
+from roboscript.planning.contacts import ContactAllowances
+from roboscript.planning.errors import IKError
+from roboscript.planning.motion import MotionPlanner
+
+EMPTY_GRIP = 0.002  # metres: fingers closed this far hold nothing
+SAME_ORIENTATION = 0.05  # radians: a move_to_pose turning the hand less is a straight move, a retreat if it backs off
+HOLDING = 0.005  # metres: fingers this much short of fully open hold something
+
+
+class Moves:
+    """Motions of one arm on a program's behalf (see the module's doc-string)."""
+
+    def __init__(
+        self,
+        backend: Backend,
+        perception: Perception,
+        motion: MotionPlanner,
+        contacts: ContactAllowances,
+        held: Held,
+        touching: Touching,
+        retreats: Retreats,
+        placer: Placer,
+    ):
+        self.backend, self.perception, self.motion, self.contacts = backend, perception, motion, contacts
+        self.held, self.touching, self.retreats, self.placer = held, touching, retreats, placer
+
+    def to_pose(self, target: Transform) -> None:
+        current = self.backend.tcp_pose()
+        motion = target.position - current.position
+        own = self.retreats.first(motion, shorter=True)
+        self.touching.leave_where_started()
+        straight = rotation_angle_between(current.quaternion, target.quaternion) < SAME_ORIENTATION
+        retreating = own is not None and own.kind == "release" and straight
+        if retreating and self.retreats.own(motion, own):
+            return
+        self.touching.allow_near(target.position)
+        try:
+            self.motion.move_to_pose(target)
+        except IKError as exc:
+            higher = self.placer.raised_for_release(target, exc, self.held)
+            if higher is None and straight and self.retreats.lift_within_reach(motion):
+                return
+            if higher is None and retreating:
+                # Backing off from what was let go at the edge of reach (a drawer pulled far out): the fingers
+                # are open, and the next motion leaves from here.
+                notice("move_to_pose: the retreat from what was let go is beyond the arm's reach: stopped here")
+                return
+            if higher is None:
+                raise
+            notice(
+                f"move_to_pose: {', '.join(self.held)} sits lower in the hand than when the pose was made: going "
+                f"{higher.position[2] - target.position[2]:.3f} m higher"
+            )
+            self.motion.move_to_pose(higher)
+        self.contacts.withdraw_cleared(self.held)
+
+    def in_direction(self, unit: np.ndarray, distance: float) -> None:
+        own = self.retreats.first(unit * distance, shorter=True)
+        self.touching.leave_where_started()
+        if own is not None and own.kind == "release" and self.retreats.own(unit * distance, own):
+            return
+        try:
+            self.motion.move_in_direction(unit, distance, plan_if_blocked=True)
+        except IKError:
+            if not self.retreats.lift_within_reach(unit * distance):
+                raise
+        self.contacts.withdraw_cleared(self.held)
+
+    def along(self, targets: list[Transform]) -> None:
+        self.retreats.first(targets[0].position - self.backend.tcp_pose().position)
+        self.touching.leave_where_started()
+        self.motion.follow(targets)
+        self.contacts.withdraw_cleared(self.held)
+
+    def grasp(self, target: Transform) -> None:
+        # The way to the pre-grasp is planned, not straight: it is never the retreat itself, whatever its direction.
+        self.retreats.first(None)
+        self.touching.leave_where_started()
+        # The fingers may touch the object only on the final straight approach, not on the way to its start.
+        with self.contacts.touching(self.touching.new_near(target.position)):
+            options = self.motion.approaches(target, PRE_GRASP_DISTANCE)
+        chosen = self.motion.move_to_approach(options, target, PRE_GRASP_DISTANCE)
+        self.touching.allow_near(target.position)
+        self.motion.finish_approach(chosen, target)
+        self.contacts.withdraw_cleared(self.held)
+
+    def take(self, name: str, is_object: bool, max_width: float) -> None:
+        """Takes hold of ``name``; an object is lifted off whatever it rests on at once if the fingers hold it:
+        where it settles in the hand, and so what a place pose asked for next must allow for, shows only once it
+        hangs free. GraspError where the fingers closed on nothing."""
+        self.held.take(name, is_object, self.backend.tcp_pose())
+        if not is_object:
+            return
+        self.retreats.owe_lift()
+        if self.backend.gripper_width() >= max_width - HOLDING:
+            return
+        self.retreats.first(None)
+        if self.backend.gripper_width() < EMPTY_GRIP:
+            self.held.let_go(name, self.backend.tcp_pose())
+            raise GraspError(
+                f"{name!r} is not between the fingers: they closed on nothing as the hand lifted it (the grasp "
+                "missed, or it slipped out). Open the gripper and grasp it again: nearer its middle, or from above "
+                "(preferred_approach_direction=[0, 0, -1])"
+            )
+        if self.perception.hangs_free(name):
+            self.motion.world_changed()  # the planning scene carries it as it hangs

@@ -1,0 +1,129 @@
+"""The retreats the tools make on a program's behalf: a held object lifted off its support after a grasp, the hand
+backed away from what it let go of, before the next motion, unless that motion is itself such a retreat.
+
+As MoveIt's pick and place pipelines do, and as programs written for the original system assume: the original's
+GPT-4 programs often neither lift after grasping nor back off after releasing.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable
+from dataclasses import dataclass
+
+import numpy as np
+
+from roboscript.api.held import Held
+from roboscript.backends.base import Backend
+from roboscript.grasping.detection import GripperGeometry
+from roboscript.notices import notice
+from roboscript.perception.base import Perception
+from roboscript.planning.contacts import ContactAllowances
+from roboscript.planning.motion import MotionPlanner
+
+UP = np.array([0.0, 0.0, 1.0])
+LIFT_AFTER_GRASP = 0.05
+RETREAT_AFTER_RELEASE = 0.05
+RELEASE_CLEARANCE = 0.01  # beyond what was let go, where the fingertips end the release retreat if that is further
+RELEASE_RETREAT_LEAST = 0.02  # a program's own retreat after a release may stop short of its distance, not of this
+OWN_RETREAT = 0.5  # cosine (60 deg) above which a program's motion is its own retreat; wider than PREFERENCE_CONE
+LIFT_SIDEWAYS = 0.01  # metres sideways a motion may go and still be a lift (:meth:`Retreats.lift_within_reach`)
+
+
+@dataclass(frozen=True)
+class Owed:
+    """A retreat owed before the next motion: along ``direction`` by ``distance`` metres, after a "lift" (a
+    grasp) or a "release"."""
+
+    direction: np.ndarray
+    distance: float
+    kind: str
+
+
+class Retreats:
+    """The retreat owed since the last grasp or release, and how a program's own motions count against it.
+    ``leave_where_started`` is called before each motion made (contacts it starts in may be left)."""
+
+    def __init__(
+        self,
+        motion: MotionPlanner,
+        backend: Backend,
+        perception: Perception,
+        contacts: ContactAllowances,
+        held: Held,
+        gripper: GripperGeometry,
+        leave_where_started: Callable[[], None],
+    ):
+        self.motion, self.backend, self.perception = motion, backend, perception
+        self.contacts, self.held, self.gripper = contacts, held, gripper
+        self.leave_where_started = leave_where_started
+        self.pending: Owed | None = None
+
+    def owe_lift(self) -> None:
+        """After a grasp: off the support, straight up."""
+        self.pending = Owed(UP.copy(), LIFT_AFTER_GRASP, "lift")
+
+    def owe_release(self) -> None:
+        """After letting go: back along the approach axis, until the fingertips have cleared what was held."""
+        back = -self.backend.tcp_pose().rotation[:, 2]
+        self.pending = Owed(back, self._release_distance(back), "release")
+
+    def first(self, motion: np.ndarray | None, shorter: bool = False) -> Owed | None:
+        """Makes the owed retreat, unless ``motion`` (the program's next straight move, as a displacement of the
+        TCP; None for a planned one) is already one: mostly along the retreat, and at least as long, or, with
+        ``shorter``, after a release, of any length (the caller then makes it as long as the owed one,
+        :meth:`own`). Returns the retreat not made when ``motion`` is the program's own retreat, else None."""
+        pending, self.pending = self.pending, None
+        if pending is None:
+            return None
+        length = 0.0 if motion is None else float(np.linalg.norm(motion))
+        # Away from what was let go is back along the approach, or up: a hand that let go beside something
+        # leaves it as well upwards.
+        away = [pending.direction] if pending.kind == "lift" else [pending.direction, UP]
+        long_enough = length >= pending.distance or (shorter and pending.kind == "release")
+        if length > 0.0 and long_enough and any(float(a @ motion) / length > OWN_RETREAT for a in away):
+            return pending
+        self.leave_where_started()
+        self.motion.retreat(pending.direction, pending.distance)
+        self.contacts.withdraw_cleared(self.held)
+        return None
+
+    def own(self, motion: np.ndarray, owed: Owed) -> bool:
+        """The program's own straight retreat from what it just let go of, as far as reach allows: an opened
+        drawer's handle, or a place pose in a high drawer, may stand at the edge of the workspace, and the
+        retreat's purpose (clearing what was let go) is met before its end. A retreat shorter than the ``owed``
+        one is made as long as that: its purpose is the same, and ending a few millimetres past the program's pose
+        is nearer to it than making both (a mug let go in a high drawer: the owed 5.7 cm and the program's 5 cm
+        up were out of reach together). False where not even :data:`RELEASE_RETREAT_LEAST` is free: the ``owed``
+        retreat is then made, and the caller moves as it would have."""
+        distance = max(float(np.linalg.norm(motion)), owed.distance)
+        moved = self.motion.retreat(motion, distance, least=min(RELEASE_RETREAT_LEAST, distance))
+        if moved <= 0.0:
+            self.motion.retreat(owed.direction, owed.distance)
+            return False
+        if moved < distance - 1e-3:
+            notice(f"retreat: backed off {moved:.3f} m of {distance:.3f} m: the rest is out of reach")
+        self.contacts.withdraw_cleared(self.held)
+        return True
+
+    def lift_within_reach(self, rise: np.ndarray) -> bool:
+        """A straight lift (up, the hand kept as it is) the arm cannot make in full is made as far as the arm
+        reaches, with a notice: a program lifting what it holds clear of a drawer cannot know that 40 cm up is
+        beyond reach at the far side of the table. False for any other motion (nothing moved)."""
+        if float(np.linalg.norm(rise[:2])) > LIFT_SIDEWAYS or rise[2] <= 0.0:
+            return False
+        moved = self.motion.retreat(UP, float(rise[2]), least=0.0)
+        notice(f"lift: went up {moved:.3f} m of {rise[2]:.3f} m: higher is beyond the arm's reach here")
+        self.contacts.withdraw_cleared(self.held)
+        return True
+
+    def _release_distance(self, back: np.ndarray) -> float:
+        """How far the hand backs out along ``back`` after letting go: :data:`RETREAT_AFTER_RELEASE`, or until the
+        fingertips have passed what was let go by :data:`RELEASE_CLEARANCE`. A cup let go from the side reaches
+        6 cm back from the TCP: fingertips stopped at its near wall caught its flared rim as the hand rose."""
+        tcp = self.backend.tcp_pose().position
+        reach = 0.0
+        for name in self.held.objects:
+            points = self.perception.points(name).points
+            if len(points):
+                reach = max(reach, float(np.max((points - tcp) @ back)))
+        return max(RETREAT_AFTER_RELEASE, reach + self.gripper.tip_length + RELEASE_CLEARANCE)

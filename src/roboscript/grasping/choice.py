@@ -1,0 +1,218 @@
+"""Grasp choice: the grasp tools' candidates ranked and screened for reach, the first the arm can take.
+
+Candidates come from :mod:`roboscript.grasping.heuristics` (box grasps: top-down, horizontal) and
+:mod:`roboscript.grasping.detection` (antipodal pairs over the observed points); this module asks the motion planner
+which of them the arm reaches, with a straight approach and, for a drawer's handle, room to pull.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable, Collection
+
+import numpy as np
+
+from roboscript.geometry import Transform
+from roboscript.grasping.detection import (
+    UNCLEAN_RELEASE_PENALTY,
+    WIDTH_MARGIN,
+    GraspPreferences,
+    GripperGeometry,
+    detect_grasps,
+    falls_free,
+    score_grasp,
+)
+from roboscript.grasping.heuristics import GraspError, central_lift_grasps, horizontal_grasps
+from roboscript.names import kind_of
+from roboscript.perception.base import ObjectPoints, Perception
+from roboscript.planning.contacts import ContactAllowances
+from roboscript.planning.errors import IKError, PlanningError
+from roboscript.planning.motion import MotionPlanner
+
+PRE_GRASP_DISTANCE = 0.1
+# A box grasp closes on the faces of the object's footprint, not on a pair of points checked against friction:
+# ranked with the contact quality of a middling antipodal pair.
+BOX_GRASP_QUALITY = 0.5
+# Lower than this, an object lies flat (a banana, 3.8 cm): a side grasp tilted down onto it closes on the upper
+# curve of its body and squeezes it out of the fingers, so the box side grasps rank behind the top-down ones.
+LYING_FLAT = 0.05
+LYING_SIDE_PENALTY = 1.5
+PULL_CHECK = 0.25  # metres a drawer handle grasp should be able to pull
+PULL_LEAST = 0.15  # metres the grasp must pull where none pulls PULL_CHECK
+ADAPTIVE_DETECTED = 12  # antipodal grasps ranked against the box grasps
+FLIP = Transform(np.zeros(3), np.array([0.0, 0.0, 1.0, 0.0]))  # half a turn about the approach axis
+
+
+class GraspChooser:
+    """The grasp tools' choice for one arm: ``held`` says what the hand holds now (the fingers may touch the
+    object to be grasped, not what is held); ``release_drop``: how far above its support a thing is let go."""
+
+    def __init__(
+        self,
+        perception: Perception,
+        motion: MotionPlanner,
+        contacts: ContactAllowances,
+        gripper: GripperGeometry,
+        base_xy: np.ndarray,
+        held: Callable[[], Collection[str]],
+        release_drop: float,
+        seed: int = 0,
+    ):
+        self.perception, self.motion, self.contacts, self.gripper = perception, motion, contacts, gripper
+        self.base_xy, self.held, self.release_drop, self.seed = base_xy, held, release_drop, seed
+
+    @property
+    def finger_reach(self) -> float:
+        """How far the fingers reach from the TCP back to the hand (how deep a top-down grasp may take an object)."""
+        return -self.gripper.hand_upper[2]
+
+    def central(self, name: str, description: str) -> Transform:
+        candidates = central_lift_grasps(
+            self.perception, name, description, self.gripper.max_width, self.base_xy, self.finger_reach
+        )
+        return self.first_reachable(name, candidates, "central lift")
+
+    def horizontal(self, name: str, approach: np.ndarray | None) -> Transform:
+        candidates = horizontal_grasps(self.perception, name, approach, self.gripper.max_width, self.base_xy)
+        return self.first_reachable(name, candidates, "horizontal")
+
+    def adaptive(self, name: str, preferences: GraspPreferences) -> Transform:
+        """Antipodal grasps over the observed points, ranked together with the box grasps that fit by one score:
+        where sampling finds pairs only off the middle (a banana half hidden from the cameras) or none within
+        reach (an object nearly as wide as the opening), the adaptive grasp is no worse than the box ones."""
+        cloud = self.perception.points(name)
+        if len(cloud.points) < 10:
+            raise GraspError(
+                f"{name!r} is hardly visible to the cameras ({len(cloud.points)} points): no grasp detected"
+            )
+        detected = detect_grasps(
+            cloud,
+            self.perception.scene_points(),
+            self.gripper,
+            preferences,
+            seed=self.seed,
+            release_drop=self.release_drop,
+        )
+        width = self.gripper.max_width - WIDTH_MARGIN
+        lying = self.perception.box(name).size[2] < LYING_FLAT
+        ranked = [(c.score, c.pose) for c in detected[:ADAPTIVE_DETECTED]] + [
+            (
+                score_grasp(pose, width, BOX_GRASP_QUALITY, cloud, preferences) - self._penalties(pose, cloud, lying),
+                pose,
+            )
+            for pose in self._box_grasps(name, preferences)
+        ]
+        candidates = [pose for _, pose in sorted(ranked, key=lambda c: -c[0])]
+        if not candidates:
+            raise GraspError(
+                f"no collision-free antipodal grasp found on {name!r} ({len(cloud.points)} points seen), and it is "
+                f"wider than the gripper's {self.gripper.max_width * 100:.1f} cm opening across every side, so no "
+                "central lift or horizontal grasp fits either"
+            )
+        return self.first_reachable(name, candidates, "adaptive")
+
+    def _penalties(self, pose: Transform, cloud: ObjectPoints, lying: bool) -> float:
+        """What a box grasp loses in rank: a side grasp of a flat-lying object, and one the object would not fall
+        free of when let go (as :func:`detect_grasps` ranks its own)."""
+        unclean = not falls_free(pose.rotation, pose.position, cloud.points, self.gripper, self.release_drop)
+        return side_penalty(pose, lying) + (UNCLEAN_RELEASE_PENALTY if unclean else 0.0)
+
+    def _box_grasps(self, name: str, preferences: GraspPreferences) -> list[Transform]:
+        """The central lift and horizontal grasps that fit ``name``, in the order the preferred approach suggests
+        (top-down first unless a horizontal approach is preferred)."""
+        kinds = [
+            lambda: central_lift_grasps(
+                self.perception, name, "center", self.gripper.max_width, self.base_xy, self.finger_reach
+            ),
+            lambda: horizontal_grasps(self.perception, name, None, self.gripper.max_width, self.base_xy),
+        ]
+        if preferences.approach is not None and abs(float(preferences.approach[2])) < 0.5:
+            kinds.reverse()
+        out: list[Transform] = []
+        for kind in kinds:
+            try:
+                out += kind()
+            except GraspError:
+                continue
+        return out
+
+    def first_reachable(self, name: str, candidates: list[Transform], kind: str) -> Transform:
+        """The first candidate whose grasp and pre-grasp poses have collision-free IK (the gripper may touch the
+        object itself); each is also tried turned half a turn about its approach axis."""
+        q = self.motion.sync()
+        errors: list[str] = []
+        fallback: Transform | None = None
+        short_pull: tuple[float, Transform] | None = None
+        walled: Transform | None = None
+        short_approach: Transform | None = None
+        with self.contacts.touching(self.contacts.not_yet_allowed([name], self.held())):
+            for candidate in candidates:
+                for pose in (candidate, candidate.compose(FLIP)):
+                    # Every grasp's IK branches are searched widely before a worse grasp is taken: next to the
+                    # base the arm is folded near its joint limits, and the nearest branches cannot follow even a
+                    # top-down line (a banana beside the Panda: a grasp at its end was taken instead, and the
+                    # banana swung out of the fingers).
+                    try:
+                        goal, approach = self.motion.approaches(
+                            pose, PRE_GRASP_DISTANCE, q, attempts=8, max_attempts=40, branches=3, first=True
+                        )[0]
+                    except IKError as exc:
+                        errors.append(str(exc))
+                        continue
+                    if approach is None:
+                        # Reachable, but grasp() will have to plan its final approach: kept as a last resort.
+                        fallback = fallback or pose
+                        errors.append("the straight approach from the pre-grasp pose is blocked on every IK branch")
+                        continue
+                    pulled, why = self._pull_reach(name, pose, goal)
+                    if why:
+                        errors.append(why)
+                        if pulled >= PULL_LEAST and (short_pull is None or pulled > short_pull[0]):
+                            short_pull = (pulled, pose)
+                        continue
+                    if self.motion.approach_length(approach) < PRE_GRASP_DISTANCE - 1e-3:
+                        # Moved in along a shortened line: kept, in case no grasp has the full approach.
+                        errors.append("the straight approach is free only part of the way")
+                        short_approach = short_approach or pose
+                        continue
+                    if not self.motion.connects(q, approach[0]):
+                        # IK reaches its pre-grasp, but no path was found to it: a configuration walled in by
+                        # the table. Kept, in case the planner's retries would find one.
+                        errors.append("no path was found to the pre-grasp configuration")
+                        walled = walled or pose
+                        continue
+                    return pose
+        # The last resorts, best first. A handle grasp that pulls less than PULL_CHECK is kept over one that
+        # cannot move in straight: the program may not pull that far (a preferred approach costs reach).
+        for kept in (walled, short_approach, short_pull[1] if short_pull else None, fallback):
+            if kept is not None:
+                return kept
+        raise PlanningError(
+            f"none of the {len(candidates)} {kind} grasps of {name!r} (each also turned half a turn) can be reached "
+            f"without collision; first failure: {errors[0] if errors else 'none'}",
+        )
+
+    def _pull_reach(self, name: str, pose: Transform, q: np.ndarray) -> tuple[float, str]:
+        """For the handle of a drawer: how far the arm can pull it open from this grasp, up to ``PULL_CHECK``
+        metres, and why not further (empty if it can pull that far). A handle is grasped to be pulled, and a
+        grasp that cannot pull is no use."""
+        if kind_of(name) != "handle":
+            return 0.0, ""
+        joints = self.perception.joints(name)
+        if not joints or joints[0].type != "prismatic":
+            return 0.0, ""
+        remaining = joints[0].upper - joints[0].value
+        distance = min(PULL_CHECK, remaining)
+        if distance < 0.02:
+            return distance, ""
+        target = Transform(pose.position + joints[0].axis * distance, pose.quaternion)
+        line = self.motion.cartesian([target], start=q)
+        if line.fraction >= 1.0:
+            return distance, ""
+        pulled = line.fraction * distance
+        return pulled, f"from this grasp the drawer can be pulled only {pulled * 100:.0f} cm: {line.reason}"
+
+
+def side_penalty(pose: Transform, lying: bool) -> float:
+    """What a box grasp loses in rank for coming at a flat-lying object from the side (see :data:`LYING_FLAT`)."""
+    top_down = -float(pose.rotation[2, 2]) > 0.95
+    return LYING_SIDE_PENALTY if lying and not top_down else 0.0

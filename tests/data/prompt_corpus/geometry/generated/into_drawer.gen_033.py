@@ -1,0 +1,56 @@
+# Task: put the blue box into the top drawer; the drawer is closed, open it first.
+# Plan:
+# 1. The top drawer is cabinet.drawer_0, its handle cabinet.handle_0. Measure the handle's centre, the outward
+#    normal of the drawer's front there (the hand approaches against it) and the drawer's prismatic joint.
+# 2. Grasp the handle horizontally, attach the drawer, pull it along +axis by most of what is left of its travel
+#    (joint_upper - joint_value), release it and back away along the front's normal.
+# 3. Detect again (the drawer moved). The part of the drawer now out of the cabinet lies between the cabinet's
+#    front (where the front was) and the drawer's new front: aim at its middle.
+# 4. Grasp the box (top-down at its middle if narrow enough, else the adaptive grasp), attach it, lift it.
+# 5. Place it into the drawer at that spot, release it, move up.
+detect_objects()
+handle_at = np.array(get_object_center_position('cabinet.handle_0'))
+front_normal = np.array(get_plane_normal('cabinet.drawer_0', handle_at))
+joint = get_object_joint_info(object_name='cabinet', position=handle_at, type='prismatic')
+axis = np.array(joint['joint_axis'])
+travel = min(0.9 * (joint['joint_upper'] - joint['joint_value']), 0.3)
+
+open_gripper()
+grasp(parse_horizontal_grasp_pose(object_name='cabinet.handle_0', approach_direction=(-front_normal).tolist()))
+close_gripper()
+attach_object('cabinet.drawer_0')
+move_in_direction(axis, travel)
+open_gripper()
+detach_object('cabinet.drawer_0')
+back = get_gripper_pose()
+back.position.x += 0.08 * front_normal[0]
+back.position.y += 0.08 * front_normal[1]
+back.position.z += 0.08 * front_normal[2]
+move_to_pose(back)
+
+detect_objects()
+drawer_box = get_3d_bbox('cabinet.drawer_0')
+inside = handle_at + axis * (travel / 2.0 - 0.04)
+target = [inside[0], inside[1], drawer_box[5]]
+
+box = get_3d_bbox('blue_box')
+box_bottom = get_object_pose('blue_box').position.z
+open_gripper()
+if min(box[3] - box[0], box[4] - box[1]) < 0.07:
+    grasp_pose = parse_central_lift_grasp_pose(object_name='blue_box', description='center')
+else:
+    grasp_pose = parse_adaptive_shape_grasp_pose(object_name='blue_box', preferred_position=get_object_center_position('blue_box'), preferred_approach_direction=[0, 0, -1])
+grasp(grasp_pose)
+close_gripper()
+attach_object('blue_box')
+hold = grasp_pose.position.z - box_bottom
+lift = get_gripper_pose()
+lift.position.z = max(lift.position.z + 0.1, drawer_box[5] + hold + 0.05)
+move_to_pose(lift)
+
+move_to_pose(parse_place_pose(object_name='blue_box', receptacle_name='cabinet.drawer_0', position=target))
+open_gripper()
+detach_object('blue_box')
+up = get_gripper_pose()
+up.position.z += 0.08
+move_to_pose(up)

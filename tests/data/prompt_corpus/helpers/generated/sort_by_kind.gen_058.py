@@ -1,0 +1,44 @@
+# Task: sort the objects on the table by kind: put the fruits on the red plate.
+# Plan:
+# 1. Define helpers: choose a grasp from the object's name, pick an object, place it onto a receptacle.
+# 2. The objects on the table are all names except the table and the cabinet with its parts.
+# 3. The fruits are those with a fruit word in the name (plum, strawberry); the golf ball, the bottle and the box are not.
+# 4. Pick each fruit (top-down at its centre) and place it onto the red plate.
+FRUIT_WORDS = {'apple', 'banana', 'lemon', 'lime', 'orange', 'pear', 'peach', 'plum', 'strawberry'}
+
+
+def grasp_pose_for(name):
+    # Mugs and odd shapes: adaptive grasp from above; upright cups and bottles: level grasp; small boxes, blocks, fruit: top-down.
+    words = name.split('_')
+    if 'mug' in words or 'toy' in words or 'banana' in words:
+        return parse_adaptive_shape_grasp_pose(object_name=name, preferred_approach_direction=[0, 0, -1])
+    if 'cup' in words or 'bottle' in words or 'cleanser' in words:
+        return parse_horizontal_grasp_pose(object_name=name)
+    return parse_central_lift_grasp_pose(object_name=name, description='center')
+
+
+def pick(name, lift=0.1):
+    open_gripper()
+    grasp(grasp_pose_for(name))
+    close_gripper()
+    attach_object(name)
+    move_in_direction([0, 0, 1], lift)
+
+
+def release(name):
+    open_gripper()
+    detach_object(name)
+    move_in_direction([0, 0, 1], 0.1)
+
+
+def place_into(name, receptacle):
+    move_to_pose(parse_place_pose(object_name=name, receptacle_name=receptacle))
+    release(name)
+
+
+detect_objects()
+things = [n for n in get_object_name_list() if n != 'table' and not n.startswith('cabinet')]
+fruits = [n for n in things if FRUIT_WORDS & set(n.split('_'))]
+for name in fruits:
+    pick(name)
+    place_into(name, 'red_plate')

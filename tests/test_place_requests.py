@@ -1,0 +1,140 @@
+"""parse_place_pose meets reasonable requests: stacking on any flat top, a position on a named receptacle, and a
+position that is taken or out of reach moved to the nearest free, reachable spot within a stated bound."""
+
+import logging
+
+import numpy as np
+import pytest
+
+from roboscript.api.nearby import NEAREST_BOUND, Support, free_spots, ring_candidates
+from roboscript.api.placement import PlacementError
+from roboscript.api.spots import Footprint
+from roboscript.assembly import build_tools
+from roboscript.backends.mujoco_backend import MujocoBackend
+from roboscript.geometry import Transform
+from roboscript.perception.base import Receptacle
+from roboscript.sim.world_file import parse_world
+
+
+def _world(objects: list[dict]):
+    return parse_world({"name": "place_requests", "objects": objects})
+
+
+def _pick(tools, name: str) -> None:
+    tools.open_gripper()
+    tools.grasp(tools.parse_central_lift_grasp_pose(name, "center"))
+    tools.close_gripper()
+    tools.attach_object(name)
+    tools.move_in_direction([0, 0, 1], 0.1)
+
+
+def _put(tools, name: str, pose) -> None:
+    tools.move_to_pose(pose)
+    tools.open_gripper()
+    tools.detach_object(name)
+    tools.move_in_direction([0, 0, 1], 0.1)
+    tools.backend.wait(0.5)
+
+
+def test_ring_candidates_start_at_the_target_and_grow_outwards():
+    points = ring_candidates(np.array([0.1, 0.2]), 0.06, np.array([-0.45, 0.0]))
+    distances = np.linalg.norm(points - [0.1, 0.2], axis=1)
+    assert distances[0] == 0.0
+    assert np.all(np.diff(np.round(distances, 6)) >= 0)
+    assert distances.max() == pytest.approx(0.06)
+
+
+def test_free_spots_keep_clear_of_neighbours_and_on_the_support():
+    region = Receptacle("table", Transform.identity(), np.array([-0.5, -0.5, 0.8]), np.array([0.5, 0.5, 1.2]))
+    neighbour = Footprint(np.array([0.0, 0.0]), 0.0, np.array([0.04, 0.04]))
+    support = Support(region, 0.8, (neighbour,))
+    candidates = ring_candidates(np.array([0.03, 0.0]), NEAREST_BOUND, np.array([-0.45, 0.0]))
+    spots = free_spots(candidates, np.array([0.025, 0.025]), 0.0, 0.05, support)
+    # The target overlaps the neighbour: the first free spot is the nearest one clear of it.
+    first = spots[0].center
+    assert np.linalg.norm(first[:2] - [0.03, 0.0]) > 0.0
+    assert first[0] >= 0.04 + 0.025 or abs(first[1]) >= 0.04 + 0.025
+    assert first[2] == pytest.approx(0.8 + 0.025, abs=0.02)
+    # Off the edge of the table: no spot beyond it.
+    edge = free_spots(np.array([[0.6, 0.0]]), np.array([0.025, 0.025]), 0.0, 0.05, support)
+    assert edge == []
+
+
+def test_stacking_on_a_box_that_is_no_container():
+    world = _world(
+        [
+            {"name": "red_block", "type": "red_block", "position": [0.0, -0.15]},
+            {"name": "gelatin_box", "type": "gelatin_box", "position": [0.05, 0.1]},
+        ]
+    )
+    with MujocoBackend(world, robot="panda", settle=0.5) as backend:
+        tools = build_tools(backend)
+        _pick(tools, "red_block")
+        _put(tools, "red_block", tools.parse_place_pose("red_block", "gelatin_box"))
+        block, box = backend.ground_truth.box("red_block"), backend.ground_truth.box("gelatin_box")
+        assert block.lower[2] > box.upper[2] - 0.01
+        assert np.linalg.norm(block.center[:2] - box.center[:2]) < 0.02
+
+
+def test_a_ball_has_no_top_to_stack_on():
+    world = _world(
+        [
+            {"name": "red_block", "type": "red_block", "position": [0.0, -0.15]},
+            {"name": "baseball", "type": "baseball", "position": [0.05, 0.1]},
+        ]
+    )
+    with MujocoBackend(world, robot="panda", settle=0.5) as backend:
+        tools = build_tools(backend)
+        _pick(tools, "red_block")
+        with pytest.raises(ValueError, match="'baseball' cannot hold things: it has no interior and no flat top"):
+            tools.parse_place_pose("red_block", "baseball")
+
+
+def test_a_position_on_a_named_receptacle_and_a_taken_one_moved_aside(caplog):
+    world = _world(
+        [
+            {"name": "apple", "type": "apple", "position": [0.0, -0.2]},
+            {"name": "white_plate", "type": "white_plate", "position": [0.05, 0.12]},
+            {"name": "red_box", "type": "red_box", "position": [0.15, -0.1]},
+        ]
+    )
+    with MujocoBackend(world, robot="panda", settle=0.5) as backend:
+        tools = build_tools(backend)
+        gt = backend.ground_truth
+        _pick(tools, "apple")
+        # Both given: the position, on the plate (its height), not the plate's own choice of spot.
+        plate = gt.box("white_plate")
+        target = plate.center + np.array([0.02, 0.0, 0.3])
+        with caplog.at_level(logging.INFO, logger="roboscript.notices"):
+            pose = tools.parse_place_pose("apple", "white_plate", position=target)
+        assert not caplog.records
+        _put(tools, "apple", pose)
+        apple = gt.box("apple")
+        assert np.linalg.norm(apple.center[:2] - target[:2]) < 0.02
+        assert apple.lower[2] > plate.lower[2] and apple.lower[2] < plate.upper[2] + 0.01
+        # Where the red box stands: moved to the nearest free spot, and the move is told.
+        _pick(tools, "apple")
+        box = gt.box("red_box").center
+        with caplog.at_level(logging.INFO, logger="roboscript.notices"):
+            pose = tools.parse_place_pose("apple", position=box + np.array([0.04, 0.0, 0.0]))
+        assert any("cm away" in r.getMessage() for r in caplog.records)
+        _put(tools, "apple", pose)
+        apple = gt.box("apple")
+        moved = np.linalg.norm(apple.center[:2] - box[:2] - np.array([0.04, 0.0]))
+        assert 0.0 < moved <= NEAREST_BOUND + 0.015
+        assert apple.lower[2] < gt.box("table").upper[2] + 0.02  # on the table, not on the box
+
+
+def test_no_free_spot_within_the_bound_says_how_far_the_nearest_is():
+    world = _world(
+        [
+            {"name": "apple", "type": "apple", "position": [0.0, -0.2]},
+            {"name": "basket", "type": "basket", "position": [0.05, 0.15]},
+        ]
+    )
+    with MujocoBackend(world, robot="panda", settle=0.5) as backend:
+        tools = build_tools(backend)
+        _pick(tools, "apple")
+        # 15 cm past the edge of the table (y up to 0.9 m): the nearest spot on it is further than 15 cm.
+        with pytest.raises(PlacementError, match=r"within 15 cm.*the nearest free spot on 'table' is \d+ cm away"):
+            tools.parse_place_pose("apple", position=[0.0, 1.05, 0.0])
