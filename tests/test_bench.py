@@ -205,3 +205,34 @@ def test_a_run_stopped_with_sigterm_leaves_no_trial_running(tmp_path):
         if state != "Z":  # a zombie has exited: it only waits to be reaped (by init, here)
             alive[pid] = command
     assert alive == {}, f"left running: {alive}"
+
+
+JSON_LOOKING = """print('{"task": "not the report", "whole_task_success": 1.0}')
+print('[1, 2, 3]')
+open_gripper()
+grasp(parse_central_lift_grasp_pose('apple', 'center'))
+close_gripper()
+attach_object('apple')
+beside = get_object_center_position('footed_bowl') + np.array([0.0, -0.12, 0.0])
+move_to_pose(parse_place_pose('apple', 'table', position=beside))
+open_gripper()
+detach_object('apple')
+print('}')
+"""
+
+
+def test_exec_json_is_one_document_whatever_the_program_and_the_tools_print(tmp_path):
+    """Lines that look like JSON from the program, and a tool's notice (the apple's spot, taken by the bowl's rim,
+    moved aside), go into the trial's output, never onto stdout beside the document."""
+    program = tmp_path / "program.py"
+    program.write_text(JSON_LOOKING)
+    command = [sys.executable, "-m", "roboscript.cli", "exec", str(program), "--task", "simple_0", "--trials", "1"]
+    out = subprocess.run([*command, "--json"], capture_output=True, text=True, timeout=600)
+    assert out.returncode == 0, out.stderr
+    result = json.loads(out.stdout)  # the whole of stdout, not its last line
+    trial = result["per_trial"][0]
+    assert trial["error"] is None, trial["error"]
+    lines = trial["output"].splitlines()
+    assert lines[:2] == ['{"task": "not the report", "whole_task_success": 1.0}', "[1, 2, 3]"]
+    assert any(line.startswith("[notice] parse_place_pose:") and "cm away" in line for line in lines)
+    assert lines[-1] == "}"

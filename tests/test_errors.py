@@ -11,8 +11,8 @@ from roboscript.bench.task_file import TaskFileError
 from roboscript.codegen.outcomes import Outcome
 from roboscript.codegen.sandbox import classify_exception
 from roboscript.errors import FailureError, RoboScriptError, UsageError, error_message
-from roboscript.perception.base import UnknownObjectError
 from roboscript.grasping.heuristics import GraspError
+from roboscript.perception.base import UnknownObjectError
 from roboscript.planning.errors import IKError, PlannerTimeoutError, TrackingError, UnknownPlannerError
 from roboscript.sim.world_file import WorldFileError
 

@@ -4,6 +4,7 @@ generated benchmark and verified data sets."""
 from __future__ import annotations
 
 import json
+import math
 import re
 from collections import Counter
 from pathlib import Path
@@ -22,12 +23,12 @@ from roboscript.cli import main
 from roboscript.codegen.checker import check_program
 from roboscript.generate.dataset import export_records, generate_dataset, schema
 from roboscript.generate.describe import describe_scene
-from roboscript.generate.families import FAMILIES
+from roboscript.generate.families import FAMILIES, FIRST_FAMILIES
 from roboscript.generate.preview import settle
 from roboscript.generate.recipe import RecipeFileError, load_recipe, parse_recipe
 from roboscript.generate.suite import generate_tasks, write_suite
 from roboscript.generate.worlds import generate_world
-from roboscript.sim.world_file import parse_world
+from roboscript.sim.world_file import WorldFileError, parse_world
 
 RECIPE = load_recipe()
 
@@ -132,7 +133,7 @@ def test_near_holds_beside_and_not_on_top_or_far():
 
 
 def test_every_family_instantiates_with_checks_that_load_and_programs_that_pass_the_checker(tmp_path):
-    tasks = generate_tasks(RECIPE, 30, 0)
+    tasks = generate_tasks(RECIPE, 30, 0, more=[(load_recipe("cupboard"), 10)])
     families = Counter(t.task.family.removeprefix("sort_by_").replace("colour", "sort").replace("kind", "sort")
                        for t in tasks)  # fmt: skip
     assert set(families) == set(FAMILIES), families
@@ -151,6 +152,7 @@ def test_the_generated_benchmark_is_packaged_and_made_again_by_its_command(tmp_p
     assert len(suite) >= 200 and len(worlds) >= 50
     assert {t.label for t in suite.values()} >= {
         "into_container", "onto_plate", "into_drawer", "stack", "swap", "clear_table", "next_to", "sort_by_colour",
+        "open_door", "close_drawer",
     }  # fmt: skip
     packaged = Path(next(iter(suite.values())).reference).parent.parent
     description = yaml.safe_load((packaged / "generated.yaml").read_text())["description"]
@@ -256,3 +258,31 @@ def test_a_dataset_from_an_llm_keeps_the_program_it_wrote(tmp_path):
     (record,) = outcome.records
     assert record.program_source == spec and record.program.startswith("# Written by the model.")
     jsonschema.validate(json.loads((tmp_path / "dataset.jsonl").read_text()), schema())
+
+
+def test_families_added_later_leave_the_tasks_of_earlier_worlds_as_they_were():
+    """Version 3 added the door and drawer-closing families: the tabletop worlds keep the tasks version 2 gave
+    them, and the families that fit no tabletop (no door, no open drawer) never show there."""
+    first = [(t.id, t.task) for t in generate_tasks(RECIPE, 20, 0, families=list(FIRST_FAMILIES))]
+    now = [(t.id, t.task) for t in generate_tasks(RECIPE, 20, 0)]
+    assert now == first
+
+
+def test_a_world_may_start_with_a_drawer_pulled_out_and_a_door_ajar():
+    world = parse_world(
+        {
+            "name": "ajar",
+            "furniture": [
+                {"name": "cabinet", "type": "cabinet", "position": [-0.4, 0.6], "width": 0.4,
+                 "rows": [{"kind": "drawer", "open": 0.15}, "drawer", {"kind": "door", "open": 30}]}
+            ],
+            "objects": [],
+        }
+    )  # fmt: skip
+    with MujocoBackend(world, robot="panda", settle=0.3) as backend:
+        assert backend.ground_truth.joint("cabinet.drawer_0").value == pytest.approx(0.15, abs=0.005)
+        assert backend.ground_truth.joint("cabinet.drawer_1").value == pytest.approx(0.0, abs=0.005)
+        assert backend.ground_truth.joint("cabinet.door_0").value == pytest.approx(math.radians(30), abs=0.01)
+    with pytest.raises(WorldFileError, match=r"rows\[0\]: row open must be between 0 and 0.25 m"):
+        parse_world({"name": "x", "furniture": [{"name": "c", "type": "cabinet", "position": [0, 0.6],
+                     "rows": [{"kind": "drawer", "open": 0.5}]}], "objects": []})  # fmt: skip

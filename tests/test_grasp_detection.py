@@ -6,7 +6,6 @@ import numpy as np
 
 from roboscript.api.spots import Footprint, fits, gap, spots_in_receptacle
 from roboscript.geometry import Box3D, Transform
-from roboscript.perception.base import ObjectPoints, Receptacle
 from roboscript.grasping.detection import (
     GraspPreferences,
     GripperGeometry,
@@ -16,6 +15,7 @@ from roboscript.grasping.detection import (
     falls_free,
     object_middle,
 )
+from roboscript.perception.base import ObjectPoints, Receptacle
 
 
 def box_surface(center, half, spacing=0.004, skip_bottom=True):

@@ -10,8 +10,8 @@ import pytest
 
 from roboscript.assembly import build_tools
 from roboscript.backends.mujoco_backend import MujocoBackend
-from roboscript.objects import object_types
 from roboscript.grasping.heuristics import GraspError
+from roboscript.objects import object_types
 from roboscript.sim.world_file import parse_world
 
 # Shapes an arm's parallel gripper (Panda 8 cm, 2F-85 8.5 cm opening) cannot pick from a table, with the reason.

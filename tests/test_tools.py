@@ -12,8 +12,8 @@ from roboscript.api.signature import ToolCallError
 from roboscript.assembly import build_tools
 from roboscript.backends.mujoco_backend import MujocoBackend
 from roboscript.geometry import Transform
-from roboscript.perception.base import UnknownObjectError
 from roboscript.grasping.heuristics import GraspError
+from roboscript.perception.base import UnknownObjectError
 from roboscript.perception.ground_truth import GroundTruthPerception
 from roboscript.planning.errors import PlanningError
 from roboscript.planning.ground_truth_scene import ground_truth_motion

@@ -122,6 +122,9 @@ def _print_result(result: dict) -> None:
         passed = sum(c["passed"] for c in trial["checks"])
         line = f"  trial {trial['trial']} (seed {trial['seed']}): {passed}/{len(trial['checks'])} checks"
         line += f", sim {trial['sim_time_s']:.1f} s, wall {trial['wall_time_s']:.1f} s"
+        printed = trial.get("output", "").strip()
+        if printed:
+            line += "\n    output:" + "".join(f"\n      {text}" for text in printed.splitlines())
         if trial["error"]:
             line += f"\n    error: {trial['error']}"
         for check in trial["checks"]:

@@ -92,17 +92,22 @@ def cmd_benchmark(args: argparse.Namespace) -> int:
     from roboscript.generate.suite import generate_tasks, write_suite
 
     recipe = load_recipe(args.recipe)
-    tasks = generate_tasks(recipe, args.worlds, args.seed, args.families, args.per_world)
+    more = _more_worlds(args.more)
+    tasks = generate_tasks(recipe, args.worlds, args.seed, args.families, args.per_world, more=more)
+    worlds = f"{args.worlds} worlds generated from recipe {recipe.name!r}" + "".join(
+        f" and {count} from {r.name!r}" for r, count in more
+    )
+    command = f"roboscript generate benchmark --worlds {args.worlds} --seed {args.seed}" + "".join(
+        f" --more {spec}" for spec in args.more
+    )
     description = (
-        f"Template tasks of {len({t.task.family for t in tasks})} families over {args.worlds} worlds generated from "
-        f"recipe {recipe.name!r} with seed {args.seed}, the oracle programs as reference "
-        f"(`roboscript generate benchmark --worlds {args.worlds} --seed {args.seed}`)."
+        f"Template tasks of {len({t.task.family for t in tasks})} families over {worlds} with seed {args.seed}, "
+        f"the oracle programs as reference (`{command}`)."
     )
     path = write_suite(tasks, args.out, args.name, description)
     counts = Counter(t.task.family for t in tasks)
-    print(
-        f"{len(tasks)} tasks over {args.worlds} worlds in {path}: " + ", ".join(f"{f} {n}" for f, n in counts.items())
-    )
+    made = len({t.world.name for t in tasks})
+    print(f"{len(tasks)} tasks over {made} worlds in {path}: " + ", ".join(f"{f} {n}" for f, n in counts.items()))
     return 0
 
 
@@ -143,12 +148,28 @@ def _families(text: str) -> list[str]:
     return names
 
 
+def _more_worlds(specs: list[str]) -> list:
+    """``RECIPE:N`` entries of ``--more`` as ``(recipe, N)``."""
+    from roboscript.generate.recipe import load_recipe
+
+    out = []
+    for spec in specs:
+        name, _, count = spec.rpartition(":")
+        if not name or not count.isdigit() or int(count) < 1:
+            raise SystemExit(f"--more takes RECIPE:N with N a whole number from 1 (e.g. cupboard:20), got {spec!r}")
+        out.append((load_recipe(name), int(count)))
+    return out
+
+
 def _task_options(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("--worlds", type=int, required=True, help="how many worlds to generate")
     parser.add_argument("--seed", type=int, default=0, help="world i of seed S is the same in every run")
     parser.add_argument("--recipe", default="tabletop", help="a packaged recipe (tabletop) or a recipe file")
     parser.add_argument("--families", type=_families, default=None, help="comma-separated families (default: all)")
     parser.add_argument("--per-world", type=int, default=4, help="tasks of distinct families per world, at most")
+    parser.add_argument(
+        "--more", action="append", default=[], metavar="RECIPE:N", help="N further worlds of RECIPE (repeatable)"
+    )
 
 
 def add_generate_commands(sub) -> None:

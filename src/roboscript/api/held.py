@@ -89,9 +89,11 @@ class PlanningFollower:
         self.contacts = contacts
 
     def taken(self, name: str, is_object: bool, gripper: Transform) -> None:
-        self.contacts.allow_touch([name])  # a drawer with its handle: it moves on its joint, or with its drawer
         if is_object:
+            self.contacts.allow_touch([name])
             self.motion.attach(name)
+        else:  # a drawer or door with its handle: it moves on its joint, with the hand
+            self.contacts.hold_part(name)
 
     def let_go(self, name: str, is_object: bool, gripper: Transform) -> None:
         if is_object:

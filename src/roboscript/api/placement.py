@@ -36,6 +36,7 @@ PLACE_PATH_SCREENS = 3  # planner runs per parse_place_pose call that check a pl
 PLACE_IK_QUICK = (8, 24)  # IK attempts (wanted, at most) per place pose screened
 PLACE_IK_WIDE = (24, 200)  # the same where the quick screen reached no spot
 PLACE_IK_BUDGET = 96  # IK screens per parse_place_pose call (each costs a few milliseconds to ~0.1 s)
+PLACE_IK_BUDGET_NEAR = 200  # the same round a program's position, whose spots are tried one ring after another
 PLACE_RAISE_LIMIT = 0.04  # metres a place pose is raised at most when the held object has sunk in the hand
 # How much higher than resting a held object is tried, lowest first: a longer drop topples tall things.
 PLACE_LIFTS = (0.0, 0.01, 0.02, 0.05, 0.1)
@@ -97,6 +98,7 @@ class PlaceRequest:
     where: str
     target: np.ndarray | None = None
     spacing: float = REPEAT_SPACING
+    budget: int = 0  # IK screens for the search (0: PLACE_IK_BUDGET)
 
 
 class Placer:
@@ -115,7 +117,8 @@ class Placer:
             target = np.asarray(position, dtype=float)
             on = "" if receptacle_name is None else f" on {receptacle_name!r}"
             where = f"at {np.round(target, 3).tolist()}{on} or within {NEAREST_BOUND * 100:.0f} cm of it"
-            return PlaceRequest(self._spots_near(name, receptacle_name, target), where, target, NEAR_SPACING)
+            spots = self._spots_near(name, receptacle_name, target)
+            return PlaceRequest(spots, where, target, NEAR_SPACING, PLACE_IK_BUDGET_NEAR)
         others = [o for o in self.perception.objects() if o not in (name, receptacle_name)]
         receptacle = self._receptacle(receptacle_name, name)
         if receptacle_name == TABLE:
@@ -153,6 +156,10 @@ class Placer:
         # Put down where the arm can take it up again: nearer the base than ASIDE_MIN_REACH, a grasp from above
         # meets the arm's joint limits (a swap's "20 cm towards the robot" from a thing 43 cm out).
         pickable = [s for s in spots if np.linalg.norm(s.center[:2] - self.base_xy) >= ASIDE_MIN_REACH]
+        if kind_of(support.region.name) == "drawer":
+            # Open, a drawer is clear above only on its pulled-out side (its front faces its frame's +x).
+            out = support.region.frame.rotation[:, 0]
+            pickable = [dataclasses.replace(s, open_side=out) for s in pickable or spots]
         if pickable or spots:
             return pickable or spots
         farther = free_spots(ring_candidates(target[:2], REPORT_BOUND, self.base_xy), half, yaw, height, support)
@@ -196,19 +203,19 @@ class Placer:
         box = self.perception.box(name)
         pivot = np.array([footprint_center[0], footprint_center[1], box.center[2]])
         carried = _Carried(tcp, pivot, box.corners() - pivot)
-        spots, where, spacing = request.spots, request.where, request.spacing
-        upright = self._search(carried, spots, PLACE_IK_QUICK, (0.0,), spacing)
+        spots, where, limits = request.spots, request.where, (request.spacing, request.budget or PLACE_IK_BUDGET)
+        upright = self._search(carried, spots, PLACE_IK_QUICK, (0.0,), *limits)
         best = upright.leaving
         leaning: _Search | None = None
         if best is None:
             # A pose the hand cannot back out of straight up would leave a program's own approach from above
             # (or its retreat) no room: leaning out from under what stands over the spot is better.
-            leaning = self._search(carried, spots, PLACE_IK_QUICK, PLACE_LEANS, spacing)
+            leaning = self._search(carried, spots, PLACE_IK_QUICK, PLACE_LEANS, *limits)
             best = leaning.leaving or upright.longest
         if best is None:
             # The quick screen may miss the one IK branch that clears the furniture (a mug going into a drawer
             # pulled 20 cm, at the edge of the Panda's reach): the spots are searched again, widely.
-            best = self._search(carried, spots, PLACE_IK_WIDE, (0.0,), spacing).longest
+            best = self._search(carried, spots, PLACE_IK_WIDE, (0.0,), *limits).longest
         if best is None and leaning is not None:
             best = leaning.longest
         if best is None:
@@ -350,6 +357,7 @@ class Placer:
         search: tuple[int, int],
         leans: tuple[float, ...],
         spacing: float = REPEAT_SPACING,
+        budget: int = PLACE_IK_BUDGET,
     ) -> _Search:
         """Spots in order (skipping near-repeats of spots that failed), for a collision-free IK from which the
         hand can also retreat straight up (:data:`PLACE_RETREAT`), as a place's retreat would: a hand put down
@@ -363,7 +371,7 @@ class Placer:
         q = self.motion.sync()
         found = _Search()
         tried: list[PlacementSpot] = []
-        budget, screens = PLACE_IK_BUDGET, PLACE_PATH_SCREENS
+        screens = PLACE_PATH_SCREENS
         done = False
         for spot in spots:
             if budget <= 0 or done:

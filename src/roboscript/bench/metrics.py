@@ -45,6 +45,7 @@ def task_result(task: str, robot: str, records: Sequence[TrialRecord]) -> dict:
                 "sim_time_s": r.sim_time_s,
                 "wall_time_s": r.wall_time_s,
                 "judged_by": r.judged_by,
+                "output": r.output,
             }
             for r in ordered
         ],

@@ -16,10 +16,20 @@ from dataclasses import dataclass
 import numpy as np
 
 from roboscript.generate.describe import ORDINALS
-from roboscript.generate.programs import OPEN_DRAWER, SPOT_BESIDE, Program, move_into, move_to, words
+from roboscript.generate.programs import (
+    CLOSE_DRAWER,
+    OPEN_DOOR,
+    OPEN_DRAWER,
+    SPOT_BESIDE,
+    Program,
+    move_into,
+    move_to,
+    words,
+)
 from roboscript.generate.scene import DRAWER_HEIGHT_LIMIT, KINDS, Scene, fits, in_or_on, room_for
 from roboscript.objects.reading import said_colour, said_kind
 
+DRAWER_SHUT = 0.03  # metres a drawer may stay out and count as closed
 NEAR_GAP = 0.03  # how far beside its target the oracle puts a thing (the `near` check allows 8 cm)
 
 
@@ -86,9 +96,11 @@ def onto_plate(scene: Scene, rng: np.random.Generator) -> TemplateTask | None:
 def into_drawer(scene: Scene, rng: np.random.Generator) -> TemplateTask | None:
     """Open a drawer of the cabinet and put a thing into it."""
     things = [t for t in scene.on_table if scene.type(t).size[2] <= DRAWER_HEIGHT_LIMIT]
-    if not scene.drawers or not things:
+    # A drawer pulled out stands in the way of the hand coming for the handles below it.
+    closed = [d for d in scene.drawers if not scene.opened(d)] if not scene.any_open else []
+    if not closed or not things:
         return None
-    drawer, thing = _one(rng, scene.drawers), _one(rng, things)
+    drawer, thing = _one(rng, closed), _one(rng, things)
     handle = scene.handle_of(drawer)
     ordinal = ORDINALS[scene.drawers.index(drawer)]
     instruction = _one(
@@ -292,6 +304,49 @@ def next_to(scene: Scene, rng: np.random.Generator) -> TemplateTask | None:
     return TemplateTask("next_to", instruction, ({"near": [thing, target]},), program.text())
 
 
+DOOR_OPEN = 0.7  # radians (40 degrees) past which a door counts as open
+
+
+def open_door(scene: Scene, rng: np.random.Generator) -> TemplateTask | None:
+    """Open a door of the cabinet (a revolute joint: an arc about its hinge)."""
+    doors = [d for d in scene.doors if not scene.opened(d)] if not scene.any_open else []
+    if not doors:
+        return None
+    door = _one(rng, doors)
+    which = "the cabinet door" if len(scene.doors) == 1 else f"the {ORDINALS[scene.doors.index(door)]} cabinet door"
+    instruction = _one(rng, [f"open {which}", f"swing {which} open", f"open {which} wide"])
+    handle = scene.handle_of(door)
+    program = Program(instruction).use(OPEN_DOOR)
+    program.step(
+        f"The door turns on its hinge: swing it open by its handle ({handle}).", f"open_door({door!r}, {handle!r})"
+    )
+    return TemplateTask("open_door", instruction, ({"joint": door, "above": DOOR_OPEN},), program.text())
+
+
+def close_drawer(scene: Scene, rng: np.random.Generator) -> TemplateTask | None:
+    """Close a drawer the world starts with pulled out."""
+    opened = [d for d in scene.drawers if scene.opened(d)]
+    if not opened:
+        return None
+    drawer = _one(rng, opened)
+    ordinal = ORDINALS[scene.drawers.index(drawer)]
+    instruction = _one(
+        rng, ["close the open drawer", f"close the {ordinal} drawer of the cabinet", "push the open drawer shut"]
+    )
+    handle = scene.handle_of(drawer)
+    program = Program(instruction).use(CLOSE_DRAWER)
+    program.step(
+        f"The {ordinal} drawer is pulled out: push it shut by its handle ({handle}).",
+        f"close_drawer({drawer!r}, {handle!r})",
+    )
+    checks = ({"joint": drawer, "above": DRAWER_SHUT, "not": True},)
+    return TemplateTask("close_drawer", instruction, checks, program.text())
+
+
+# The families of the generated suite's version 1, in their order (see roboscript.generate.suite.world_tasks).
+FIRST_FAMILIES = (
+    "into_container", "onto_plate", "into_drawer", "stack", "swap", "sort", "clear_table", "next_to"
+)  # fmt: skip
 FAMILIES: dict[str, Family] = {
     "into_container": into_container,
     "onto_plate": onto_plate,
@@ -301,4 +356,6 @@ FAMILIES: dict[str, Family] = {
     "sort": sort,
     "clear_table": clear_table,
     "next_to": next_to,
+    "open_door": open_door,
+    "close_drawer": close_drawer,
 }

@@ -43,6 +43,34 @@ OPEN_DRAWER = '''def open_drawer(drawer, handle):
     move_in_direction(axis, distance=0.03)
 '''
 
+OPEN_DOOR = '''def open_door(door, handle):
+    """Swings `door` open by its `handle`, along an arc about its hinge, and lets go of the handle."""
+    open_gripper()
+    grasp(parse_horizontal_grasp_pose(object_name=handle))
+    close_gripper()
+    attach_object(door)
+    handle_position = get_object_center_position(handle)
+    joint_info = get_object_joint_info(obj_name='cabinet', position=handle_position, type='revolute')
+    path = generate_arc_path_around_joint(current_pose=get_gripper_pose(), joint_axis=joint_info['joint_axis'],
+                                          joint_position=joint_info['joint_position'], n=20, angle=70)
+    follow_path(path)
+    open_gripper()
+    detach_object(door)
+'''
+
+CLOSE_DRAWER = '''def close_drawer(drawer, handle):
+    """Pushes `drawer` shut by its `handle`, back along its joint's axis as far as it is open, and lets go."""
+    open_gripper()
+    grasp(parse_horizontal_grasp_pose(object_name=handle))
+    close_gripper()
+    attach_object(drawer)
+    handle_position = get_object_center_position(handle)
+    joint_info = get_object_joint_info(obj_name='cabinet', position=handle_position, type='prismatic')
+    move_in_direction(joint_info['joint_axis'], distance=-joint_info['joint_value'])
+    open_gripper()
+    detach_object(drawer)
+'''
+
 SPOT_BESIDE = '''def spot_beside(target, name, obstacles):
     """A free place on the table right beside `target` for `name`: left, right, nearer or farther, the first
     side where `name` clears every obstacle and stays within the arm's comfortable reach."""

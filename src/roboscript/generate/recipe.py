@@ -49,6 +49,9 @@ class CabinetRecipe:
     keep_clear_x: Range
     keep_clear_y: Range
     spacing: float  # kept between the cabinet's sides and anything on the table
+    # The chance that one of its top two drawers starts pulled out, and how far (metres): worlds for closing one.
+    start_open: float = 0.0
+    open_distance: Range = Range(0.0, 0.0)
 
 
 @dataclass(frozen=True)
@@ -118,8 +121,14 @@ def _types(entry: Reader, names: Any, what: str) -> tuple[str, ...]:
 def _parse_cabinet(source: str, data: Any) -> CabinetRecipe | None:
     if data is None:
         return None
-    fields = {"probability", "position", "width", "rows", "keep_clear", "spacing"}
+    fields = {"probability", "position", "width", "rows", "keep_clear", "spacing", "start_open"}
     entry = Reader(source, "cabinet", data, fields, RecipeFileError)
+    opening = Reader(
+        source, "cabinet.start_open", entry.data.get("start_open", {}), {"probability", "distance"}, RecipeFileError
+    )
+    distance = _range(opening, "distance") if "distance" in opening.data else Range(0.0, 0.0)
+    if distance.low < 0.0 or distance.high > 0.25:
+        opening.fail(f"field 'distance' is how far a drawer starts pulled out, within 0..0.25 m; got {distance}")
     rows = entry.data.get("rows", ["drawer", "drawer", "drawer"])
     if not isinstance(rows, list) or not rows or any(r not in ("drawer", "door") for r in rows):
         entry.fail(f"field 'rows' must be a non-empty list of 'drawer' or 'door', got {rows!r}")
@@ -132,6 +141,8 @@ def _parse_cabinet(source: str, data: Any) -> CabinetRecipe | None:
         keep_clear_x=_range(clear, "x"),
         keep_clear_y=_range(clear, "y"),
         spacing=_spacing(entry),
+        start_open=_probability(opening, "probability", 0.0),
+        open_distance=distance,
     )
 
 

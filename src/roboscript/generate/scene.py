@@ -111,6 +111,19 @@ class Scene:
         drawers = [p for p in self.world.part_names() if kind_of(p) == "drawer"]
         return drawers[:DRAWERS_USED]
 
+    @cached_property
+    def doors(self) -> list[str]:
+        return [p for p in self.world.part_names() if kind_of(p) == "door"]
+
+    @cached_property
+    def any_open(self) -> bool:
+        """Whether the world starts with a drawer or door open."""
+        return any(row.open for c in self.world.cabinets for row in c.rows)
+
+    def opened(self, part: str) -> float:
+        """How far a drawer (metres) or door (radians) starts open."""
+        return next((row.open for c in self.world.cabinets for row, name in c.row_parts() if name == part), 0.0)
+
     def handle_of(self, drawer: str) -> str:
         """The handle of ``drawer``: handles are numbered by row, drawers among drawers."""
         cabinet = next(c for c in self.world.cabinets if drawer.startswith(f"{c.name}."))

@@ -17,6 +17,7 @@ import numpy as np
 import yaml
 
 from roboscript.generate.recipe import Recipe
+from roboscript.generate.scene import DRAWERS_USED
 from roboscript.objects import get_object_type
 from roboscript.sim.world_file import ROBOT_BASE_XY, WorldFileError, WorldSpec, parse_world, placements_overlap
 
@@ -68,7 +69,12 @@ def _arrange(recipe: Recipe, rng: np.random.Generator, name: str, origin: str) -
     data: dict = {"name": name, "description": f"Generated ({origin}).", "robot": recipe.robot}
     cabinet = recipe.cabinet
     if cabinet is not None and rng.random() < cabinet.probability:
-        rows = list(cabinet.rows)
+        rows: list = list(cabinet.rows)
+        if cabinet.start_open and rng.random() < cabinet.start_open:
+            drawers = [k for k, row in enumerate(rows) if row == "drawer"][:DRAWERS_USED]
+            k = drawers[int(rng.integers(len(drawers)))]
+            pulled = cabinet.open_distance.low + rng.random() * (cabinet.open_distance.high - cabinet.open_distance.low)
+            rows[k] = {"kind": "drawer", "open": round(float(pulled), 3)}
         data["furniture"] = [
             {"name": "cabinet", "type": "cabinet", "position": list(cabinet.position), "width": cabinet.width,
              "rows": rows}

@@ -23,6 +23,7 @@ from roboscript.grasping.detection import (
 )
 from roboscript.grasping.heuristics import GraspError, central_lift_grasps, horizontal_grasps
 from roboscript.names import kind_of
+from roboscript.notices import notice
 from roboscript.perception.base import ObjectPoints, Perception
 from roboscript.planning.contacts import ContactAllowances
 from roboscript.planning.errors import IKError, PlanningError
@@ -72,8 +73,20 @@ class GraspChooser:
         return self.first_reachable(name, candidates, "central lift")
 
     def horizontal(self, name: str, approach: np.ndarray | None) -> Transform:
-        candidates = horizontal_grasps(self.perception, name, approach, self.gripper.max_width, self.base_xy)
-        return self.first_reachable(name, candidates, "horizontal")
+        """A level (or tilted) grasp; for an object none of which the arm can take (a cup whose rim is wider than
+        the Panda's opening, its body too near the table for the wrist), the best grasp of its shape instead, with
+        a notice: the program asked for a way to pick the object up, and a refusal would leave it none."""
+        try:
+            candidates = horizontal_grasps(self.perception, name, approach, self.gripper.max_width, self.base_xy)
+            return self.first_reachable(name, candidates, "horizontal")
+        except (GraspError, PlanningError) as exc:
+            if name not in self.perception.objects():
+                raise
+            why = str(exc).split("; first failure")[0]
+        # From above: a rim taken from the side leaves a finger hooked inside the cup when it is let go.
+        pose = self.adaptive(name, GraspPreferences(approach=np.array([0.0, 0.0, -1.0])))
+        notice(f"parse_horizontal_grasp_pose: {why}; taking the best grasp of its shape from above instead")
+        return pose
 
     def adaptive(self, name: str, preferences: GraspPreferences) -> Transform:
         """Antipodal grasps over the observed points, ranked together with the box grasps that fit by one score:

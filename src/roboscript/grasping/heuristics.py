@@ -79,6 +79,7 @@ def central_lift_grasps(
 
 
 SHALLOWEST = 0.018  # metres below an object's top: the shallowest top-down grasp (fingertip pads are ~2 cm)
+FINGER_PAD = 0.01  # metres: half the height of a fingertip pad
 RIM_GRIP = 0.02  # metres below a tall object's top where the higher horizontal grip closes (a cup at its rim)
 HAND_CLEARANCE = 0.008  # metres kept between an object's top and the hand behind the fingers
 
@@ -126,6 +127,16 @@ def _handle_normal(perception: Perception, name: str, box) -> np.ndarray:
     return normal / max(float(np.linalg.norm(normal)), 1e-9)
 
 
+def _swept_width(points: np.ndarray, approach: np.ndarray, closing: np.ndarray, height: float, tilt: float) -> float:
+    """How wide the object is, across ``closing``, where fingers coming in tilted ``tilt`` radians down along
+    ``approach`` to ``height`` pass it: from that height up to where they cross its near side."""
+    if not len(points):
+        return 0.0
+    top = height + math.tan(tilt) * _extent(points, approach) / 2 + FINGER_PAD
+    swept = points[(points[:, 2] > height - FINGER_PAD) & (points[:, 2] < top)]
+    return _extent(swept, closing) if len(swept) else 0.0
+
+
 def _level_grasps(
     box,
     is_handle: bool,
@@ -135,8 +146,11 @@ def _level_grasps(
     yaws: list[float],
     height: float,
     max_width: float,
+    all_points: np.ndarray,
 ) -> list[Transform]:
-    """The horizontal grasps at one ``height`` (for handles, their bar), one per approach yaw that fits."""
+    """The horizontal grasps at one ``height`` (for handles, their bar), one per approach yaw that fits: across
+    the points at that height (``points``) and, for a grasp tilted down, across all the fingers sweep past on
+    their way in (``all_points``: a cup's rim is wider than its body lower down)."""
     size = box.size
     out = []
     # Level with the middle of a low object, the hand (6.6 cm tall across a horizontal closing) would touch its
@@ -163,7 +177,9 @@ def _level_grasps(
         else:
             closing = np.cross(np.array([0.0, 0.0, 1.0]), a)
             across = _extent(points, closing) if len(points) else float(np.abs(closing) @ size)
-            if across > max_width - 0.003:
+            if across > max_width - 0.003 or (
+                tilt and _swept_width(all_points, a, closing, height, tilt) > max_width - 0.003
+            ):
                 continue
             target = np.array([box.center[0], box.center[1], height])
             outward = np.array([0.0, 0.0, -1.0])
@@ -213,7 +229,9 @@ def horizontal_grasps(
     all_points = perception.points(name).points if not is_handle else np.zeros((0, 3))
     for height in heights:
         points = _finger_band(all_points, height) if not is_handle else all_points
-        candidates += _level_grasps(box, is_handle, points, approach, outward_normal, yaws, height, max_width)
+        candidates += _level_grasps(
+            box, is_handle, points, approach, outward_normal, yaws, height, max_width, all_points
+        )
     if not candidates:
         raise GraspError(
             f"{name!r} is wider than the gripper's {max_width * 100:.1f} cm opening from every horizontal approach "

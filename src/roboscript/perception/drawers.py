@@ -31,6 +31,7 @@ FACING_UP = 0.7  # least vertical component of the normal of a point on the bott
 FACING_IN = 0.5  # least component across the drawer of the normal of a point on a wall's inner face
 MIN_COVER = 0.4  # share of the cells across the bottom's extent its points must fall in (walls give two lines)
 MIN_DEPTH = 0.05  # metres: the least height given to the inside (walls not seen)
+WALL = 0.02  # metres taken off all round an inside not seen: the tray's walls and floor, and a margin
 
 
 def opening_frame(joint: ArticulationJoint) -> Transform:
@@ -95,6 +96,20 @@ def drawer_receptacle(
         top = min(top, front_top)
     top = max(top, floor + MIN_DEPTH)
     return Receptacle(name, frame, np.array([back, left, floor]), np.array([max(front, back), right, top]))
+
+
+def unseen_inside(name: str, points: np.ndarray, frame: Transform, carcass_x: float) -> Receptacle:
+    """The inside of a drawer pulled out (its front stands ``-carcass_x`` metres before the carcass) whose bottom
+    no camera saw (the arm that pulled it stood in the way): from the front panel back to the carcass, across the
+    front and from its lower edge up, less :data:`WALL` all round, for the walls and the floor not seen."""
+    local = frame.inverse().apply(points)
+    front = local[local[:, 0] > -PANEL_SEARCH]
+    left, right = (float(v) for v in np.percentile(front[:, 1], [1, 99]))
+    low, high = (float(v) for v in np.percentile(front[:, 2], [1, 99]))
+    back = carcass_x + DRAWER_FRONT_CLEARANCE
+    lower = np.array([back, left + WALL, low + WALL])
+    upper = np.array([-WALL, right - WALL, max(high, low + WALL + MIN_DEPTH)])
+    return Receptacle(name, frame, lower, np.maximum(upper, lower))
 
 
 def closed_drawer(name: str, points: np.ndarray, frame: Transform) -> Receptacle:

@@ -20,6 +20,7 @@ takes it from ground truth.
 
 from __future__ import annotations
 
+import dataclasses
 import math
 from collections.abc import Iterator, Sequence
 from contextlib import contextmanager
@@ -42,7 +43,13 @@ from roboscript.perception.base import (
     UnknownObjectError,
     outside,
 )
-from roboscript.perception.drawers import carcass_front, closed_drawer, drawer_receptacle, opening_frame
+from roboscript.perception.drawers import (
+    carcass_front,
+    closed_drawer,
+    drawer_receptacle,
+    opening_frame,
+    unseen_inside,
+)
 from roboscript.perception.faces import plane_normal_at
 from roboscript.perception.footprints import footprint_of
 from roboscript.perception.fusion import FusionSettings
@@ -63,6 +70,7 @@ SURFACE_STRIDE = 2  # every how many depth pixels one stands for the observed su
 HANDLE_PROUD = 0.004  # metres out of its front from which a point is the handle's, not the front's
 MOVED = 0.005  # metres the gripper must have moved since a look for another look to be worth it
 SETTLE_INSET = 0.01  # metres: the footprint a let-go object falls within, shrunk by this; smaller drops are none
+OPEN_DRAWER = 0.04  # metres a drawer's front must stand out of its cabinet's for it to count as open
 
 
 class ObjectNotFoundError(UnknownObjectError):
@@ -135,7 +143,8 @@ class PipelinePerception(Perception):
         self._stale = False
         self._joints: dict[str, ArticulationJoint] = {}  # estimated from the last look, by moving part
         # The best-borne estimate of each part's joint so far: (points on its front's plane, joint, handle centre).
-        self._best_joint: dict[str, tuple[int, ArticulationJoint, np.ndarray]] = {}
+        # Per part: the support of its best joint estimate, the joint, and where its handle and front stood then.
+        self._best_joint: dict[str, tuple[int, ArticulationJoint, np.ndarray, np.ndarray]] = {}
         self._vacated: list[Box3D] = []  # where objects were taken from since the last look
         self._holding_looks = False
         self._look_tcp: np.ndarray | None = None  # where the gripper was at the last look
@@ -441,18 +450,21 @@ class PipelinePerception(Perception):
                 part, self.names(), f"its front was not seen well enough to estimate its joint ({points} points)"
             )
         handle = self._handle(part)
-        if self._part_look[handle] != self._part_look[part]:
+        best = self._best_joint.get(part)
+        if self._part_look[handle] == self._part_look[part]:
+            handle_center = self.parts_seen[handle].points.mean(axis=0)
+        elif best is not None:
+            # The handle hidden in the front's look (by the hand, or what it carries): a part moves as one body,
+            # so its handle stands where it stood beside the front when both were last seen together.
+            handle_center = front.mean(axis=0) + best[2] - best[3]
+        else:
             why = (
                 f"its front and its handle {handle!r} were last seen in different looks ({self._part_look[part]} and "
                 f"{self._part_look[handle]}), and its joint is estimated from both as they stand together"
             )
             raise ObjectNotFoundError(part, self.names(), why)
-        handle_center = self.parts_seen[handle].points.mean(axis=0)
-        best = self._best_joint.get(part)
         try:
-            joint, support = estimate_joint(
-                labelled.type, part, front, handle_center, self.parts_seen[part].normals
-            )
+            joint, support = estimate_joint(labelled.type, part, front, handle_center, self.parts_seen[part].normals)
         except ValueError as exc:
             if best is None:
                 raise ObjectNotFoundError(part, self.names(), f"its joint could not be estimated: {exc}") from exc
@@ -463,9 +475,22 @@ class PipelinePerception(Perception):
         if best is not None and best[0] >= support:
             joint = moved_with_handle(best[1], best[2], handle_center)
         else:
-            self._best_joint[part] = (support, joint, handle_center)
+            self._best_joint[part] = (support, joint, handle_center, front.mean(axis=0))
+        joint = self._with_opening(joint)
         self._joints[part] = joint
         return joint
+
+    def _with_opening(self, joint: ArticulationJoint) -> ArticulationJoint:
+        """A drawer's joint with how far it is pulled out: how far its front stands before its cabinet's (0
+        where the cabinet was not seen well enough to tell)."""
+        furniture = joint.part.split(".", 1)[0]
+        if joint.type != "prismatic" or furniture not in self.parts_seen:
+            return joint
+        try:
+            carcass = carcass_front(self.parts_seen[furniture].points, opening_frame(joint), DRAWER_TRAVEL + 0.05)
+        except ValueError:
+            return joint
+        return dataclasses.replace(joint, value=float(np.clip(-carcass, joint.lower, joint.upper)))
 
     def _handle(self, part: str) -> str:
         """The handle the labels put on ``part`` (the one seen last); "not found" if none was seen."""
@@ -540,6 +565,9 @@ class PipelinePerception(Perception):
             # The arm, which has just pulled the drawer, may have hidden its inside from that look.
             self._look(list(self._asked))
             return self._drawer_inside(name, retried=True)
+        if inside is None and -carcass > OPEN_DRAWER:
+            # Its front stands out of the carcass, so it is open, though no look showed its bottom.
+            return unseen_inside(name, points, frame, carcass)
         return inside if inside is not None else closed_drawer(name, points, frame)
 
     def _may_look_again(self) -> bool:

@@ -53,6 +53,14 @@ class ContactAllowances:
             for part in parts:
                 self.motion.scene.allow("gripper", part, False)
 
+    def hold_part(self, name: str) -> None:
+        """A drawer or door is held: it moves with the hand, while the scene keeps it where it was last seen, so
+        the arm may touch it (and its handle) until it is let go (a wrist following a drawer pushed shut met the
+        drawer's front as the scene still had it)."""
+        self.allow_touch([name])
+        for part in self.family(name):
+            self.motion.scene.allow("arm", part)
+
     def released(self, name: str, is_object: bool) -> None:
         """``name`` was let go: the open fingers may back out of it, never sweep through it (an object put down
         would be knocked over; a handle would be caught)."""
@@ -61,6 +69,7 @@ class ContactAllowances:
         for part in self.family(name):
             if not is_object:
                 scene.allow("gripper", part, False)
+                scene.allow("arm", part, False)
             scene.allow_leaving("gripper", part, q)
         self.touched.add(name)
 

@@ -438,8 +438,8 @@ class PlanningScene:
         return {(self.body_labels[a], self.body_labels[b]) for a, b in self._leaving if a < b}
 
     def has(self, name: str) -> bool:
-        """Whether ``name`` (or "gripper") names something in the scene."""
-        return name == "gripper" or name in self.body_labels
+        """Whether ``name`` (or "gripper", or "arm") names something in the scene."""
+        return name in ("gripper", "arm") or name in self.body_labels
 
     def allowed_names(self) -> set[tuple[str, str]]:
         """The allowed contacts as pairs of names (gripper parts by their body names), to carry them into a
@@ -452,6 +452,9 @@ class PlanningScene:
     def _bodies_named(self, name: str) -> list[int]:
         if name == "gripper":
             return self._gripper_bodies.tolist()
+        if name == "arm":  # the links that move, but for the gripper
+            moving = set(self._moving_bodies.tolist()) - set(self._gripper_bodies.tolist())
+            return sorted(moving)
         bodies = [b for b, label in enumerate(self.body_labels) if label == name]
         if not bodies:
             known = sorted({label for label in self.body_labels if label})

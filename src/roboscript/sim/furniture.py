@@ -39,6 +39,7 @@ class TableSpec:
 class CabinetRow:
     kind: RowKind
     height: float = 0.14
+    open: float = 0.0  # how far it starts open: metres for a drawer, radians for a door
 
 
 @dataclass(frozen=True)
@@ -63,6 +64,11 @@ class CabinetSpec:
     def footprint(self) -> tuple[np.ndarray, np.ndarray, float]:
         """Centre (x, y), half-extents (along local x, y) and yaw of the footprint, handles included."""
         return np.array(self.position), np.array([self.depth / 2 + 0.05, self.width / 2]), self.yaw
+
+    def row_parts(self) -> list[tuple[CabinetRow, str]]:
+        """Each row with the name of its drawer or door, from the top down."""
+        names = self.part_names()
+        return [(row, names[2 * k]) for k, row in enumerate(self.rows)]
 
     def part_names(self) -> list[str]:
         names = []

@@ -180,14 +180,20 @@ def build_world(world: WorldSpec, robot: str | None = None) -> SimWorld:
     data.ctrl[binding.gripper_actuator] = description.gripper.open_ctrl
     for joint, value in zip(description.gripper.joints, description.gripper.open_qpos, strict=True):
         data.qpos[model.joint(ROBOT_PREFIX + joint).qposadr[0]] = value
+    for cabinet in world.cabinets:  # drawers and doors the world starts open
+        for row, part in cabinet.row_parts():
+            data.qpos[model.joint(f"{part}.joint").qposadr[0]] = row.open
     mujoco.mj_forward(model, data)
     entities, geom_entity = _index_entities(model, world, binding)
     return SimWorld(world, model, data, entities, binding, geom_entity)
 
 
 def _without_layout(world: WorldSpec) -> WorldSpec:
-    """``world`` with every object at the origin of its support, unturned: what its compiled model depends on."""
-    return replace(world, objects=tuple(replace(o, position=(0.0,) * len(o.position), yaw=0.0) for o in world.objects))
+    """``world`` with every object at the origin of its support, unturned, and every drawer and door shut: what its
+    compiled model depends on."""
+    closed = tuple(replace(c, rows=tuple(replace(r, open=0.0) for r in c.rows)) for c in world.cabinets)
+    objects = tuple(replace(o, position=(0.0,) * len(o.position), yaw=0.0) for o in world.objects)
+    return replace(world, objects=objects, cabinets=closed)
 
 
 def _compile(world: WorldSpec, description: RobotDescription) -> _Compiled:

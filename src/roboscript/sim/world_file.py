@@ -131,6 +131,8 @@ def _reader(source: str, entry: str, data: Any, allowed: set[str]) -> Reader:
 
 _WORLD_FIELDS = {"name", "description", "robot", "table", "furniture", "objects", "cameras", "randomize"}
 _OBJECT_FIELDS = {"name", "type", "position", "yaw", "on", "inside"}
+DRAWER_OPENS_AT_MOST = 0.25  # metres a world file may start a drawer pulled out (its travel is 75% of the depth)
+DOOR_OPENS_AT_MOST = 90.0  # degrees a world file may start a door open
 _CABINET_FIELDS = {"name", "type", "position", "yaw", "rows", "width", "depth"}
 _CAMERA_FIELDS = {"name", "position", "look_at", "fovy", "width", "height"}
 
@@ -142,14 +144,19 @@ def _parse_rows(reader: Reader, rows: Any) -> tuple[CabinetRow, ...]:
     for i, row in enumerate(rows):
         if isinstance(row, str):
             row = {"kind": row}
-        r = _reader(reader.source, f"{reader.entry}.rows[{i}]", row, {"kind", "height"})
+        r = _reader(reader.source, f"{reader.entry}.rows[{i}]", row, {"kind", "height", "open"})
         kind = r.string("kind")
         if kind not in ("drawer", "door"):
             r.fail(f"row kind must be 'drawer' or 'door', got {kind!r}")
         height = r.number("height", 0.14)
         if not 0.06 <= height <= 0.4:
             r.fail(f"row height must be between 0.06 and 0.4 m, got {height}")
-        out.append(CabinetRow(kind, height))
+        opened = r.number("open", 0.0)
+        most = DRAWER_OPENS_AT_MOST if kind == "drawer" else DOOR_OPENS_AT_MOST
+        if not 0.0 <= opened <= most:
+            unit = "m (a drawer's pull)" if kind == "drawer" else "degrees (a door's swing)"
+            r.fail(f"row open must be between 0 and {most:g} {unit}, got {opened}")
+        out.append(CabinetRow(kind, height, opened if kind == "drawer" else math.radians(opened)))
     return tuple(out)
 
 

@@ -1,0 +1,16 @@
+# Task: close the top drawer of the cabinet.
+# Plan:
+# 1. The top drawer is cabinet.drawer_0, its handle cabinet.handle_0.
+# 2. Grasp the handle horizontally, close the gripper, attach the drawer.
+# 3. Push along the joint axis (-axis) by as far as the drawer is open.
+# 4. Release and back away.
+detect_objects()
+open_gripper()
+grasp(parse_horizontal_grasp_pose(object_name='cabinet.handle_0'))
+close_gripper()
+attach_object('cabinet.drawer_0')
+joint = get_object_joint_info(object_name='cabinet', position=get_object_center_position('cabinet.handle_0'), type='prismatic')
+move_in_direction(joint['joint_axis'], -joint['joint_value'])
+open_gripper()
+detach_object('cabinet.drawer_0')
+move_in_direction(joint['joint_axis'], 0.05)
