@@ -80,9 +80,18 @@ class GraspChooser:
             candidates = horizontal_grasps(self.perception, name, approach, self.gripper.max_width, self.base_xy)
             return self.first_reachable(name, candidates, "horizontal")
         except (GraspError, PlanningError) as exc:
-            if name not in self.perception.objects():
-                raise
-            why = str(exc).split("; first failure")[0]
+            preferred = exc
+        if approach is not None:
+            # A preferred approach is preferred, not demanded: the approaches the tool would take by itself
+            # follow (a drawer pulled out brings its handle to where only a wider turn reaches it).
+            try:
+                candidates = horizontal_grasps(self.perception, name, None, self.gripper.max_width, self.base_xy)
+                return self.first_reachable(name, candidates, "horizontal")
+            except (GraspError, PlanningError):
+                pass
+        if name not in self.perception.objects():
+            raise preferred
+        why = str(preferred).split("; first failure")[0]
         # From above: a rim taken from the side leaves a finger hooked inside the cup when it is let go.
         pose = self.adaptive(name, GraspPreferences(approach=np.array([0.0, 0.0, -1.0])))
         notice(f"parse_horizontal_grasp_pose: {why}; taking the best grasp of its shape from above instead")
