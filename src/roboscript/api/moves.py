@@ -20,12 +20,13 @@ from roboscript.grasping.heuristics import GraspError
 from roboscript.notices import notice
 from roboscript.perception.base import Perception
 from roboscript.planning.contacts import ContactAllowances
-from roboscript.planning.errors import IKError
+from roboscript.planning.errors import IKError, PlanningError
 from roboscript.planning.motion import MotionPlanner
 
 EMPTY_GRIP = 0.002  # metres: fingers closed this far hold nothing
 SAME_ORIENTATION = 0.05  # radians: a move_to_pose turning the hand less is a straight move, a retreat if it backs off
 HOLDING = 0.005  # metres: fingers this much short of fully open hold something
+PULL_LEAST = 0.005  # metres a drawer or door held must move for a pull to count as made
 
 
 class Moves:
@@ -80,11 +81,33 @@ class Moves:
         self.touching.leave_where_started()
         if own is not None and own.kind == "release" and self.retreats.own(unit * distance, own):
             return
+        parts = [name for name in self.held.names if name not in self.held.objects]
+        if parts:
+            self._pull(parts, unit, distance)
+            return
         try:
             self.motion.move_in_direction(unit, distance, plan_if_blocked=True)
         except IKError:
             if not self.retreats.lift_within_reach(unit * distance):
                 raise
+        self.contacts.withdraw_cleared(self.held)
+
+    def _pull(self, parts: list[str], unit: np.ndarray, distance: float) -> None:
+        """A drawer or door held moves the hand only along its joint: a straight line as far as the arm can
+        follow it, never a planned way round (a path that leaves the line drags the hand against the joint), with
+        a notice where that is short of ``distance`` (a drawer pulled 24 cm at the edge of the UR5e's reach)."""
+        length = abs(distance)
+        moved = self.motion.retreat(unit * np.sign(distance), length, least=min(PULL_LEAST, length))
+        if moved <= 0.0:
+            raise PlanningError(
+                f"move_in_direction: holding {', '.join(parts)}, the hand cannot move even {PULL_LEAST * 100:.0f} cm "
+                f"along {np.round(unit * np.sign(distance), 3).tolist()}: the arm's reach or a collision stops it"
+            )
+        if moved < length - 1e-3:
+            notice(
+                f"move_in_direction: moved {moved:.3f} m of {length:.3f} m holding {', '.join(parts)}: the rest is "
+                "beyond the arm's reach"
+            )
         self.contacts.withdraw_cleared(self.held)
 
     def along(self, targets: list[Transform]) -> None:

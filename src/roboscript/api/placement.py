@@ -153,15 +153,12 @@ class Placer:
             named = supports.table_top(self.perception) if receptacle_name == TABLE else None
             support = supports.support_named(self.perception, name, named or self._receptacle(receptacle_name, name))
         spots = free_spots(ring_candidates(target[:2], NEAREST_BOUND, self.base_xy), half, yaw, height, support)
-        # Put down where the arm can take it up again: nearer the base than ASIDE_MIN_REACH, a grasp from above
-        # meets the arm's joint limits (a swap's "20 cm towards the robot" from a thing 43 cm out).
-        pickable = [s for s in spots if np.linalg.norm(s.center[:2] - self.base_xy) >= ASIDE_MIN_REACH]
         if kind_of(support.region.name) == "drawer":
             # Open, a drawer is clear above only on its pulled-out side (its front faces its frame's +x).
             out = support.region.frame.rotation[:, 0]
-            pickable = [dataclasses.replace(s, open_side=out) for s in pickable or spots]
-        if pickable or spots:
-            return pickable or spots
+            spots = [dataclasses.replace(s, open_side=out) for s in spots]
+        if spots:
+            return spots
         farther = free_spots(ring_candidates(target[:2], REPORT_BOUND, self.base_xy), half, yaw, height, support)
         where = f"on {support.region.name!r}"
         nearest = (
