@@ -70,12 +70,16 @@ def test_the_camera_pipeline_estimates_every_cabinet_joint(cabinet):
 
 
 def test_a_part_no_view_saw_cannot_have_its_joint_estimated(cabinet):
+    """Asked of the part, it says so; asked of the whole cabinet, the parts seen answer (a drawer pulled out hides
+    the front of the one below it, which should not keep a program from the one it means)."""
     backend, _, _ = cabinet
     seen = build_perception(backend, "gt-2d")
     seen.detect(["mug"])
     del seen.parts_seen["cabinet.drawer_2"]
-    with pytest.raises(KeyError, match=r"'cabinet.drawer_2' was not found: its front was not seen well enough"):
-        seen.joints("cabinet")
+    with pytest.raises(KeyError, match=r"'cabinet.drawer_2' was not found"):
+        seen.joints("cabinet.drawer_2")
+    parts = {j.part for j in seen.joints("cabinet")}
+    assert "cabinet.drawer_2" not in parts and {"cabinet.drawer_0", "cabinet.drawer_1"} <= parts
 
 
 def test_an_open_drawers_axis_is_still_its_fronts_normal():

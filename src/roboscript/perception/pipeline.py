@@ -434,7 +434,17 @@ class PipelinePerception(Perception):
         what their labels say (``parts``); where and along what they move is from the points."""
         if self._object(name):
             return []
-        return [self._estimated(truth) for truth in self.parts.joints(name)]
+        # A question about the whole cabinet is answered from the parts seen well enough: a drawer pulled out
+        # hides the front of the one below it, which should not keep the program from the one it means.
+        joints, missing = [], None
+        for truth in self.parts.joints(name):
+            try:
+                joints.append(self._estimated(truth))
+            except ObjectNotFoundError as exc:
+                missing = missing or exc
+        if missing is not None and (not joints or "." in name):
+            raise missing
+        return joints
 
     def _estimated(self, labelled: ArticulationJoint) -> ArticulationJoint:
         """The joint of ``labelled.part`` from its front and its handle as one look saw them (a drawer pulled
