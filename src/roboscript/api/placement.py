@@ -98,7 +98,7 @@ class PlaceRequest:
     where: str
     target: np.ndarray | None = None
     spacing: float = REPEAT_SPACING
-    budget: int = 0  # IK screens for the search (0: PLACE_IK_BUDGET)
+    budget: int = PLACE_IK_BUDGET  # IK screens for the search
 
 
 class Placer:
@@ -153,10 +153,7 @@ class Placer:
             named = supports.table_top(self.perception) if receptacle_name == TABLE else None
             support = supports.support_named(self.perception, name, named or self._receptacle(receptacle_name, name))
         spots = free_spots(ring_candidates(target[:2], NEAREST_BOUND, self.base_xy), half, yaw, height, support)
-        if kind_of(support.region.name) == "drawer":
-            # Open, a drawer is clear above only on its pulled-out side (its front faces its frame's +x).
-            out = support.region.frame.rotation[:, 0]
-            spots = [dataclasses.replace(s, open_side=out) for s in spots]
+        spots = _open_side(spots, support.region)
         if spots:
             return spots
         farther = free_spots(ring_candidates(target[:2], REPORT_BOUND, self.base_xy), half, yaw, height, support)
@@ -200,7 +197,7 @@ class Placer:
         box = self.perception.box(name)
         pivot = np.array([footprint_center[0], footprint_center[1], box.center[2]])
         carried = _Carried(tcp, pivot, box.corners() - pivot)
-        spots, where, limits = request.spots, request.where, (request.spacing, request.budget or PLACE_IK_BUDGET)
+        spots, where, limits = request.spots, request.where, (request.spacing, request.budget)
         upright = self._search(carried, spots, PLACE_IK_QUICK, (0.0,), *limits)
         best = upright.leaving
         leaning: _Search | None = None
@@ -292,11 +289,7 @@ class Placer:
         height = self.perception.box(name).size[2]
         corner = self._fill_corner(receptacle)
         spots = spots_in_receptacle(receptacle, half, yaw, height, inside, corner, wall_margin=wall_margin)
-        if drawer:
-            # Open, a drawer is clear above only on its pulled-out side (its front faces its frame's +x).
-            out = receptacle.frame.rotation[:, 0]
-            spots = [dataclasses.replace(s, open_side=out) for s in spots]
-        return spots
+        return _open_side(spots, receptacle)
 
     def _receptacle(self, receptacle_name: str, held: str) -> Receptacle:
         """What ``receptacle_name`` holds things in or on: its interior, or its flat top (stacking)."""
@@ -469,6 +462,15 @@ def _clear_of(spots: list, points: np.ndarray, radius: float, table_top: float) 
         if not near or float(np.min(np.linalg.norm(band[near] - s.center[:2], axis=1))) > radius:
             kept.append(s)
     return kept
+
+
+def _open_side(spots: list[PlacementSpot], receptacle: Receptacle) -> list[PlacementSpot]:
+    """The spots, in a drawer with its open side: open, a drawer is clear above only on its pulled-out side (its
+    front faces its frame's +x)."""
+    if kind_of(receptacle.name) != "drawer":
+        return spots
+    out = receptacle.frame.rotation[:, 0]
+    return [dataclasses.replace(s, open_side=out) for s in spots]
 
 
 def _same_turn(a: float, b: float) -> bool:

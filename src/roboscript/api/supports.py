@@ -57,10 +57,7 @@ def table_top(perception: Perception) -> Receptacle:
 def holds(perception: Perception, name: str) -> Receptacle | None:
     """What ``name`` holds things in or on: its interior (a bowl, a plate, an open drawer) or else its flat top;
     None where it has neither or perception cannot tell."""
-    try:
-        receptacle = perception.receptacle(name)
-    except (UnknownObjectError, ValueError):
-        return None
+    receptacle = holds_interior(perception, name)
     if receptacle is not None:
         return receptacle
     if kind_of(name) in ("drawer", "handle", "door"):
@@ -125,7 +122,8 @@ def support_under(perception: Perception, held: str, point_xy: np.ndarray, half:
     drawer whose floor is under the point, else the highest flat top that bears its footprint (its middle, or
     half of it, over the top), else the table."""
     candidates: list[Receptacle] = []
-    for name in [*perception.objects(), *perception.furniture()]:
+    objects = perception.objects()
+    for name in [*objects, *perception.furniture()]:
         if name == held or kind_of(name) in ("handle", "door"):
             continue
         interior = holds_interior(perception, name)
@@ -134,7 +132,7 @@ def support_under(perception: Perception, held: str, point_xy: np.ndarray, half:
             if contains_xy(interior, point_xy) and not is_closed_drawer(interior):
                 return support_named(perception, held, interior)
             continue
-        if name in perception.objects() or "." not in name:
+        if name in objects or "." not in name:
             center, yaw, half_box = perception.footprint(name)
             if _bears(np.asarray(center), float(yaw), np.asarray(half_box), point_xy, half):
                 top = top_face(perception, name)

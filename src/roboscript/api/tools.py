@@ -201,7 +201,8 @@ class ToolAPI:
         metres (negative: backwards; at most 1.5), keeping its orientation and carrying what is attached."""
         unit, distance = direction(axis, "axis"), real(distance, "distance")
         if abs(distance) > LONGEST_MOVE:
-            raise ArgumentError(f"distance is in metres and must be within ±{LONGEST_MOVE}, got {distance}")
+            within = f"[-{LONGEST_MOVE}, {LONGEST_MOVE}]"
+            raise ArgumentError(f"distance is in metres and must be within {within}, got {distance}")
         self.moves.in_direction(unit, distance)
 
     @tool

@@ -76,22 +76,18 @@ class GraspChooser:
         """A level (or tilted) grasp; for an object none of which the arm can take (a cup whose rim is wider than
         the Panda's opening, its body too near the table for the wrist), the best grasp of its shape instead, with
         a notice: the program asked for a way to pick the object up, and a refusal would leave it none."""
-        try:
-            candidates = horizontal_grasps(self.perception, name, approach, self.gripper.max_width, self.base_xy)
-            return self.first_reachable(name, candidates, "horizontal")
-        except (GraspError, PlanningError) as exc:
-            preferred = exc
-        if approach is not None:
-            # A preferred approach is preferred, not demanded: the approaches the tool would take by itself
-            # follow (a drawer pulled out brings its handle to where only a wider turn reaches it).
+        # A preferred approach is preferred, not demanded: the approaches the tool would take by itself follow (a
+        # drawer pulled out brings its handle to where only a wider turn reaches it).
+        failure: GraspError | PlanningError | None = None
+        for wanted in [approach] if approach is None else [approach, None]:
             try:
-                candidates = horizontal_grasps(self.perception, name, None, self.gripper.max_width, self.base_xy)
+                candidates = horizontal_grasps(self.perception, name, wanted, self.gripper.max_width, self.base_xy)
                 return self.first_reachable(name, candidates, "horizontal")
-            except (GraspError, PlanningError):
-                pass
+            except (GraspError, PlanningError) as exc:
+                failure = failure or exc
         if name not in self.perception.objects():
-            raise preferred
-        why = str(preferred).split("; first failure")[0]
+            raise failure
+        why = str(failure).split("; first failure")[0]
         # From above: a rim taken from the side leaves a finger hooked inside the cup when it is let go.
         pose = self.adaptive(name, GraspPreferences(approach=np.array([0.0, 0.0, -1.0])))
         notice(f"parse_horizontal_grasp_pose: {why}; taking the best grasp of its shape from above instead")
