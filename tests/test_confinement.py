@@ -60,6 +60,15 @@ def test_what_a_confined_process_may_still_do_a_program_needs():
     assert result.outcome is Outcome.OK, result
 
 
+def test_the_program_process_imports_from_where_the_caller_does(tmp_path, monkeypatch):
+    """Dependencies found through a PYTHONPATH, a ROS overlay or a ``pip install --target`` folder are found by the
+    program's process too (it runs isolated, so it is told the caller's folders by name)."""
+    (tmp_path / "roboscript_test_extra_module.py").write_text("VALUE = 41\n")
+    monkeypatch.syspath_prepend(str(tmp_path))
+    result = probe("assert roboscript_test_extra_module.VALUE == 41", setup="import roboscript_test_extra_module")
+    assert result.outcome is Outcome.OK, result
+
+
 def test_the_program_process_holds_no_secret_of_the_callers(monkeypatch):
     monkeypatch.setenv("ROBOSCRIPT_TEST_SECRET", "hunter2-sk-test")
     monkeypatch.setenv("OPENAI_API_KEY", "sk-not-for-programs")

@@ -55,9 +55,25 @@ REPORTABLE = frozenset(
 
 
 # The program's process: isolated mode (no user site, no PYTHON* variables, no current directory on the path), with
-# the folder this roboscript was imported from first, so that a checkout run through PYTHONPATH runs its own jail.
-BOOTSTRAP = "import sys; sys.path.insert(0, sys.argv[1]); from roboscript.codegen.jail import main; main(sys.argv[1:])"
+# the folders this process imports from put first, by name: this roboscript's own folder, then the caller's sys.path.
+# Its dependencies (numpy, pyseccomp) are found wherever the caller found them: site-packages, a PYTHONPATH, a ROS
+# workspace's overlay, a `pip install --target` folder.
+BOOTSTRAP = (
+    "import os, sys; sys.path[:0] = sys.argv[1].split(os.pathsep); "
+    "from roboscript.codegen.jail import main; main(sys.argv[1:])"
+)
 PACKAGE_ROOT = str(Path(__file__).resolve().parents[2])
+
+
+def import_path() -> str:
+    """The folders (and zip files) the program's process imports from, joined by ``os.pathsep``: this roboscript's
+    folder, then every absolute entry of this process's ``sys.path`` that exists."""
+    entries = [PACKAGE_ROOT]
+    for entry in sys.path:
+        usable = entry and os.path.isabs(entry) and os.pathsep not in entry and os.path.exists(entry)
+        if usable and entry not in entries:
+            entries.append(entry)
+    return os.pathsep.join(entries)
 
 
 class SandboxSetupError(RoboScriptError, RuntimeError):
@@ -123,7 +139,7 @@ def _start(there: socket.socket) -> subprocess.Popen:
     environment = dict(JAIL_ENVIRONMENT)
     if confinement.unconfined_by_choice():
         environment[confinement.UNCONFINED_VARIABLE] = "1"
-    command = [sys.executable, "-I", "-c", BOOTSTRAP, PACKAGE_ROOT, str(there.fileno()), str(os.getpid())]
+    command = [sys.executable, "-I", "-c", BOOTSTRAP, import_path(), str(there.fileno()), str(os.getpid())]
     try:
         return subprocess.Popen(
             command,
