@@ -68,6 +68,19 @@ def test_an_open_drawers_inside_reaches_back_to_the_carcass_only():
     assert lower[2] == pytest.approx(1.0, abs=0.002)
 
 
+def test_the_carcass_front_is_its_tops_front_edge_where_the_top_was_seen():
+    """The frame around the drawers seen as a few thin strips, and the pulled drawer's back wall, inside the
+    carcass, as a dense layer: the densest layer alone would put the carcass's front at the back wall (a drawer
+    pulled out 15 cm read as 30 cm, and a program pushing it shut by that much was refused half-way)."""
+    _, carcass = _drawer(opening=0.15)
+    thin_frame = carcass[:1600][RNG.random(1600) < 0.03]
+    back_wall = _sheet([0.15 - 0.3, -0.18, 1.0], [0, 0.36, 0], [0, 0, 0.1], 2000, normal=(1, 0, 0))
+    seen = np.concatenate([thin_frame, carcass[1600:], back_wall])
+    frame = opening_frame(_joint(0.15))
+    assert carcass_front(seen[:, :3], frame, 0.35) == pytest.approx(-0.3, abs=0.006)  # points alone: the wall
+    assert carcass_front(seen[:, :3], frame, 0.35, seen[:, 3:]) == pytest.approx(-0.15, abs=0.006)
+
+
 def test_a_closed_drawer_shows_no_inside_and_has_no_room():
     drawer, carcass = _drawer(opening=0.0)
     frame = opening_frame(_joint(0.0))

@@ -9,7 +9,7 @@ import numpy as np
 import pytest
 
 from roboscript.backends.mujoco_backend import MujocoBackend
-from roboscript.perception.furniture_parts import FurnitureRows, split_furniture
+from roboscript.perception.furniture_parts import FurnitureRows, row_bands, split_furniture
 from roboscript.perception.segments import frame_points, table_height
 
 ROWS = FurnitureRows("cabinet", ("drawer", "drawer", "drawer", "door"))
@@ -60,3 +60,16 @@ def test_without_a_handle_the_parts_cannot_be_told():
     assert list(parts) == ["cabinet"] and len(parts["cabinet"]) == 500
     assert split_furniture(np.zeros((0, 3)), np.zeros((0, 3)), [], 0.82, ROWS) == {}
     assert ROWS.part_names()[3] == ("cabinet.door_0", "cabinet.handle_3")
+
+
+def test_each_rows_height_range_follows_its_handles_and_the_panels_between_rows_belong_to_none():
+    """Rows 14 cm high with 1.5 cm panels between them (15.5 cm apart), handles seen on the first two rows only:
+    the third row is placed below them, and its range stops short of the floor of a drawer pulled out above it
+    (the range of the row above it starts 1.5 cm higher)."""
+    bands = row_bands({0: 1.24, 1: 1.085}, rows=3, top=1.32, table=0.82)
+    centres = [(low + high) / 2 for low, high in bands]
+    assert centres == pytest.approx([1.24, 1.085, 0.93], abs=1e-6)
+    assert bands[2][1] == pytest.approx(0.93 + 0.92 * 0.155 / 2 + 0.005, abs=1e-6)
+    assert bands[2][1] < 1.01  # the floor of the drawer above, 1 cm over the panel, is no part of the door
+    alone = row_bands({1: 1.085}, rows=3, top=1.32, table=0.82)  # one handle: the rest spaced by the height
+    assert [round((a + b) / 2, 3) for a, b in alone] == [round(1.085 + 0.5 / 3, 3), 1.085, round(1.085 - 0.5 / 3, 3)]

@@ -3,16 +3,20 @@ configurations collide, carries objects, and is rebuilt when the world changed, 
 
 from __future__ import annotations
 
+import contextlib
+
 import numpy as np
 import pytest
 
 from roboscript.assembly import build_tools
 from roboscript.backends.mujoco_backend import MujocoBackend
-from roboscript.geometry import Box3D
+from roboscript.geometry import Box3D, Transform
 from roboscript.perception.modes import parse_mode
 from roboscript.planning.ground_truth_scene import ground_truth_scene
-from roboscript.planning.perceived_scene import UNKNOWN, sort_points
+from roboscript.planning.perceived_scene import UNKNOWN, PerceivedSceneSource, sort_points
+from roboscript.robot_io import CameraFrame
 from roboscript.robots import ROBOT_PREFIX
+from roboscript.robots.panda import PANDA_DESCRIPTION
 from roboscript.sim.world import robot_joint_readings
 
 
@@ -108,3 +112,54 @@ def test_an_unknown_mode_lists_the_modes():
         with pytest.raises(ValueError, match=r"unknown perception mode .*modes: gt \(ground truth everywhere\)"):
             parse_mode(bad)
     assert parse_mode("gt-2d").needs_detector is False and parse_mode("gt-scene").needs_detector is True
+
+
+class _StillPerception:
+    """Test double: a perception whose only look shows a drawer front and a wall, with a camera frame that says
+    nothing of them (no depth), so that whatever was remembered stays remembered."""
+
+    looks = 1
+
+    def __init__(self):
+        self.front = np.column_stack([np.full(50, 0.4), np.linspace(0.2, 0.4, 50), np.full(50, 0.9)])
+        self.wall = np.column_stack([np.full(50, 0.3), np.linspace(-0.4, -0.2, 50), np.full(50, 0.9)])
+        self.visible = np.vstack([self.front, self.wall])
+        self.boxes = {"cabinet.drawer_0": Box3D(np.array([0.38, 0.18, 0.88]), np.array([0.42, 0.42, 0.92]))}
+
+    def objects(self):
+        return []
+
+    def furniture(self):
+        return list(self.boxes)
+
+    def box(self, name):
+        return self.boxes[name]
+
+    def scene_points(self):
+        return self.visible
+
+    def last_frames(self):
+        k = np.array([[10.0, 0, 5], [0, 10.0, 5], [0, 0, 1]])
+        return [CameraFrame("blind", None, np.full((10, 10), np.nan, np.float32), None, k, Transform.identity())]
+
+    def last_masks(self):
+        return [None]
+
+    def without_looking(self):
+        return contextlib.nullcontext()
+
+
+def test_what_was_seen_of_a_part_the_hand_moved_is_forgotten_and_the_rest_remembered():
+    """A drawer pushed shut: where its front stood out is hidden by the arm still at it, and remembered there it
+    would close round the hand. Everything else hidden stays remembered."""
+    seen = _StillPerception()
+    source = PerceivedSceneSource(seen, PANDA_DESCRIPTION, Transform.identity(), dict)
+    source.contents()
+    seen.visible = np.zeros((0, 3))  # the next look sees neither: the arm hides both
+    source.mark_stale()
+    remembered = source.contents()
+    assert len(remembered.fixed["cabinet.drawer_0"]) == 50 and len(remembered.fixed[UNKNOWN]) == 50
+    source.mark_stale(moved=["cabinet.drawer_0", "cabinet.handle_0"])
+    after_the_push = source.contents()
+    assert len(after_the_push.fixed["cabinet.drawer_0"]) == 0  # forgotten: the drawer is no longer there
+    assert len(after_the_push.fixed[UNKNOWN]) == 50  # the wall behind the arm is still remembered

@@ -99,7 +99,8 @@ class PlanningFollower:
         if is_object:
             self.motion.detach(name)
         self.contacts.released(name, is_object)
-        self.motion.world_changed()
+        # A part let go has moved with the hand (pulled, pushed, swung): it and its handle were seen elsewhere.
+        self.motion.world_changed(() if is_object else self.contacts.family(name))
 
 
 class PerceptionFollower:

@@ -117,10 +117,15 @@ def _with_side_on_yaws(yaws: list[float], approach: np.ndarray, footprint_yaw: f
 
 
 def _handle_normal(perception: Perception, name: str, box) -> np.ndarray:
-    """The horizontal direction a handle faces: its part's opening direction, or its front's normal."""
+    """The horizontal direction a handle faces: a drawer's opening direction, a door's front's normal beside it,
+    or (a handle of nothing known) its own front's normal."""
     joints = perception.joints(name) if kind_of(name) == "handle" else []
     if joints and joints[0].type == "prismatic":
         normal = np.asarray(joints[0].axis, dtype=float).copy()
+    elif joints:
+        # A bar on standoffs has no face of its own to speak of: the plane its observed points fit faced sideways
+        # (a Panda then came at a door's handle along the door's face). The door's front faces the way it does.
+        normal = np.asarray(perception.plane_normal(joints[0].part, box.center), dtype=float).copy()
     else:
         normal = np.asarray(perception.plane_normal(name, box.center + np.array([1.0, 0.0, 0.0])), dtype=float).copy()
     normal[2] = 0.0

@@ -32,6 +32,11 @@ FACING_IN = 0.5  # least component across the drawer of the normal of a point on
 MIN_COVER = 0.4  # share of the cells across the bottom's extent its points must fall in (walls give two lines)
 MIN_DEPTH = 0.05  # metres: the least height given to the inside (walls not seen)
 WALL = 0.02  # metres taken off all round an inside not seen: the tray's walls and floor, and a margin
+TOP_FACING = 0.9  # least vertical component of the normal of a point on the carcass's top
+TOP_BAND = 0.01  # metres below the highest level points still on the carcass's top
+MIN_TOP_POINTS = 20  # fewer points on the top: it was not seen
+TOP_EDGE_RANK = 5  # the top's front edge: its points' 5th foremost (a camera sees the top thinly near its edge, and
+# a percentile lands behind the edge there; an inside must not reach back into the carcass)
 
 
 def opening_frame(joint: ArticulationJoint) -> Transform:
@@ -45,16 +50,40 @@ def opening_frame(joint: ArticulationJoint) -> Transform:
     return Transform(np.asarray(joint.position, dtype=float), quat_from_yaw(math.atan2(axis[1], axis[0])))
 
 
-def carcass_front(carcass_points: np.ndarray, frame: Transform, behind: float) -> float:
-    """Where the carcass's front stands along the frame's x: the densest thin layer of its points across that
-    axis (its front frame around the drawers), among those at most ``behind`` metres behind the frame."""
-    x = frame.inverse().apply(carcass_points)[:, 0]
+def carcass_front(
+    carcass_points: np.ndarray, frame: Transform, behind: float, normals: np.ndarray | None = None
+) -> float:
+    """Where the carcass's front stands along the frame's x, among the places at most ``behind`` metres behind
+    the frame: the front edge of its top where the cameras saw the top (given the points' ``normals``), else the
+    densest thin layer of its points across that axis (its front frame around the drawers).
+
+    The top first: the frame around the drawers is a few thin strips, and an open drawer's tray, whose back wall
+    stands inside the carcass with it, can show more points in one layer than they do."""
+    local = frame.inverse().apply(carcass_points)
+    if normals is not None:
+        edge = _top_front_edge(local, np.asarray(normals, dtype=float) @ frame.rotation)
+        if edge is not None and -behind < edge < LAYER:
+            return edge
+    x = local[:, 0]
     x = x[(x < LAYER) & (x > -behind)]
     if len(x) == 0:
         raise ValueError(
             f"none of the {len(carcass_points)} points of the cabinet lie within {behind} m behind the drawer's front"
         )
     return densest_layer(x, LAYER)[1]
+
+
+def _top_front_edge(local: np.ndarray, facing: np.ndarray) -> float | None:
+    """The front edge (along x) of the highest level face among ``local`` points whose normals, in the same
+    frame, are ``facing``; ``None`` where too few points face up there."""
+    up = facing[:, 2] > TOP_FACING
+    if up.sum() < MIN_TOP_POINTS:
+        return None
+    height = float(np.percentile(local[up, 2], 99))
+    top = local[up & (local[:, 2] > height - TOP_BAND)]
+    if len(top) < MIN_TOP_POINTS:
+        return None
+    return float(np.sort(top[:, 0])[-TOP_EDGE_RANK])
 
 
 def drawer_receptacle(

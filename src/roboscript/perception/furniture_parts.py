@@ -21,6 +21,7 @@ UPRIGHT = 0.3  # normals with |z| below this belong to upright faces (fronts)
 NEAR_HANDLE = (0.1, 0.05)  # metres across and up from a handle within which the front around it lies
 FRONT_SLACK = 0.01  # metres behind the carcass's front plane that still count as a moving part's
 FRONT_SHARE = 0.92  # of a row's height, what its front covers (the rest: the panel between it and the next)
+ROW_SLACK = 0.005  # metres beyond its front's height range that a row's part may still show (the handles' spread)
 
 
 @dataclass(frozen=True)
@@ -127,3 +128,15 @@ def _row_centres(heights: list[float], row_of: list[int], top: float, pitch: flo
     if row_of:
         return heights[0] - (k - row_of[0]) * pitch
     return top - (k + 0.5) * pitch
+
+
+def row_bands(handle_heights: dict[int, float], rows: int, top: float, table: float) -> list[tuple[float, float]]:
+    """Each row's height range, from the top row down: what its front covers, with :data:`ROW_SLACK` each way.
+    ``handle_heights``: the heights of the handles seen, by row (a handle sits at its row's middle height); rows
+    where none was seen are placed by :func:`_row_centres`."""
+    pitch = max(top - table, 1e-3) / rows
+    seen = sorted(handle_heights)
+    centres = _row_centres([handle_heights[k] for k in seen], seen, top, pitch, rows)
+    spacing = float(np.median(-np.diff(centres))) if rows > 1 else pitch
+    half = FRONT_SHARE * spacing / 2 + ROW_SLACK
+    return [(float(c - half), float(c + half)) for c in centres]

@@ -52,6 +52,7 @@ from roboscript.perception.drawers import (
 )
 from roboscript.perception.faces import plane_normal_at
 from roboscript.perception.footprints import footprint_of
+from roboscript.perception.furniture_parts import row_bands
 from roboscript.perception.fusion import FusionSettings
 from roboscript.perception.grounding import Grounder, normalize_phrase
 from roboscript.perception.in_hand import register
@@ -196,6 +197,7 @@ class PipelinePerception(Perception):
                 self.parts_seen[part] = ObjectPoints(biggest.points, biggest.normals)
                 self._part_look[part] = self.looks
         self._trim_handles()
+        self._keep_parts_in_rows()
         seen_again = set()
         for phrase in phrases:
             found = [i for i in seen.instances if i.label == phrase]
@@ -305,6 +307,34 @@ class PipelinePerception(Perception):
             proud = (points - center) @ normal > HANDLE_PROUD
             if proud.sum() >= 10:
                 self.parts_seen[handle] = ObjectPoints(points[proud], normals[proud])
+
+    def _keep_parts_in_rows(self) -> None:
+        """Keeps of each drawer and door of this look the points within its row's height (rows placed by the
+        handles seen): a part is found from its boxes in the images, and a drawer pulled out stands in front of
+        the door below it there (its floor was taken for the door's top, and an arm pushing the drawer shut was
+        refused on it). A drawer slides and a door swings level: neither leaves its row's height."""
+        for furniture in {n.split(".", 1)[0] for n in self._moved_by}:
+            if furniture not in self.parts_seen or not math.isfinite(self._table_height):
+                continue
+            handles = [n for n in self._moved_by if n.startswith(furniture + ".")]
+            heights = {
+                int(n.rsplit("_", 1)[1]): float(np.median(self.parts_seen[n].points[:, 2]))
+                for n in handles
+                if n in self.parts_seen and self._part_look[n] == self.looks
+            }
+            if not heights:
+                continue
+            top = float(np.nanpercentile(self.parts_seen[furniture].points[:, 2], 99))
+            bands = row_bands(heights, len(handles), top, self._table_height)
+            for handle in handles:
+                part = self._moved_by[handle]
+                if part is None or part not in self.parts_seen or self._part_look[part] != self.looks:
+                    continue
+                low, high = bands[int(handle.rsplit("_", 1)[1])]
+                seen = self.parts_seen[part]
+                inside = (seen.points[:, 2] >= low) & (seen.points[:, 2] <= high)
+                if inside.sum() >= 10:
+                    self.parts_seen[part] = ObjectPoints(seen.points[inside], seen.normals[inside])
 
     def _ensure_looked(self, fresh: bool = True) -> None:
         """Looks if nothing was seen yet; with ``fresh``, also if something was let go since the last look (names
@@ -497,7 +527,8 @@ class PipelinePerception(Perception):
         if joint.type != "prismatic" or furniture not in self.parts_seen:
             return joint
         try:
-            carcass = carcass_front(self.parts_seen[furniture].points, opening_frame(joint), DRAWER_TRAVEL + 0.05)
+            seen = self.parts_seen[furniture]
+            carcass = carcass_front(seen.points, opening_frame(joint), DRAWER_TRAVEL + 0.05, seen.normals)
         except ValueError:
             return joint
         return dataclasses.replace(joint, value=float(np.clip(-carcass, joint.lower, joint.upper)))
@@ -568,7 +599,8 @@ class PipelinePerception(Perception):
                 self.names(),
                 f"no camera has seen it, and how far {name!r} stands out of it is measured from its front",
             )
-        carcass = carcass_front(self.parts_seen[furniture].points, frame, DRAWER_TRAVEL + 0.05)
+        seen = self.parts_seen[furniture]
+        carcass = carcass_front(seen.points, frame, DRAWER_TRAVEL + 0.05, seen.normals)
         points = self._part(name).points
         inside = drawer_receptacle(name, points, self._part(name).normals, frame, carcass)
         if inside is None and not retried and self._may_look_again():

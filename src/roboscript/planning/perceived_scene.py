@@ -9,7 +9,7 @@ looked again, which is when what was seen may have moved.
 
 from __future__ import annotations
 
-from collections.abc import Callable, Mapping
+from collections.abc import Callable, Collection, Mapping
 from dataclasses import dataclass
 
 import mujoco
@@ -163,15 +163,19 @@ class PerceivedSceneSource:
     ):
         self.perception, self.description, self.mount = perception, description, mount
         self.robot_state, self.padding = robot_state, padding
-        self._memory = np.zeros((0, 3))  # the fixed surfaces the last scene was built from
+        self._memory: dict[str, np.ndarray] = {}  # the fixed surfaces the last scene was built from, by owner
         self.builds = 0
         self._scene: PlanningScene | None = None
         self._looks = -1
         self._stale = True
 
-    def mark_stale(self) -> None:
-        """What was seen may have moved (the robot let go of something, or moved a part): rebuild before use."""
+    def mark_stale(self, moved: Collection[str] = ()) -> None:
+        """What was seen may have moved (the robot let go of something, or moved a part): rebuild before use.
+        ``moved``: parts the hand moved; their surfaces as seen before are forgotten (the arm, still at a drawer
+        it pushed shut, hides where its front stood out, and remembered there it closed round the hand)."""
         self._stale = True
+        for name in moved:
+            self._memory.pop(name, None)
 
     def current(self) -> PlanningScene:
         looks = getattr(self.perception, "looks", 0)
@@ -188,9 +192,9 @@ class PerceivedSceneSource:
         objects = perception.objects()
         scene_points = within_reach(perception.scene_points(), self.mount)
         frames = perception.last_frames()
-        if frames:
+        if frames and self._memory:
             hidden = perception.last_masks()
-            scene_points = np.vstack([scene_points, remembered(self._memory, frames, hidden)])
+            scene_points = np.vstack([scene_points, remembered(np.vstack(list(self._memory.values())), frames, hidden)])
         object_boxes = {name: perception.box(name) for name in objects}
         object_points = {
             name: filled_below(perception.points(name).points, float(object_boxes[name].lower[2])) for name in objects
@@ -198,7 +202,7 @@ class PerceivedSceneSource:
         parts = {name: perception.box(name) for name in perception.furniture()}
         contents = sort_points(scene_points, object_points, object_boxes, parts)
         # Only fixed surfaces are remembered: an object's are where it was, and it may be carried off.
-        self._memory = np.vstack([np.zeros((0, 3)), *contents.fixed.values()])
+        self._memory = {name: points for name, points in contents.fixed.items() if len(points)}
         return contents
 
     def state(self) -> np.ndarray:
