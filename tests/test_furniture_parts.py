@@ -33,11 +33,13 @@ def _split(backend: MujocoBackend, camera: str):
     return parts, body, truth, names, handle_ids
 
 
-@pytest.mark.parametrize("pulled", [0.0, 0.2])
-def test_fronts_and_handles_go_to_their_rows(pulled):
+@pytest.mark.parametrize(("drawer", "pulled"), [("drawer_1", 0.0), ("drawer_1", 0.2), ("drawer_0", 0.15)])
+def test_fronts_and_handles_go_to_their_rows(drawer, pulled):
+    """Closed, the second drawer pulled out, and the top drawer pulled out (the top edge of its front, 2 cm below
+    the cabinet's top, is no part of the top)."""
     with MujocoBackend("world_5_mug_to_cabinet", robot="panda", settle=0) as backend:
         world = backend.sim_world
-        joint = world.model.joint("cabinet.drawer_1.joint")
+        joint = world.model.joint(f"cabinet.{drawer}.joint")
         world.data.qpos[joint.qposadr[0]] = pulled
         mujoco.mj_forward(world.model, world.data)
         parts, body, truth, names, handle_ids = _split(backend, "camera_left")

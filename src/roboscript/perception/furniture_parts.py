@@ -18,6 +18,10 @@ import numpy as np
 
 LEVEL = 0.9  # normals with z at least this face up (the carcass's top)
 UPRIGHT = 0.3  # normals with |z| below this belong to upright faces (fronts)
+# Metres below the highest furniture points that are still its top. Within 2 cm lies the top edge of the top
+# drawer's front (a 1.5 cm panel above it): pulled out, it was taken for the top's front edge, and every front
+# below counted as standing behind the carcass's front (none of them was seen).
+TOP_BAND = 0.01
 NEAR_HANDLE = (0.1, 0.05)  # metres across and up from a handle within which the front around it lies
 FRONT_SLACK = 0.01  # metres behind the carcass's front plane that still count as a moving part's
 FRONT_SHARE = 0.92  # of a row's height, what its front covers (the rest: the panel between it and the next)
@@ -75,7 +79,7 @@ def split_furniture(
     band = np.searchsorted(-edges, -points[:, 2])  # 0 for the top row
     # A front fills its row but for the panels between rows: what lies beyond it is the carcass's.
     band[np.abs(points[:, 2] - centres[np.minimum(band, rows - 1)]) > FRONT_SHARE * spacing / 2] = -1
-    on_top = (np.nan_to_num(normals[:, 2]) > LEVEL) & (points[:, 2] > top - 0.01)
+    on_top = (np.nan_to_num(normals[:, 2]) > LEVEL) & (points[:, 2] > top - TOP_BAND)
     moving = (points @ facing > front - FRONT_SLACK) & ~on_top
     for k, (part, _) in enumerate(names):
         mine = np.flatnonzero(moving & (band == k))
@@ -109,7 +113,7 @@ def _carcass_front(points: np.ndarray, normals: np.ndarray, facing: np.ndarray, 
     """Where along ``facing`` the carcass's front plane lies: its top's front edge; without a top seen, the
     rearmost of the upright faces that face forward (a closed front)."""
     along = points @ facing
-    on_top = (np.nan_to_num(normals[:, 2]) > LEVEL) & (points[:, 2] > top - 0.02)
+    on_top = (np.nan_to_num(normals[:, 2]) > LEVEL) & (points[:, 2] > top - TOP_BAND)
     if on_top.sum() >= 20:
         return float(np.percentile(along[on_top], 99))
     forward = np.nan_to_num(normals @ facing) > 0.9
