@@ -504,3 +504,39 @@ def test_a_program_retreat_shorter_than_the_owed_one_is_made_as_long_not_added_t
         rise = backend.tcp_pose().position - released
         assert owed > 0.02
         np.testing.assert_allclose(rise, [0.0, 0.0, owed], atol=0.005)
+
+
+def test_fingers_that_let_go_from_the_side_are_drawn_out_before_the_hand_rises():
+    """A program rises straight after letting go of what it gripped from the side: the hand first backs out
+    along its approach, then rises (rising at once, a UR5e's open fingers, half a millimetre clear of a cup's
+    sides, dragged the cup up out of the basket it was let go in)."""
+    can = {"name": "soup_can", "type": "soup_can", "position": [0.0, -0.1]}
+    world = parse_world({"name": "side", "objects": [can]})
+    with MujocoBackend(world, robot="panda", settle=0.5) as backend:
+        tools = build_tools(backend)
+        tools.open_gripper()
+        tools.grasp(tools.parse_horizontal_grasp_pose("soup_can"))
+        tools.close_gripper()
+        tools.attach_object("soup_can")
+        resting = backend.ground_truth.box("soup_can").center
+        tools.move_to_pose(tools.parse_place_pose("soup_can", position=resting + np.array([0.05, 0.0, 0.0])))
+        tools.open_gripper()
+        tools.detach_object("soup_can")
+        approach = backend.tcp_pose().rotation[:, 2]
+        assert abs(approach[2]) < 0.94  # gripped from the side
+        released = backend.tcp_pose().position.copy()
+        placed = backend.ground_truth.box("soup_can").center.copy()
+        stops: list[np.ndarray] = []
+        execute = tools.motion.execute
+
+        def recording(path):
+            report = execute(path)
+            stops.append(backend.tcp_pose().position.copy())
+            return report
+
+        tools.motion.execute = recording
+        tools.move_in_direction([0.0, 0.0, 1.0], 0.1)
+        backed = stops[0] - released
+        assert float(backed @ -approach) > 0.04 and abs(backed[2] - (-approach[2]) * np.linalg.norm(backed)) < 0.01
+        assert stops[-1][2] - stops[0][2] == pytest.approx(0.1, abs=0.01)  # then the program's own rise
+        np.testing.assert_allclose(backend.ground_truth.box("soup_can").center, placed, atol=0.005)

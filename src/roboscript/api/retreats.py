@@ -26,6 +26,7 @@ RETREAT_AFTER_RELEASE = 0.05
 RELEASE_CLEARANCE = 0.01  # beyond what was let go, where the fingertips end the release retreat if that is further
 RELEASE_RETREAT_LEAST = 0.02  # a program's own retreat after a release may stop short of its distance, not of this
 OWN_RETREAT = 0.5  # cosine (60 deg) above which a program's motion is its own retreat; wider than PREFERENCE_CONE
+FROM_ABOVE = 0.94  # cosine (20 deg) of the approach with straight down above which rising is backing out
 LIFT_SIDEWAYS = 0.01  # metres sideways a motion may go and still be a lift (:meth:`Retreats.lift_within_reach`)
 
 
@@ -76,9 +77,11 @@ class Retreats:
         if pending is None:
             return None
         length = 0.0 if motion is None else float(np.linalg.norm(motion))
-        # Away from what was let go is back along the approach, or up: a hand that let go beside something
-        # leaves it as well upwards.
-        away = [pending.direction] if pending.kind == "lift" else [pending.direction, UP]
+        # Away from what was let go is back along the approach, or up where the hand came from above. Fingers
+        # that gripped from the side, or tilted, are drawn out first: rising, they dragged a cup let go in a basket
+        # or a drawer up with them (a UR5e's open fingers clear a cup's rim by half a millimetre each side).
+        from_above = float(pending.direction @ UP) > FROM_ABOVE
+        away = [pending.direction, UP] if pending.kind == "release" and from_above else [pending.direction]
         long_enough = length >= pending.distance or (shorter and pending.kind == "release")
         if length > 0.0 and long_enough and any(float(a @ motion) / length > OWN_RETREAT for a in away):
             return pending
