@@ -15,7 +15,7 @@ import yaml
 
 from chat_server import ScriptedChatServer
 from roboscript.backends.mujoco_backend import MujocoBackend
-from roboscript.bench.checks import Check
+from roboscript.bench.checks import NEAR_OVERLAP, Check, _footprint_over
 from roboscript.bench.task_file import TaskFileError, parse_suite
 from roboscript.bench.tasks import load_suite
 from roboscript.bench.trial import TrialRecord
@@ -286,3 +286,23 @@ def test_a_world_may_start_with_a_drawer_pulled_out_and_a_door_ajar():
     with pytest.raises(WorldFileError, match=r"rows\[0\]: row open must be between 0 and 0.25 m"):
         parse_world({"name": "x", "furniture": [{"name": "c", "type": "cabinet", "position": [0, 0.6],
                      "rows": [{"kind": "drawer", "open": 0.5}]}], "objects": []})  # fmt: skip
+
+
+def test_near_holds_for_turned_things_side_by_side_whose_boxes_overlap_from_above():
+    """A tea box turned 150 degrees beside a golf ball: their world-aligned boxes overlap from above by 40%, but
+    neither is in or on the other (a program that put the box beside the ball failed this check)."""
+    world = parse_world(
+        {
+            "name": "beside",
+            "objects": [
+                {"name": "tea_box", "type": "tea_box", "position": [-0.231, 0.193], "yaw": 150.0},
+                {"name": "golf_ball", "type": "golf_ball", "position": [-0.175, 0.253]},
+            ],
+        },
+        "beside",
+    )
+    with MujocoBackend(world, settle=0.3) as backend:
+        gt = backend.ground_truth
+        result = Check("near", "tea_box", "golf_ball").evaluate(gt)
+        assert result.passed, result.detail
+        assert _footprint_over(gt.box("golf_ball"), gt.box("tea_box")) > NEAR_OVERLAP  # what the boxes said
