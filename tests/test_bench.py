@@ -14,7 +14,7 @@ from roboscript.bench.checks import Check, at, inside, joint_above, on
 from roboscript.bench.metrics import metrics
 from roboscript.bench.results import RunDirectory, provenance
 from roboscript.bench.tasks import get_task
-from roboscript.bench.trial import TrialRecord
+from roboscript.bench.trial import COULD_NOT_RUN, TrialRecord
 
 GENERATED = Path(__file__).parent / "data" / "generated_code"
 
@@ -74,6 +74,21 @@ def test_run_directory_resumes_and_refuses_mixing(tmp_path):
         RunDirectory(tmp_path, provenance("reference", "ur5e", 3, 0, {"simple_0": "program A"}, "gt"))
     with pytest.raises(ValueError, match="backend='mujoco', not 'ros'"):
         RunDirectory(tmp_path, provenance("reference", "panda", 3, 0, {"simple_0": "program A"}, "gt", backend="ros"))
+
+
+def test_a_resumed_run_tries_again_the_trials_that_never_ran_and_counts_each_trial_once(tmp_path):
+    """A trial whose world or sandbox could not be set up (a missing library, a full disk) is not the program's
+    failure: resuming runs it again, and its new record stands for it (once run on a machine where every trial
+    failed so, a resumed run used to take them all as done)."""
+    run = provenance("reference", "panda", 2, 0, {"simple_0": "program A"}, "gt")
+    directory = RunDirectory(tmp_path, run)
+    directory.append(TrialRecord("simple_0", "panda", 0, 0, False, f"{COULD_NOT_RUN}: ImportError: no EGL", []))
+    directory.append(record(1, False, 1))  # the program's own failure stands
+    again = RunDirectory(tmp_path, provenance("reference", "panda", 2, 0, {"simple_0": "program A"}, "gt"))
+    assert again.done() == {("simple_0", "panda", 1)}
+    again.append(record(0, True, 2))
+    assert [(r.trial, r.ok) for r in again.records()] == [(0, True), (1, False)]
+    assert again.write_summary(["simple_0"])["tasks"]["simple_0"]["whole_task_success"] == 0.5
 
 
 def exec_json(tmp_path, source, *args):

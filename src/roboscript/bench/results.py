@@ -131,7 +131,9 @@ class RunDirectory:
         return read_records(self.results)
 
     def done(self) -> set[tuple[str, str, int]]:
-        return {(r.task, r.robot, r.trial) for r in self.records()}
+        """The trials a resumed run does not run again: all recorded but those that never ran (their world or
+        sandbox could not be set up there and then)."""
+        return {(r.task, r.robot, r.trial) for r in self.records() if not r.never_ran}
 
     def append(self, record: TrialRecord) -> None:
         line = json.dumps(record.to_dict()) + "\n"
@@ -159,16 +161,18 @@ def video_path(run_dir: Path, task: str, trial: int) -> Path:
 
 
 def read_records(results: Path) -> list[TrialRecord]:
-    """The records of a ``results.jsonl``; a line cut short by an interruption is ignored."""
+    """The records of a ``results.jsonl``, the last of each trial (one that never ran is run again on resuming,
+    and recorded again); a line cut short by an interruption is ignored."""
     if not results.exists():
         return []
-    out = []
+    out: dict[tuple[str, str, int], TrialRecord] = {}
     for line in results.read_text().splitlines():
         try:
-            out.append(TrialRecord(**json.loads(line)))
+            record = TrialRecord(**json.loads(line))
         except (json.JSONDecodeError, TypeError):
             continue
-    return out
+        out[(record.task, record.robot, record.trial)] = record
+    return list(out.values())
 
 
 def summarize(records: list[TrialRecord], tasks: list[str], run: dict) -> dict:

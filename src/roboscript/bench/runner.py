@@ -18,7 +18,7 @@ from collections.abc import Callable, Iterable
 from multiprocessing.connection import wait
 
 from roboscript.bench import workers
-from roboscript.bench.trial import TrialRecord, TrialSpec
+from roboscript.bench.trial import COULD_NOT_RUN, TrialRecord, TrialSpec
 from roboscript.codegen.outcomes import Outcome
 from roboscript.load import load_factor
 
@@ -192,7 +192,7 @@ class TrialPool:
                     elif status == "timeout":  # the worker's watchdog ended it
                         finish(spec, failed_record(spec, payload, started, Outcome.TIMEOUT))
                     else:
-                        finish(spec, failed_record(spec, f"the trial could not be run: {payload}", started))
+                        finish(spec, failed_record(spec, f"{COULD_NOT_RUN}: {payload}", started))
                 now = time.perf_counter()
                 for conn, worker in list(busy.items()):
                     spec = worker.spec

@@ -67,6 +67,9 @@ class TrialSpec:
         return 1 + (self.repair_rounds if self.llm is not None else 0)
 
 
+COULD_NOT_RUN = "the trial could not be run"  # how the record of a trial that never ran begins its error
+
+
 @dataclass
 class TrialRecord:
     """What happened: ``ok`` is true when the program ran to its end without an exception; ``outcome`` names the
@@ -92,6 +95,12 @@ class TrialRecord:
     phases: dict[str, float] = field(default_factory=dict)
     # Which process judged the outcome and the checks, and where the program ran: never the same process.
     judged_by: str = ""
+
+    @property
+    def never_ran(self) -> bool:
+        """Whether the trial failed before its program could run (its world or its sandbox could not be set up,
+        not the program's doing): a resumed run tries it again."""
+        return not self.ok and not self.checks and (self.error or "").startswith(COULD_NOT_RUN)
 
     def first_attempt(self) -> TrialRecord:
         """The trial as it would have ended without repair: its first attempt (itself when there was one)."""
