@@ -293,6 +293,20 @@ def test_a_grasped_object_is_lifted_off_its_support_and_a_released_one_left_behi
         assert not tools.held and tools.motion.scene.attached == []
 
 
+def _tcp_after_each_motion(tools, backend) -> list[np.ndarray]:
+    """From now on, where the TCP stands after each path the tools execute, in order (a list that fills up)."""
+    stops: list[np.ndarray] = []
+    execute = tools.motion.execute
+
+    def recording(path):
+        report = execute(path)
+        stops.append(backend.tcp_pose().position.copy())
+        return report
+
+    tools.motion.execute = recording
+    return stops
+
+
 def test_a_released_handle_is_backed_out_of_before_a_planned_motion():
     """After letting go of a pulled handle, the planned way to the next grasp starts by backing out of the handle
     along the approach axis, however the grasp's direction lies: a planned path that swept the open fingers
@@ -312,15 +326,7 @@ def test_a_released_handle_is_backed_out_of_before_a_planned_motion():
         approach = backend.tcp_pose().rotation[:, 2]
         released = backend.tcp_pose().position.copy()
         opened = backend.ground_truth.box("cabinet.drawer_1").center.copy()
-        first_moves: list[np.ndarray] = []
-        execute = tools.motion.execute
-
-        def recording(path):
-            report = execute(path)
-            first_moves.append(backend.tcp_pose().position.copy())
-            return report
-
-        tools.motion.execute = recording
+        first_moves = _tcp_after_each_motion(tools, backend)
         tools.grasp(tools.parse_adaptive_shape_grasp_pose("white_and_pink_box"))
         backed = first_moves[0] - released
         assert float(backed @ -approach) == pytest.approx(0.05, abs=0.005), backed
@@ -526,15 +532,7 @@ def test_fingers_that_let_go_from_the_side_are_drawn_out_before_the_hand_rises()
         assert abs(approach[2]) < 0.94  # gripped from the side
         released = backend.tcp_pose().position.copy()
         placed = backend.ground_truth.box("soup_can").center.copy()
-        stops: list[np.ndarray] = []
-        execute = tools.motion.execute
-
-        def recording(path):
-            report = execute(path)
-            stops.append(backend.tcp_pose().position.copy())
-            return report
-
-        tools.motion.execute = recording
+        stops = _tcp_after_each_motion(tools, backend)
         tools.move_in_direction([0.0, 0.0, 1.0], 0.1)
         backed = stops[0] - released
         assert float(backed @ -approach) > 0.04 and abs(backed[2] - (-approach[2]) * np.linalg.norm(backed)) < 0.01

@@ -17,6 +17,7 @@ import numpy as np
 
 from roboscript.geometry import Transform, quat_from_yaw
 from roboscript.perception.base import DRAWER_FRONT_CLEARANCE, ArticulationJoint, Receptacle
+from roboscript.perception.furniture_parts import LEVEL, TOP_BAND
 from roboscript.perception.instances import densest_layer
 
 FRONT_BAND = 0.005  # metres behind the front's plane still taken as the front's own points
@@ -32,8 +33,6 @@ FACING_IN = 0.5  # least component across the drawer of the normal of a point on
 MIN_COVER = 0.4  # share of the cells across the bottom's extent its points must fall in (walls give two lines)
 MIN_DEPTH = 0.05  # metres: the least height given to the inside (walls not seen)
 WALL = 0.02  # metres taken off all round an inside not seen: the tray's walls and floor, and a margin
-TOP_FACING = 0.9  # least vertical component of the normal of a point on the carcass's top
-TOP_BAND = 0.01  # metres below the highest level points still on the carcass's top
 MIN_TOP_POINTS = 20  # fewer points on the top: it was not seen
 TOP_EDGE_RANK = 5  # the top's front edge: its points' 5th foremost (a camera sees the top thinly near its edge, and
 # a percentile lands behind the edge there; an inside must not reach back into the carcass)
@@ -76,7 +75,7 @@ def carcass_front(
 def _top_front_edge(local: np.ndarray, facing: np.ndarray) -> float | None:
     """The front edge (along x) of the highest level face among ``local`` points whose normals, in the same
     frame, are ``facing``; ``None`` where too few points face up there."""
-    up = facing[:, 2] > TOP_FACING
+    up = facing[:, 2] > LEVEL
     if up.sum() < MIN_TOP_POINTS:
         return None
     height = float(np.percentile(local[up, 2], 99))
