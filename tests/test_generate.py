@@ -133,7 +133,7 @@ def test_near_holds_beside_and_not_on_top_or_far():
 
 
 def test_every_family_instantiates_with_checks_that_load_and_programs_that_pass_the_checker(tmp_path):
-    tasks = generate_tasks(RECIPE, 30, 0, more=[(load_recipe("cupboard"), 10)])
+    tasks = generate_tasks(RECIPE, 30, 0, more=[(load_recipe("cupboard"), 10), (load_recipe("facing_cupboard"), 4)])
     families = Counter(t.task.family.removeprefix("sort_by_").replace("colour", "sort").replace("kind", "sort")
                        for t in tasks)  # fmt: skip
     assert set(families) == set(FAMILIES), families
@@ -152,7 +152,7 @@ def test_the_generated_benchmark_is_packaged_and_made_again_by_its_command(tmp_p
     assert len(suite) >= 200 and len(worlds) >= 50
     assert {t.label for t in suite.values()} >= {
         "into_container", "onto_plate", "into_drawer", "stack", "swap", "clear_table", "next_to", "sort_by_colour",
-        "open_door", "close_drawer",
+        "open_door", "close_drawer", "into_cupboard",
     }  # fmt: skip
     packaged = Path(next(iter(suite.values())).reference).parent.parent
     description = yaml.safe_load((packaged / "generated.yaml").read_text())["description"]
@@ -213,7 +213,7 @@ def test_suggested_tasks_are_validated_against_the_world_through_a_real_server(t
     assert next(iter(suite.values())).world == str(world_file)
     rejected = [json.loads(line) for line in out.with_suffix(".rejected.jsonl").read_text().splitlines()]
     reasons = {r["index"]: r["reason"] for r in rejected}
-    assert "'green_bowl' is not one of the world's containers and drawers" in reasons[1]
+    assert "'green_bowl' is not one of the world's containers, drawers and doors" in reasons[1]
     assert "'joint' takes above: VALUE" in reasons[2]
     assert reasons[3] == "already done at the start: on(apple, white_bowl)"
     assert reasons[5] == "the same instruction was suggested before"

@@ -24,8 +24,8 @@ def test_the_study_covers_every_pickable_type_with_three_grasp_tools():
     assert list(study.objects) == pickable and len(pickable) >= 40
     assert not {"plate", "bowl", "basket", "saucer"} & {object_types()[n].category for n in pickable}
     assert set(study.grasps) == {"adaptive", "central", "horizontal"}
-    assert [t.id for t in study.templates] == ["pick_place", "drawer"]
-    assert len(select_cells(study)) == len(pickable) * 2 * 3
+    assert [t.id for t in study.templates] == ["pick_place", "drawer", "cupboard"]
+    assert len(select_cells(study)) == len(pickable) * 3 * 3
 
 
 @pytest.mark.parametrize(

@@ -113,7 +113,7 @@ def _suite(**task) -> dict:
         ({"query": "objects = [table, aple] ; # go"}, "query lists 'aple', not in world 'world_2_pick_and_place'"),
         ({"checks": []}, "field 'checks' must be a non-empty list"),
         ({"checks": [{"in": ["aple", "footed_bowl"]}]}, "checks[0]: 'aple' is not one of the world's objects; did you"),
-        ({"checks": [{"in": ["apple", "table"]}]}, "'table' is not one of the world's containers and drawers"),
+        ({"checks": [{"in": ["apple", "table"]}]}, "'table' is not one of the world's containers, drawers and doors"),
         ({"checks": [{"beside": ["apple", "table"]}]}, "a check names exactly one of in, on, near, at, joint"),
         ({"checks": [{"at": "apple"}]}, "'at' takes either start_of: OBJECT"),
         ({"checks": [{"joint": "cabinet.drawer_7", "above": 0.1}]}, "'cabinet.drawer_7' is not one of the world's"),

@@ -17,16 +17,18 @@ from roboscript.backends.base import Backend
 from roboscript.geometry import Transform, rotation_angle_between
 from roboscript.grasping.choice import PRE_GRASP_DISTANCE
 from roboscript.grasping.heuristics import GraspError
+from roboscript.names import kind_of
 from roboscript.notices import notice
 from roboscript.perception.base import Perception
 from roboscript.planning.contacts import ContactAllowances
-from roboscript.planning.errors import IKError, PlanningError
+from roboscript.planning.errors import CartesianPathIncompleteError, IKError, PlanningError
 from roboscript.planning.motion import MotionPlanner
 
 EMPTY_GRIP = 0.002  # metres: fingers closed this far hold nothing
 SAME_ORIENTATION = 0.05  # radians: a move_to_pose turning the hand less is a straight move, a retreat if it backs off
 HOLDING = 0.005  # metres: fingers this much short of fully open hold something
 PULL_LEAST = 0.005  # metres a drawer or door held must move for a pull to count as made
+SWING_LEAST = 0.2  # of a path followed holding a door, the share the arm must reach for it to be made in part
 
 
 class Moves:
@@ -79,7 +81,8 @@ class Moves:
     def in_direction(self, unit: np.ndarray, distance: float) -> None:
         own = self.retreats.first(unit * distance, shorter=True)
         self.touching.leave_where_started()
-        if own is not None and own.kind == "release" and self.retreats.own(unit * distance, own):
+        retreating = own is not None and own.kind == "release"
+        if retreating and self.retreats.own(unit * distance, own):
             return
         parts = [name for name in self.held.names if name not in self.held.objects]
         if parts:
@@ -88,6 +91,11 @@ class Moves:
         try:
             self.motion.move_in_direction(unit, distance, plan_if_blocked=True)
         except IKError:
+            if retreating:
+                # Backing off a door's handle swung to the edge of reach: the fingers are open, and the next
+                # motion leaves from here (as move_to_pose's retreat does).
+                notice("move_in_direction: the retreat from what was let go is beyond the arm's reach: stopped here")
+                return
             if not self.retreats.lift_within_reach(unit * distance):
                 raise
         self.contacts.withdraw_cleared(self.held)
@@ -111,9 +119,25 @@ class Moves:
         self.contacts.withdraw_cleared(self.held)
 
     def along(self, targets: list[Transform]) -> None:
+        """Follows the path; holding a door, as far along it as the arm reaches, with a notice where that is short
+        of its end (a door swung 90 degrees by a hand that reaches 75), the door swept with the hand."""
         self.retreats.first(targets[0].position - self.backend.tcp_pose().position)
         self.touching.leave_where_started()
-        self.motion.follow(targets)
+        doors = [n for n in self.held.names if n not in self.held.objects and kind_of(n) == "door"]
+        if doors:
+            # A door held swings with the hand along the path: the arm must stay clear of where it sweeps.
+            with self.contacts.part_moving(doors[0], self.motion.sync(), held=True):
+                line = self.motion.cartesian(targets)
+                if line.fraction < SWING_LEAST:
+                    raise CartesianPathIncompleteError(line.fraction, line.reason)
+                self.motion.execute(line.waypoints)
+            if line.fraction < 1.0:
+                notice(
+                    f"follow_path: holding {doors[0]}, the hand followed {line.fraction:.0%} of the path: the rest is "
+                    f"beyond the arm's reach ({line.reason})"
+                )
+        else:
+            self.motion.follow(targets)
         self.contacts.withdraw_cleared(self.held)
 
     def grasp(self, target: Transform) -> None:

@@ -13,7 +13,7 @@ from collections.abc import Collection
 
 import numpy as np
 
-from roboscript.api import supports
+from roboscript.api import compartments, supports
 from roboscript.api.nearby import MOVED, NEAREST_BOUND, REPORT_BOUND, distance_moved, free_spots, ring_candidates
 from roboscript.api.spots import (
     MARGIN,
@@ -52,6 +52,7 @@ REPEAT_SPACING = 0.05  # metres: a receptacle's spot this near one that failed i
 NEAR_SPACING = 0.015  # the same round a program's position: a spot 2 cm further in may be the one within reach
 # Nearer than this to the base, the Panda lifting a thing straight up from a grasp from above meets its joint limits.
 ASIDE_MIN_REACH = 0.3
+UP = np.array([0.0, 0.0, 1.0])
 
 
 class PlacementError(FailureError, RuntimeError):
@@ -99,6 +100,8 @@ class PlaceRequest:
     target: np.ndarray | None = None
     spacing: float = REPEAT_SPACING
     budget: int = PLACE_IK_BUDGET  # IK screens for the search
+    # Which way the hand backs out after letting go: up, or out of the front of a compartment behind a door.
+    retreat: np.ndarray = dataclasses.field(default_factory=lambda: np.array([0.0, 0.0, 1.0]))
 
 
 class Placer:
@@ -109,10 +112,13 @@ class Placer:
         self.motion = motion
         self.base_xy = np.asarray(base_xy, dtype=float)
 
-    def spots(self, name: str, receptacle_name: str | None, position: np.ndarray | None) -> PlaceRequest:
-        """Where the held ``name`` could go: free spots in or on ``receptacle_name`` (``'table'``: aside on the
-        table), or the nearest free ones to ``position`` (on that receptacle where one is named, else on whatever
-        is under it), nearest first; with the words that say where, for errors."""
+    def spots(
+        self, name: str, receptacle_name: str | None, position: np.ndarray | None, tcp: Transform
+    ) -> PlaceRequest:
+        """Where the held ``name`` (the hand at ``tcp``) could go: free spots in or on ``receptacle_name``
+        (``'table'``: aside on the table; a door: the compartment behind it), or the nearest free ones to
+        ``position`` (on that receptacle where one is named, else on whatever is under it), nearest first; with
+        the words that say where, for errors."""
         if position is not None:
             target = np.asarray(position, dtype=float)
             on = "" if receptacle_name is None else f" on {receptacle_name!r}"
@@ -121,6 +127,8 @@ class Placer:
             return PlaceRequest(spots, where, target, NEAR_SPACING, PLACE_IK_BUDGET_NEAR)
         others = [o for o in self.perception.objects() if o not in (name, receptacle_name)]
         receptacle = self._receptacle(receptacle_name, name)
+        if kind_of(receptacle.name) == "door":
+            return self._compartment_request(name, receptacle, others, tcp)
         if receptacle_name == TABLE:
             spots = self._spots_aside(name, receptacle, others)
         elif self.perception.receptacle(receptacle.name) is None:
@@ -139,6 +147,26 @@ class Placer:
                 f"it holds {', '.join(inside) or 'nothing'}"
             )
         return PlaceRequest(spots, f"in {receptacle_name!r}")
+
+    def _compartment_request(
+        self, name: str, receptacle: Receptacle, others: list[str], tcp: Transform
+    ) -> PlaceRequest:
+        """Spots in the compartment behind a door, for the hand at ``tcp`` turned to point into it; the hand
+        backs out of the front after letting go."""
+        turn = compartments.hand_turn(tcp, receptacle, name)
+        inside = [self._footprint(o) for o in others if _within(self.perception.box(o), receptacle)]
+        height = self.perception.box(name).size[2]
+        spots = compartments.compartment_spots(
+            receptacle, self._footprint(name), height, turn, inside, self.base_xy
+        )
+        if not spots:
+            size = self.perception.box(name).size
+            held = [o for o in others if _within(self.perception.box(o), receptacle)]
+            raise ReceptacleFullError(
+                f"{receptacle.name!r} has no free spot for {name!r} ({size[0] * 100:.0f} x {size[1] * 100:.0f} x "
+                f"{size[2] * 100:.0f} cm); it holds {', '.join(held) or 'nothing'}"
+            )
+        return PlaceRequest(spots, f"in {receptacle.name!r}", retreat=compartments.open_side(receptacle))
 
     def _spots_near(self, name: str, receptacle_name: str | None, target: np.ndarray) -> list[PlacementSpot]:
         """Free spots for the held ``name`` at ``target`` or round it within :data:`NEAREST_BOUND`, nearest
@@ -197,11 +225,11 @@ class Placer:
         box = self.perception.box(name)
         pivot = np.array([footprint_center[0], footprint_center[1], box.center[2]])
         carried = _Carried(tcp, pivot, box.corners() - pivot)
-        spots, where, limits = request.spots, request.where, (request.spacing, request.budget)
+        spots, where, limits = request.spots, request.where, (request.spacing, request.budget, request.retreat)
         upright = self._search(carried, spots, PLACE_IK_QUICK, (0.0,), *limits)
         best = upright.leaving
         leaning: _Search | None = None
-        if best is None:
+        if best is None and request.retreat[2] > 0.5:
             # A pose the hand cannot back out of straight up would leave a program's own approach from above
             # (or its retreat) no room: leaning out from under what stands over the spot is better.
             leaning = self._search(carried, spots, PLACE_IK_QUICK, PLACE_LEANS, *limits)
@@ -223,7 +251,7 @@ class Placer:
     def place_pose(self, name: str, receptacle: str | None, target: np.ndarray | None, tcp: Transform) -> Transform:
         """The gripper pose, from the hand at ``tcp``, that sets the held ``name`` down in or on ``receptacle``, at
         ``target`` or both (:meth:`spots`, :meth:`reachable`); a notice says where a position was moved to."""
-        request = self.spots(name, receptacle, target)
+        request = self.spots(name, receptacle, target, tcp)
         pose, spot = self.reachable(name, tcp, request)
         if request.target is not None and distance_moved(spot, request.target) > MOVED:
             notice(
@@ -305,7 +333,7 @@ class Placer:
                 f"{name!r} cannot hold things: it has no interior and no flat top; receptacles here: "
                 f"{', '.join([*holding, TABLE])}; or pass position=[x, y, z]"
             )
-        if supports.is_closed_drawer(receptacle):
+        if supports.is_closed(self.perception, receptacle):
             raise PlacementError(f"{name!r} is closed: open it before placing anything into it")
         _, _, half = self.perception.footprint(held)
         if self.perception.receptacle(name) is not None and not fits(receptacle, half):
@@ -348,16 +376,17 @@ class Placer:
         leans: tuple[float, ...],
         spacing: float = REPEAT_SPACING,
         budget: int = PLACE_IK_BUDGET,
+        retreat: np.ndarray = UP,
     ) -> _Search:
-        """Spots in order (skipping near-repeats of spots that failed), for a collision-free IK from which the
-        hand can also retreat straight up (:data:`PLACE_RETREAT`), as a place's retreat would: a hand put down
-        with a link against the cabinet has no way out but through what it let go. Each spot is tried with the
-        object turned as the spot allows (round, or any quarter turn at a position), and released higher up so
-        the hand clears a deep container's walls; ``leans``: the angles (degrees) the hand may lean toward the
-        spot's open side, in order, at each height. Of the turns and IK branches that work at a height, the one
-        nearest the arm's present configuration is taken (a hand kept facing one way can make the arm swing round
-        behind itself), provided one planner run finds a path to it (:data:`PLACE_PATH_SCREENS` runs at most).
-        The wide ``search`` (:data:`PLACE_IK_WIDE`) is a last resort and stops at the first spot it reaches."""
+        """Spots in order (skipping near-repeats of spots that failed), for a collision-free IK from which the hand can
+        also retreat straight up (:data:`PLACE_RETREAT`; along ``retreat``), as a place's retreat would: a hand put down
+        with a link against the cabinet has no way out but through what it let go. Each spot is tried with the object
+        turned as the spot allows (round, or any quarter turn at a position), and released higher up so the hand clears
+        a deep container's walls; ``leans``: the angles (degrees) the hand may lean toward the spot's open side, in
+        order, at each height. Of the turns and IK branches that work at a height, the one nearest the arm's present
+        configuration is taken (a hand kept facing one way can make the arm swing round behind itself), provided one
+        planner run finds a path to it (:data:`PLACE_PATH_SCREENS` runs at most). The wide ``search``
+        (:data:`PLACE_IK_WIDE`) is a last resort and stops at the first spot it reaches."""
         q = self.motion.sync()
         found = _Search()
         tried: list[PlacementSpot] = []
@@ -373,7 +402,7 @@ class Placer:
             for lift, lean in [(lift, lean) for lift in PLACE_LIFTS for lean in leans]:
                 reached = self._place_options(carried, spot, lift, lean, q, found.errors, search)
                 budget -= len(spot.turns)
-                options = [(self._retreat_room(pose, g), pose, g) for pose, goals in reached for g in goals]
+                options = [(self._retreat_room(pose, g, retreat), pose, g) for pose, goals in reached for g in goals]
                 for room, pose, g in options:
                     if found.longest is None or room > found.room + 1e-3:
                         found.room, found.longest = room, (pose, g, spot)
@@ -435,11 +464,11 @@ class Placer:
         # Rotating about (z x side) carries the vertical toward ``side``: the hand's top leans that way.
         return quat_to_matrix(quat_from_axis_angle(np.cross([0.0, 0.0, 1.0], side), math.radians(lean)))
 
-    def _retreat_room(self, pose: Transform, q: np.ndarray) -> float:
-        """How far, up to :data:`PLACE_RETREAT`, the arm at ``q`` (the TCP at ``pose``) can move straight up
-        after letting go there, the fingers opened fully without touching anything but what they held (what it
-        held stays behind); 0 where the fingers cannot open."""
-        up = Transform(pose.position + np.array([0.0, 0.0, PLACE_RETREAT]), pose.quaternion)
+    def _retreat_room(self, pose: Transform, q: np.ndarray, direction: np.ndarray = UP) -> float:
+        """How far, up to :data:`PLACE_RETREAT`, the arm at ``q`` (the TCP at ``pose``) can move straight up (along
+        ``direction``) after letting go there, the fingers opened fully without touching anything but what they
+        held (what it held stays behind); 0 where the fingers cannot open."""
+        up = Transform(pose.position + np.asarray(direction) * PLACE_RETREAT, pose.quaternion)
         scene = self.motion.scene
         with scene.ignoring_held(), scene.fingers_open():
             return cartesian_path(self.motion.kinematics, scene, q, [up]).fraction * PLACE_RETREAT

@@ -11,6 +11,7 @@ from collections.abc import Callable
 from dataclasses import dataclass
 
 import numpy as np
+from scipy.spatial import Delaunay, QhullError
 
 from roboscript.api.held import Held
 from roboscript.backends.base import Backend
@@ -28,6 +29,10 @@ RELEASE_RETREAT_LEAST = 0.02  # a program's own retreat after a release may stop
 OWN_RETREAT = 0.5  # cosine (60 deg) above which a program's motion is its own retreat; wider than PREFERENCE_CONE
 FROM_ABOVE = 0.94  # cosine (20 deg) of the approach with straight down above which rising is backing out
 LIFT_SIDEWAYS = 0.01  # metres sideways a motion may go and still be a lift (:meth:`Retreats.lift_within_reach`)
+LEVEL = 0.5  # sine (30 deg) of a backing-out direction's slope below which the hand backs out level
+OUT_FROM_UNDER = 0.4  # metres a hand let go level backs out at most to have nothing over it
+OUT_STEP = 0.02
+WRIST_LENGTH = 0.08  # metres behind the hand (along the approach) the wrist still counts as the hand
 
 
 @dataclass(frozen=True)
@@ -66,7 +71,7 @@ class Retreats:
     def owe_release(self) -> None:
         """After letting go: back along the approach axis, until the fingertips have cleared what was held."""
         back = -self.backend.tcp_pose().rotation[:, 2]
-        self.pending = Owed(back, self._release_distance(back), "release")
+        self.pending = Owed(back, self._out_from_under(back, self._release_distance(back)), "release")
 
     def first(self, motion: np.ndarray | None, shorter: bool = False) -> Owed | None:
         """Makes the owed retreat, unless ``motion`` (the program's next straight move, as a displacement of the
@@ -118,6 +123,31 @@ class Retreats:
         notice(f"lift: went up {moved:.3f} m of {rise[2]:.3f} m: higher is beyond the arm's reach here")
         self.contacts.withdraw_cleared(self.held)
         return True
+
+    def _out_from_under(self, back: np.ndarray, distance: float) -> float:
+        """How far a hand that let go level backs out: ``distance``, or on until nothing the cameras see stands
+        over it (a compartment's ceiling), within :data:`OUT_FROM_UNDER`, so that the program's next move up is
+        free. Any other hand backs out ``distance``."""
+        if abs(float(back[2])) > LEVEL:
+            return distance
+        tcp = self.backend.tcp_pose()
+        lower, upper = np.array(self.gripper.hand_lower), np.array(self.gripper.hand_upper)
+        lower[2] -= WRIST_LENGTH
+        upper[2] = self.gripper.tip_length
+        signs = np.array([[i, j, k] for i in (0, 1) for j in (0, 1) for k in (0, 1)], dtype=float)
+        hand = tcp.apply(lower + signs * (upper - lower))
+        points = self.perception.occupied(list(self.held.objects))
+        above = points[(points[:, 2] > hand[:, 2].max() + 0.01) & (points[:, 2] < hand[:, 2].max() + 0.6)]
+        if len(above) == 0:
+            return distance
+        try:
+            outline = Delaunay(hand[:, :2])
+        except QhullError:
+            return distance
+        for moved in np.arange(distance, OUT_FROM_UNDER + 1e-9, OUT_STEP):
+            if not np.any(outline.find_simplex(above[:, :2] - back[:2] * moved) >= 0):
+                return float(moved)
+        return distance
 
     def _release_distance(self, back: np.ndarray) -> float:
         """How far the hand backs out along ``back`` after letting go: :data:`RETREAT_AFTER_RELEASE`, or until the

@@ -23,6 +23,7 @@ FLAT_TOP_BAND = 0.004  # metres below an object's top where its top face's point
 FLAT_TOP_SHARE = 0.3  # of its footprint's area the top face's points must span
 FLAT_TOP_POINTS = 5  # fewer points there: too little seen to tell
 HEADROOM = 0.4  # metres above a top face counted as its free volume
+DOOR_OPEN_ENOUGH = math.radians(40)  # a door opened less than this closes its compartment (the benchmark's "open")
 CLOSED_DRAWER = 0.04  # metres: a drawer's reachable interior shorter than this is closed
 FLAT_RIM = 0.03  # metres: a receptacle whose rim stands less than this above its floor is a plate or a saucer
 PLATE_EDGE = 0.015  # metres kept inside a plate's outline by what is set down on it (its rim rises there)
@@ -84,6 +85,15 @@ def whole_surface(perception: Perception, receptacle: Receptacle) -> Receptacle 
 
 def is_closed_drawer(receptacle: Receptacle) -> bool:
     return kind_of(receptacle.name) == "drawer" and receptacle.upper[0] - receptacle.lower[0] < CLOSED_DRAWER
+
+
+def is_closed(perception: Perception, receptacle: Receptacle) -> bool:
+    """Whether ``receptacle`` is a drawer pushed in or a compartment whose door stands less than
+    :data:`DOOR_OPEN_ENOUGH` open."""
+    if kind_of(receptacle.name) != "door":
+        return is_closed_drawer(receptacle)
+    joints = perception.joints(receptacle.name)
+    return not joints or joints[0].value < DOOR_OPEN_ENOUGH
 
 
 def floor_of(receptacle: Receptacle) -> float:

@@ -223,7 +223,8 @@ class ToolAPI:
 
     @tool
     def follow_path(self, path: Sequence[Pose]) -> None:
-        """Moves the TCP through the list of Poses, in order, as one Cartesian path, carrying what is attached."""
+        """Moves the TCP through the list of Poses, in order, as one Cartesian path, carrying what is attached; a
+        door held swings as far along it as the arm reaches (a ``[notice]`` line says how far, if short)."""
         if isinstance(path, Pose) or not isinstance(path, (list, tuple)) or not path:
             raise ArgumentTypeError(f"path must be a non-empty list of Pose, got {type(path).__name__}")
         self.moves.along([pose_argument(p, f"path[{i}]") for i, p in enumerate(path)])
@@ -245,7 +246,9 @@ class ToolAPI:
         ``move_to_pose`` there, then ``open_gripper()``. Give ``receptacle_name``, ``position`` or both:
 
         - ``receptacle_name``: into a container or an open drawer, onto a plate, or on top of any object with a flat
-          top (stacking); ``'table'``: aside on a free spot of the table.
+          top (stacking); ``'table'``: aside on a free spot of the table; a door opened 40 degrees or more
+          (``'cabinet.door_0'``): into the compartment behind it, carried in level: grasp the object with
+          ``parse_horizontal_grasp_pose`` first (after ``open_gripper()`` the hand backs out the way it came).
         - ``position`` ``[x, y, z]``: the object's middle goes above (x, y), resting on whatever is there (the table, or
           an object's top, a bowl or open drawer beneath); z may be anything. With ``receptacle_name`` too: at
           that position, in or on it.

@@ -1,9 +1,9 @@
 """The benchmark's checks, evaluated on ground-truth geometry at the end of a trial (DESIGN.md §5).
 
-``in(a, b)``: at least 80% of a's box volume inside b's box. ``on(a, b)``: a's bottom above b's bottom and at
-least 80% of a's footprint over b's. ``at(a, p)``: a's centre within 0.1 m of p. ``joint(j) > x``: a drawer or
-door opened beyond x (metres or radians). ``near(a, b)``: a beside b, their footprints at most 8 cm apart and less
-than 20% of either's over the other's (neither on nor in the other). Any of them negated (the original's
+``in(a, b)``: at least 80% of a's box volume inside b's box (a door's: its compartment's). ``on(a, b)``: a's bottom
+above b's bottom and at least 80% of a's footprint over b's. ``at(a, p)``: a's centre within 0.1 m of p. ``joint(j) >
+x``: a drawer or door opened beyond x (metres or radians). ``near(a, b)``: a beside b, their footprints at most 8 cm
+apart and less than 20% of either's over the other's (neither on nor in the other). Any of them negated (the original's
 ``flag_not``): ``not in(a, b)``.
 """
 
@@ -66,7 +66,7 @@ class Check:
 
     def _relation(self, gt: GroundTruth) -> CheckResult:
         if self.kind == "in":
-            a, b = gt.box(self.subject), gt.box(self.target)
+            a, b = gt.box(self.subject), gt.holding_box(self.target)
             inside = a.intersection(b).volume / max(a.volume, 1e-12)
             return CheckResult(self.name, inside >= FRACTION, f"{inside:.0%} of its volume inside")
         if self.kind == "on":

@@ -173,11 +173,11 @@ def _pair(entry: Reader, kind: str) -> tuple[str, str]:
 
 
 def _receptacles(world: WorldSpec, kind: str) -> list[str]:
-    """What ``in`` may name (containers and drawers), ``on`` (any object, and the table) and ``near`` (any object
-    or piece of furniture)."""
+    """What ``in`` may name (containers, drawers, and doors for the compartments behind them), ``on`` (any
+    object, and the table) and ``near`` (any object or piece of furniture)."""
     if kind == "in":
         containers = [o.name for o in world.objects if o.type.container]
-        return containers + [p for p in world.part_names() if kind_of(p) == "drawer"]
+        return containers + [p for p in world.part_names() if kind_of(p) in ("drawer", "door")]
     if kind == "near":
         return [*world.object_names(), *(c.name for c in world.cabinets)]
     return [TABLE_NAME, *world.object_names()]
@@ -207,7 +207,8 @@ def _relation_check(entry: Reader, kind: str, world: WorldSpec, negate: bool) ->
     """``in: [object, container or drawer]``, ``on: [object, object or the table]`` or ``near: [object, object]``."""
     subject, target = _pair(entry, kind)
     _name_check(entry, subject, world.object_names(), "objects")
-    kinds = {"in": "containers and drawers", "on": "objects and the table", "near": "objects and furniture"}[kind]
+    kinds = {"in": "containers, drawers and doors", "on": "objects and the table", "near": "objects and furniture"}
+    kinds = kinds[kind]
     _name_check(entry, target, _receptacles(world, kind), kinds)
     if subject == target:
         entry.fail(f"an object cannot be {kind} itself: {subject!r}")

@@ -20,6 +20,8 @@ from roboscript.generate.programs import (
     CLOSE_DRAWER,
     OPEN_DOOR,
     OPEN_DRAWER,
+    PICK_FROM_SIDE,
+    PUT,
     SPOT_BESIDE,
     Program,
     move_into,
@@ -28,6 +30,7 @@ from roboscript.generate.programs import (
 )
 from roboscript.generate.scene import DRAWER_HEIGHT_LIMIT, KINDS, Scene, fits, in_or_on, room_for
 from roboscript.objects.reading import said_colour, said_kind
+from roboscript.sim.world_file import ROBOT_BASE_XY
 
 DRAWER_SHUT = 0.03  # metres a drawer may stay out and count as closed
 NEAR_GAP = 0.03  # how far beside its target the oracle puts a thing (the `near` check allows 8 cm)
@@ -343,6 +346,50 @@ def close_drawer(scene: Scene, rng: np.random.Generator) -> TemplateTask | None:
     return TemplateTask("close_drawer", instruction, checks, program.text())
 
 
+# What a hand carries into a compartment from the side: its narrower side within the fingers' opening with room to
+# spare, tall enough to be gripped level above the floor, and low enough to pass under the panel above with the hand.
+SIDE_GRIP_WIDTH = 0.066
+SIDE_GRIP_HEIGHT = (0.04, 0.11)
+SIDE_GRIP_REACH = 0.6  # metres from the robot's base: a level hand low over the table reaches less far than one above
+
+
+def into_cupboard(scene: Scene, rng: np.random.Generator) -> TemplateTask | None:
+    """Open a cabinet door and put a thing into the compartment behind it (carried in from the side)."""
+    doors = [d for d in scene.compartments if not scene.opened(d)] if not scene.any_open else []
+    things = [
+        t
+        for t in scene.on_table
+        if float(min(scene.type(t).size[:2])) <= SIDE_GRIP_WIDTH
+        and SIDE_GRIP_HEIGHT[0] <= float(scene.type(t).size[2]) <= SIDE_GRIP_HEIGHT[1]
+        and float(np.linalg.norm(scene.position(t) - ROBOT_BASE_XY)) <= SIDE_GRIP_REACH
+    ]
+    if not doors or not things:
+        return None
+    door, thing = _one(rng, doors), _one(rng, things)
+    which = "the cabinet door" if len(scene.doors) == 1 else f"the {ORDINALS[scene.doors.index(door)]} cabinet door"
+    instruction = _one(
+        rng,
+        [
+            f"open {which} and put the {words(thing)} in the cupboard behind it",
+            f"put the {words(thing)} into the cabinet behind its door; the door is closed, open it first",
+            f"open {which}, then place the {words(thing)} inside the cabinet",
+        ],
+    )
+    handle = scene.handle_of(door)
+    program = Program(instruction).use(OPEN_DOOR, PICK_FROM_SIDE, PUT)
+    program.step(
+        f"The door turns on its hinge: swing it open by its handle ({handle}).", f"open_door({door!r}, {handle!r})"
+    )
+    program.step(
+        f"Things go in through the door under the shelf above, so grip the {words(thing)} from the side and put it "
+        "in; the hand backs out the way it came.",
+        f"pick_from_side({thing!r})",
+        f"put({thing!r}, parse_place_pose(object_name={thing!r}, receptacle_name={door!r}))",
+    )
+    checks = ({"joint": door, "above": DOOR_OPEN}, {"in": [thing, door]})
+    return TemplateTask("into_cupboard", instruction, checks, program.text())
+
+
 # The families of the generated suite's version 1, in their order (see roboscript.generate.suite.world_tasks).
 FIRST_FAMILIES = (
     "into_container", "onto_plate", "into_drawer", "stack", "swap", "sort", "clear_table", "next_to"
@@ -358,4 +405,5 @@ FAMILIES: dict[str, Family] = {
     "next_to": next_to,
     "open_door": open_door,
     "close_drawer": close_drawer,
+    "into_cupboard": into_cupboard,
 }

@@ -71,6 +71,15 @@ CLOSE_DRAWER = '''def close_drawer(drawer, handle):
     detach_object(drawer)
 '''
 
+PICK_FROM_SIDE = '''def pick_from_side(name):
+    """Grasps `name` from the side, fingers level, and lifts it clear of what is around it."""
+    open_gripper()
+    grasp(parse_horizontal_grasp_pose(object_name=name))
+    close_gripper()
+    attach_object(name)
+    move_in_direction(direction=[0, 0, 1], distance=0.1)
+'''
+
 SPOT_BESIDE = '''def spot_beside(target, name, obstacles):
     """A free place on the table right beside `target` for `name`: left, right, nearer or farther, the first
     side where `name` clears every obstacle and stays within the arm's comfortable reach."""

@@ -45,13 +45,14 @@ class CabinetRecipe:
     probability: float
     position: tuple[float, float]
     width: float
-    rows: tuple[str, ...]
+    rows: tuple[str | dict, ...]  # a row's kind, or a world file's row entry (kind, height, hinge)
     keep_clear_x: Range
     keep_clear_y: Range
     spacing: float  # kept between the cabinet's sides and anything on the table
     # The chance that one of its top two drawers starts pulled out, and how far (metres): worlds for closing one.
     start_open: float = 0.0
     open_distance: Range = Range(0.0, 0.0)
+    yaw: float = 0.0  # degrees; 0: the front faces +x, 180: it faces the robot across the table
 
 
 @dataclass(frozen=True)
@@ -118,10 +119,17 @@ def _types(entry: Reader, names: Any, what: str) -> tuple[str, ...]:
     return tuple(names)
 
 
+def row_kind(row: object) -> str | None:
+    """A recipe row's kind: the row itself (``drawer``) or its entry's ``kind``."""
+    if isinstance(row, dict):
+        return row.get("kind")
+    return row if isinstance(row, str) else None
+
+
 def _parse_cabinet(source: str, data: Any) -> CabinetRecipe | None:
     if data is None:
         return None
-    fields = {"probability", "position", "width", "rows", "keep_clear", "spacing", "start_open"}
+    fields = {"probability", "position", "yaw", "width", "rows", "keep_clear", "spacing", "start_open"}
     entry = Reader(source, "cabinet", data, fields, RecipeFileError)
     opening = Reader(
         source, "cabinet.start_open", entry.data.get("start_open", {}), {"probability", "distance"}, RecipeFileError
@@ -130,13 +138,17 @@ def _parse_cabinet(source: str, data: Any) -> CabinetRecipe | None:
     if distance.low < 0.0 or distance.high > 0.25:
         opening.fail(f"field 'distance' is how far a drawer starts pulled out, within 0..0.25 m; got {distance}")
     rows = entry.data.get("rows", ["drawer", "drawer", "drawer"])
-    if not isinstance(rows, list) or not rows or any(r not in ("drawer", "door") for r in rows):
-        entry.fail(f"field 'rows' must be a non-empty list of 'drawer' or 'door', got {rows!r}")
+    if not isinstance(rows, list) or not rows or any(row_kind(r) not in ("drawer", "door") for r in rows):
+        entry.fail(
+            f"field 'rows' must be a non-empty list of 'drawer', 'door' or row entries ({{kind: door, height: 0.2}}), "
+            f"got {rows!r}"
+        )
     clear = Reader(source, "cabinet.keep_clear", entry.required("keep_clear"), {"x", "y"}, RecipeFileError)
     return CabinetRecipe(
         probability=_probability(entry, "probability", 0.5),
         position=entry.vector("position", (2,)),
         width=entry.number("width", 0.44),
+        yaw=entry.number("yaw", 0.0),
         rows=tuple(rows),
         keep_clear_x=_range(clear, "x"),
         keep_clear_y=_range(clear, "y"),

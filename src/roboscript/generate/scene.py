@@ -25,6 +25,11 @@ KINDS: dict[str, str] = {
 }
 DRAWER_HEIGHT_LIMIT = 0.1  # taller things stand out of a drawer (the object-shape study: 50-79% inside)
 DRAWERS_USED = 2  # the top two: the lower ones are low for a hand coming from above
+# A hand gripping a drawer's bar from the front closes its fingers up and down, the hand 21 cm across that way (the
+# Panda's): a handle lower than this above the table leaves it no room.
+HANDLE_ROOM = 0.15
+# A compartment at least this tall has room for a level hand carrying a thing in through its door.
+COMPARTMENT_HEIGHT = 0.18
 
 
 def in_or_on(thing: ObjectType, receptacle: ObjectType) -> str:
@@ -108,7 +113,14 @@ class Scene:
 
     @cached_property
     def drawers(self) -> list[str]:
-        drawers = [p for p in self.world.part_names() if kind_of(p) == "drawer"]
+        """The drawers tasks use: the top :data:`DRAWERS_USED` of those whose handle stands high enough for a hand
+        gripping its bar from the front (:data:`HANDLE_ROOM`)."""
+        drawers = [
+            name
+            for c in self.world.cabinets
+            for (row, name), middle in zip(c.row_parts(), c.row_middles(), strict=True)
+            if row.kind == "drawer" and middle >= HANDLE_ROOM
+        ]
         return drawers[:DRAWERS_USED]
 
     @cached_property
@@ -123,6 +135,17 @@ class Scene:
     def opened(self, part: str) -> float:
         """How far a drawer (metres) or door (radians) starts open."""
         return next((row.open for c in self.world.cabinets for row, name in c.row_parts() if name == part), 0.0)
+
+    @cached_property
+    def compartments(self) -> list[str]:
+        """The doors with a compartment behind them tall enough for a hand to put things in (see
+        :data:`COMPARTMENT_HEIGHT`)."""
+        return [
+            name
+            for c in self.world.cabinets
+            for row, name in c.row_parts()
+            if row.kind == "door" and row.height >= COMPARTMENT_HEIGHT
+        ]
 
     def handle_of(self, drawer: str) -> str:
         """The handle of ``drawer``: handles are numbered by row, drawers among drawers."""

@@ -16,7 +16,7 @@ from pathlib import Path
 import numpy as np
 import yaml
 
-from roboscript.generate.recipe import Recipe
+from roboscript.generate.recipe import Recipe, row_kind
 from roboscript.generate.scene import DRAWERS_USED
 from roboscript.objects import get_object_type
 from roboscript.sim.world_file import ROBOT_BASE_XY, WorldFileError, WorldSpec, parse_world, placements_overlap
@@ -71,14 +71,15 @@ def _arrange(recipe: Recipe, rng: np.random.Generator, name: str, origin: str) -
     if cabinet is not None and rng.random() < cabinet.probability:
         rows: list = list(cabinet.rows)
         if cabinet.start_open and rng.random() < cabinet.start_open:
-            drawers = [k for k, row in enumerate(rows) if row == "drawer"][:DRAWERS_USED]
+            drawers = [k for k, row in enumerate(rows) if row_kind(row) == "drawer"][:DRAWERS_USED]
             k = drawers[int(rng.integers(len(drawers)))]
             pulled = cabinet.open_distance.low + rng.random() * (cabinet.open_distance.high - cabinet.open_distance.low)
-            rows[k] = {"kind": "drawer", "open": round(float(pulled), 3)}
-        data["furniture"] = [
-            {"name": "cabinet", "type": "cabinet", "position": list(cabinet.position), "width": cabinet.width,
-             "rows": rows}
-        ]  # fmt: skip
+            entry = rows[k] if isinstance(rows[k], dict) else {"kind": "drawer"}
+            rows[k] = {**entry, "open": round(float(pulled), 3)}
+        furniture = {"name": "cabinet", "type": "cabinet", "position": list(cabinet.position)}
+        if cabinet.yaw:
+            furniture["yaw"] = cabinet.yaw
+        data["furniture"] = [{**furniture, "width": cabinet.width, "rows": rows}]
     data["objects"] = []
     receptacles = _draw_receptacles(recipe, rng)
     for type_name in receptacles:
@@ -164,7 +165,10 @@ def _allowed(recipe: Recipe, data: dict, x: float, y: float, radius: float) -> b
     if clear_x.low - radius < x < clear_x.high + radius and clear_y.low - radius < y < clear_y.high + radius:
         return False
     # Room beside the cabinet's sides for a hand (and its wrist) coming for a thing there.
-    half = np.array([CABINET_DEPTH / 2, cabinet.width / 2]) + cabinet.spacing + radius
+    half = np.array([CABINET_DEPTH / 2, cabinet.width / 2])
+    if abs(math.sin(math.radians(cabinet.yaw))) > 0.7:  # turned a quarter: its depth runs along y
+        half = half[::-1]
+    half = half + cabinet.spacing + radius
     return bool(np.any(np.abs(np.subtract((x, y), cabinet.position)) > half))
 
 

@@ -7,6 +7,7 @@ which of them the arm reaches, with a straight approach and, for a drawer's hand
 
 from __future__ import annotations
 
+import math
 from collections.abc import Callable, Collection
 
 import numpy as np
@@ -25,6 +26,7 @@ from roboscript.grasping.heuristics import GraspError, central_lift_grasps, hori
 from roboscript.names import kind_of
 from roboscript.notices import notice
 from roboscript.perception.base import ObjectPoints, Perception
+from roboscript.planning.cartesian import arc_poses
 from roboscript.planning.contacts import ContactAllowances
 from roboscript.planning.errors import IKError, PlanningError
 from roboscript.planning.motion import MotionPlanner
@@ -38,7 +40,9 @@ BOX_GRASP_QUALITY = 0.5
 LYING_FLAT = 0.05
 LYING_SIDE_PENALTY = 1.5
 PULL_CHECK = 0.25  # metres a drawer handle grasp should be able to pull
-PULL_LEAST = 0.15  # metres the grasp must pull where none pulls PULL_CHECK
+SWING_CHECK = math.radians(70)  # how far a door handle grasp should be able to swing its door open
+SWING_STEPS = 14  # poses along that arc checked
+PULL_LEAST = 0.6  # of PULL_CHECK or SWING_CHECK, what the grasp must open where none opens it in full
 ADAPTIVE_DETECTED = 12  # antipodal grasps ranked against the box grasps
 FLIP = Transform(np.zeros(3), np.array([0.0, 0.0, 1.0, 0.0]))  # half a turn about the approach axis
 
@@ -155,10 +159,13 @@ class GraspChooser:
 
     def first_reachable(self, name: str, candidates: list[Transform], kind: str) -> Transform:
         """The first candidate whose grasp and pre-grasp poses have collision-free IK (the gripper may touch the
-        object itself); each is also tried turned half a turn about its approach axis."""
+        object itself); each is also tried turned half a turn about its approach axis. A handle's grasp should
+        also be able to open its drawer or door (:meth:`_opening_reach`): the wrist turned near its limit on one
+        of the two turns cannot follow a door's arc."""
         q = self.motion.sync()
         errors: list[str] = []
         fallback: Transform | None = None
+        handle = kind_of(name) == "handle"
         short_pull: tuple[float, Transform] | None = None
         walled: Transform | None = None
         short_approach: Transform | None = None
@@ -170,18 +177,18 @@ class GraspChooser:
                     # top-down line (a banana beside the Panda: a grasp at its end was taken instead, and the
                     # banana swung out of the fingers).
                     try:
-                        goal, approach = self.motion.approaches(
-                            pose, PRE_GRASP_DISTANCE, q, attempts=8, max_attempts=40, branches=3, first=True
-                        )[0]
+                        options = self.motion.approaches(
+                            pose, PRE_GRASP_DISTANCE, q, attempts=8, max_attempts=40, branches=3, first=not handle
+                        )
                     except IKError as exc:
                         errors.append(str(exc))
                         continue
-                    if approach is None:
+                    if options[0][1] is None:
                         # Reachable, but grasp() will have to plan its final approach: kept as a last resort.
                         fallback = fallback or pose
                         errors.append("the straight approach from the pre-grasp pose is blocked on every IK branch")
                         continue
-                    pulled, why = self._pull_reach(name, pose, goal)
+                    approach, pulled, why = self._branch_that_opens(name, pose, options)
                     if why:
                         errors.append(why)
                         if pulled >= PULL_LEAST and (short_pull is None or pulled > short_pull[0]):
@@ -209,25 +216,54 @@ class GraspChooser:
             f"without collision; first failure: {errors[0] if errors else 'none'}",
         )
 
-    def _pull_reach(self, name: str, pose: Transform, q: np.ndarray) -> tuple[float, str]:
-        """For the handle of a drawer: how far the arm can pull it open from this grasp, up to ``PULL_CHECK``
-        metres, and why not further (empty if it can pull that far). A handle is grasped to be pulled, and a
-        grasp that cannot pull is no use."""
+    def _branch_that_opens(
+        self, name: str, pose: Transform, options: list[tuple[np.ndarray, np.ndarray | None]]
+    ) -> tuple[np.ndarray, float, str]:
+        """Of a grasp's IK branches (``options``, nearest first; the first has a clear approach), the first with a
+        clear approach from which a handle's drawer or door opens in full (:meth:`_opening_reach`), made the
+        grasp's goal for ``pose``: its approach line, how far it opens and why not further; else the nearest's.
+        A UR5e's nearest branch at a door's level handle turns its wrist into its forearm a quarter of the way
+        round, where another swings the door wide."""
+        clear = [(goal, line) for goal, line in options if line is not None]
+        nearest = self._opening_reach(name, pose, clear[0][0])
+        if not nearest[1]:
+            return clear[0][1], *nearest
+        for goal, line in clear[1:]:
+            opened, why = self._opening_reach(name, pose, goal)
+            if not why:
+                self.motion.prefer_goal(pose, goal)
+                return line, opened, why
+        return clear[0][1], *nearest
+
+    def _opening_reach(self, name: str, pose: Transform, q: np.ndarray) -> tuple[float, str]:
+        """For the handle of a drawer or a door: the share of ``PULL_CHECK`` metres (a drawer) or
+        ``SWING_CHECK`` (a door, along the arc about its hinge) the arm can open it from this grasp, and why not
+        further (empty if it can open it that far). A handle is grasped to be pulled, and a grasp that cannot pull
+        is no use."""
         if kind_of(name) != "handle":
             return 0.0, ""
         joints = self.perception.joints(name)
-        if not joints or joints[0].type != "prismatic":
+        if not joints:
             return 0.0, ""
-        remaining = joints[0].upper - joints[0].value
-        distance = min(PULL_CHECK, remaining)
-        if distance < 0.02:
-            return distance, ""
-        target = Transform(pose.position + joints[0].axis * distance, pose.quaternion)
-        line = self.motion.cartesian([target], start=q)
+        joint = joints[0]
+        remaining = joint.upper - joint.value
+        if joint.type == "prismatic":
+            distance = min(PULL_CHECK, remaining)
+            if distance < 0.02:
+                return 1.0, ""
+            line = self.motion.cartesian([Transform(pose.position + joint.axis * distance, pose.quaternion)], start=q)
+            what = f"the drawer can be pulled only {line.fraction * distance * 100:.0f} cm"
+        else:
+            angle = min(SWING_CHECK, remaining)
+            if angle < math.radians(5):
+                return 1.0, ""
+            arc = arc_poses(pose, np.asarray(joint.axis), np.asarray(joint.position), SWING_STEPS, angle)
+            with self.contacts.part_moving(joint.part, q, held=False):
+                line = self.motion.cartesian(arc, start=q)
+            what = f"the door can be swung only {math.degrees(line.fraction * angle):.0f} degrees"
         if line.fraction >= 1.0:
-            return distance, ""
-        pulled = line.fraction * distance
-        return pulled, f"from this grasp the drawer can be pulled only {pulled * 100:.0f} cm: {line.reason}"
+            return 1.0, ""
+        return line.fraction, f"from this grasp {what}: {line.reason}"
 
 
 def side_penalty(pose: Transform, lying: bool) -> float:

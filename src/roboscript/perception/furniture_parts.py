@@ -23,6 +23,7 @@ UPRIGHT = 0.3  # normals with |z| below this belong to upright faces (fronts)
 # below counted as standing behind the carcass's front (none of them was seen).
 TOP_BAND = 0.01
 NEAR_HANDLE = (0.1, 0.05)  # metres across and up from a handle within which the front around it lies
+FACES_HANDLE = 0.01  # metres the handle stands at least before a face around it that is its front
 FRONT_SLACK = 0.01  # metres behind the carcass's front plane that still count as a moving part's
 FRONT_SHARE = 0.92  # of a row's height, what its front covers (the rest: the panel between it and the next)
 ROW_SLACK = 0.005  # metres beyond its front's height range that a row's part may still show (the handles' spread)
@@ -92,13 +93,15 @@ def split_furniture(
 
 
 def _front_direction(points: np.ndarray, normals: np.ndarray, handles: Sequence[np.ndarray]) -> np.ndarray | None:
-    """The horizontal direction the fronts face: the upright faces' normals around the handles."""
+    """The horizontal direction the fronts face: the normals of the upright faces around the handles that face
+    their handle (a handle stands out of its front; a cabinet's side beside a door's handle faces away from it)."""
     found = []
     upright = np.abs(np.nan_to_num(normals[:, 2], nan=1.0)) < UPRIGHT
     for h in handles:
         centre = np.median(h, axis=0)
         across = np.linalg.norm(points[:, :2] - centre[:2], axis=1)
-        near = upright & (across < NEAR_HANDLE[0]) & (np.abs(points[:, 2] - centre[2]) < NEAR_HANDLE[1])
+        facing = np.nan_to_num(np.einsum("ij,ij->i", centre - points, normals)) > FACES_HANDLE
+        near = upright & facing & (across < NEAR_HANDLE[0]) & (np.abs(points[:, 2] - centre[2]) < NEAR_HANDLE[1])
         if near.sum() >= 10:
             found.append(normals[near])
     if not found:

@@ -195,6 +195,9 @@ class GroundTruthPerception(Perception):
             lower = lower.copy()
             lower[0] = max(lower[0], -opening + DRAWER_FRONT_CLEARANCE)
             return Receptacle(name, frame, lower, upper)
+        if entity.kind == "part" and entity.category == "door":
+            frame, lower, upper = self.gt.compartment(name)
+            return Receptacle(name, frame, lower, upper)
         return None
 
 

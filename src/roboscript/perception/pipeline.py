@@ -43,6 +43,7 @@ from roboscript.perception.base import (
     UnknownObjectError,
     outside,
 )
+from roboscript.perception.compartments import CompartmentUnseenError, compartment_inside, door_angle
 from roboscript.perception.drawers import (
     carcass_front,
     closed_drawer,
@@ -143,9 +144,11 @@ class PipelinePerception(Perception):
         self._looked = False
         self._stale = False
         self._joints: dict[str, ArticulationJoint] = {}  # estimated from the last look, by moving part
-        # The best-borne estimate of each part's joint so far: (points on its front's plane, joint, handle centre).
         # Per part: the support of its best joint estimate, the joint, and where its handle and front stood then.
         self._best_joint: dict[str, tuple[int, ArticulationJoint, np.ndarray, np.ndarray]] = {}
+        # The middle of each door's front and its handle when the door was first seen, taken as shut: how far a door
+        # stands open is how far they have turned about the hinge since (a door swung open may be seen better).
+        self._door_shut: dict[str, tuple[np.ndarray, np.ndarray]] = {}  # (front's middle, handle's centre)
         self._vacated: list[Box3D] = []  # where objects were taken from since the last look
         self._holding_looks = False
         self._look_tcp: np.ndarray | None = None  # where the gripper was at the last look
@@ -516,13 +519,25 @@ class PipelinePerception(Perception):
             joint = moved_with_handle(best[1], best[2], handle_center)
         else:
             self._best_joint[part] = (support, joint, handle_center, front.mean(axis=0))
-        joint = self._with_opening(joint)
+        if joint.type == "revolute":
+            self._door_shut.setdefault(part, (front.mean(axis=0), handle_center))
+        joint = self._with_opening(joint, handle_center)
         self._joints[part] = joint
         return joint
 
-    def _with_opening(self, joint: ArticulationJoint) -> ArticulationJoint:
+    def _with_opening(self, joint: ArticulationJoint, handle_center: np.ndarray) -> ArticulationJoint:
         """A drawer's joint with how far it is pulled out: how far its front stands before its cabinet's (0
-        where the cabinet was not seen well enough to tell)."""
+        where the cabinet was not seen well enough to tell); a door's with how far it has swung open: how far its
+        front has turned about the hinge since the door was first seen, shut."""
+        if joint.type == "revolute":
+            shut_front, shut_handle = self._door_shut[joint.part]
+            handle = self._handle(joint.part)
+            if self._part_look[handle] > self._part_look[joint.part]:
+                # The handle was seen since the front (the detector missed the front swung open): it turns as one.
+                angle = door_angle(joint, shut_handle, self.parts_seen[handle].points.mean(axis=0))
+            else:
+                angle = door_angle(joint, shut_front, self.parts_seen[joint.part].points)
+            return dataclasses.replace(joint, value=max(0.0, angle))
         furniture = joint.part.split(".", 1)[0]
         if joint.type != "prismatic" or furniture not in self.parts_seen:
             return joint
@@ -574,7 +589,7 @@ class PipelinePerception(Perception):
     def receptacle(self, name: str) -> Receptacle | None:
         obj = self._object(name)
         if obj is None:
-            return self._drawer_inside(name)
+            return self._compartment(name) if kind_of(name) == "door" else self._drawer_inside(name)
         if obj.kind is None or not obj.kind.container or obj.kind.interior is None:
             return None
         return interior_of(obj.points, obj.outline, obj.kind, name)
@@ -611,6 +626,24 @@ class PipelinePerception(Perception):
             # Its front stands out of the carcass, so it is open, though no look showed its bottom.
             return unseen_inside(name, points, frame, carcass)
         return inside if inside is not None else closed_drawer(name, points, frame)
+
+    def _compartment(self, name: str) -> Receptacle | None:
+        """The free inside behind a door (:mod:`roboscript.perception.compartments`)."""
+        joints = self.parts.joints(name)
+        if not joints or joints[0].type != "revolute" or joints[0].part != name:
+            return None
+        joint = self._estimated(joints[0])
+        furniture = name.split(".", 1)[0]
+        if furniture not in self.parts_seen:
+            why = f"no camera has seen it, and {name!r} is behind its front"
+            raise ObjectNotFoundError(furniture, self.names(), why)
+        seen = self.parts_seen[furniture]
+        try:
+            return compartment_inside(
+                name, joint, self._door_shut[name][0], seen.points, seen.normals, self._part(name).points
+            )
+        except CompartmentUnseenError as exc:
+            raise ObjectNotFoundError(name, self.names(), str(exc)) from exc
 
     def _may_look_again(self) -> bool:
         """Whether a new look could show more than the last: the gripper has moved since (the arm hides less, or

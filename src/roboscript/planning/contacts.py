@@ -14,6 +14,8 @@ from __future__ import annotations
 from collections.abc import Callable, Collection, Iterable, Iterator
 from contextlib import contextmanager
 
+import numpy as np
+
 from roboscript.planning.motion import MotionPlanner
 
 
@@ -52,6 +54,26 @@ class ContactAllowances:
         finally:
             for part in parts:
                 self.motion.scene.allow("gripper", part, False)
+
+    @contextmanager
+    def part_moving(self, name: str, q: np.ndarray, held: bool) -> Iterator[None]:
+        """Within the block the drawer or door ``name`` moves with the hand from the arm at ``q``, where the scene
+        can move it (:meth:`PlanningScene.part_following`): the fingers may touch it, as they hold its handle, but
+        the links may not, for it no longer stands where it was seen (a door swung open sweeps toward the arm).
+        Where the scene cannot move it, the links may touch it as while it is held (:meth:`hold_part`). ``held``:
+        whether the hand holds it now (its allowances stay after the block)."""
+        scene = self.motion.scene
+        parts = self.family(name)
+        with scene.part_following(name, q) as moving:
+            for part in parts:
+                scene.allow("gripper", part)
+                scene.allow("arm", part, not moving)
+            try:
+                yield
+            finally:
+                for part in parts:
+                    self.motion.scene.allow("gripper", part, held or name in self.touched)
+                    self.motion.scene.allow("arm", part, held)
 
     def hold_part(self, name: str) -> None:
         """A drawer or door is held: it moves with the hand, while the scene keeps it where it was last seen, so

@@ -243,12 +243,16 @@ class MotionPlanner:
         target's own IK branch: a configuration solved for the start of the line on its own may sit on another
         branch, from which no straight line leads to the target. Near a singularity (the hand above the base)
         some branches cannot follow the line at all, so up to ``branches`` IK solutions are tried. Returns those
-        whose line is clear (with ``first``, the first such), with its joint waypoints; where none is, the longest
+        whose line is clear (with ``first``, the first such; the configuration preferred for ``target``, if one is,
+        first of all), with its joint waypoints; where none is, the longest
         line clear for at least :data:`MIN_APPROACH_FRACTION` of ``distance``; or, when every line is blocked
         sooner, the nearest solution with None. Raises :class:`IKError` if ``target`` has no solution.
         """
         reference = self.backend.joint_positions() if reference is None else reference
         solutions = ik_solutions(self.kinematics, target, reference, self.scene, attempts, max_attempts, branches)
+        preferred = self._preferred_for(target)
+        if preferred is not None:  # chosen for what follows the grasp (a handle's branch that can swing its door)
+            solutions = [preferred, *solutions]
         start = Transform(target.position - distance * target.rotation[:, 2], target.quaternion)
         found = []
         shorter: tuple[float, np.ndarray, np.ndarray] | None = None

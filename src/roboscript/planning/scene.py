@@ -15,6 +15,7 @@ import contextlib
 import dataclasses
 import functools
 import itertools
+import math
 from collections.abc import Iterable, Iterator
 from dataclasses import dataclass
 
@@ -56,6 +57,19 @@ class Attachment:
     body: int
     tcp_to_object: np.ndarray  # 4x4
     qpos_address: int  # where the object's free joint keeps its pose in qpos
+
+
+@dataclass(frozen=True)
+class _FollowedPart:
+    """A drawer or door moving with the hand (:meth:`PlanningScene.part_following`): its joint's qpos address and
+    value at the start, whether it turns, its axis's anchor and direction, and where the TCP started."""
+
+    address: int
+    start: float
+    revolute: bool
+    anchor: np.ndarray
+    axis: np.ndarray
+    tcp_start: np.ndarray
 
 
 class PlanningScene:
@@ -115,6 +129,7 @@ class PlanningScene:
         # Contacts that may be left but not deepened: body pair -> the least distance allowed (the start's).
         self._leaving: dict[tuple[int, int], float] = {}
         self._attached: dict[str, Attachment] = {}
+        self._following: _FollowedPart | None = None
         self._attached_allowed: dict[str, set[int]] = {}
         self._lower, self._upper = robot.joint_lower - 1e-9, robot.joint_upper + 1e-9
         self._finger_qpos, self._finger_open = _open_finger_positions(model, robot, self._gripper_bodies)
@@ -366,6 +381,30 @@ class PlanningScene:
         return list(self._attached)
 
     @contextlib.contextmanager
+    def part_following(self, name: str, q: np.ndarray) -> Iterator[bool]:
+        """Within the block, the drawer or door ``name`` (a body of its own in this scene, with its joint) moves
+        as if held by the hand from the arm at ``q``: its hinge turns as the TCP goes round it, its slide as the TCP
+        goes along it. A door swung open sweeps toward the arm that swings it. Yields whether the scene could
+        (a scene of observed surfaces has no joints): where not, the part stays where it is."""
+        bodies = [b for b in self._bodies_named(name) if self.model.body_jntnum[b] > 0]
+        if not bodies or self._following is not None:
+            yield False
+            return
+        joint = int(self.model.body_jntadr[bodies[0]])
+        address = int(self.model.jnt_qposadr[joint])
+        start = float(self.data.qpos[address])
+        tcp = self.tcp_pose(np.asarray(q, dtype=float)).position.copy()
+        revolute = int(self.model.jnt_type[joint]) == int(mujoco.mjtJoint.mjJNT_HINGE)
+        anchor, axis = self.data.xanchor[joint].copy(), self.data.xaxis[joint].copy()
+        self._following = _FollowedPart(address, start, revolute, anchor, axis, tcp)
+        try:
+            yield True
+        finally:
+            self._following = None
+            self.data.qpos[address] = start
+            mujoco.mj_kinematics(self.model, self.data)
+
+    @contextlib.contextmanager
     def ignoring_held(self) -> Iterator[None]:
         """Within this block, what the gripper holds collides with nothing: for questions about the hand once it
         has let go (can it leave the place where it puts something down?)."""
@@ -466,6 +505,21 @@ class PlanningScene:
     def _kinematics(self, q: np.ndarray) -> None:
         self.data.qpos[self._qpos] = q
         mujoco.mj_kinematics(self.model, self.data)
+        if self._following is not None:
+            self._follow_part(self._following)
+            mujoco.mj_kinematics(self.model, self.data)
+
+    def _follow_part(self, part: _FollowedPart) -> None:
+        """Sets the followed part's joint to where the TCP has taken it: the turn of the TCP about a hinge since the
+        start, or its travel along a slide."""
+        tcp = self.data.site_xpos[self.robot.tcp_site]
+        if part.revolute:
+            then, now = part.tcp_start - part.anchor, tcp - part.anchor
+            then, now = then - (then @ part.axis) * part.axis, now - (now @ part.axis) * part.axis
+            moved = math.atan2(float(np.cross(then, now) @ part.axis), float(then @ now))
+        else:
+            moved = float((tcp - part.tcp_start) @ part.axis)
+        self.data.qpos[part.address] = part.start + moved
 
     def _place(self, q: np.ndarray) -> None:
         """Kinematics with the arm at ``q`` and every held object carried along."""

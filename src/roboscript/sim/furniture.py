@@ -18,6 +18,7 @@ import numpy as np
 from roboscript.geometry import quat_from_yaw, quat_to_mujoco
 
 RowKind = Literal["drawer", "door"]
+HingeSide = Literal["left", "right"]
 
 CABINET_RGBA = (0.86, 0.84, 0.8, 1.0)
 FRONT_RGBA = (0.93, 0.92, 0.88, 1.0)
@@ -40,6 +41,9 @@ class CabinetRow:
     kind: RowKind
     height: float = 0.14
     open: float = 0.0  # how far it starts open: metres for a drawer, radians for a door
+    # A door's hinge, on the left or right edge of the opening as seen from in front of the cabinet (left: its
+    # local -y).
+    hinge: HingeSide = "left"
 
 
 @dataclass(frozen=True)
@@ -69,6 +73,15 @@ class CabinetSpec:
         """Each row with the name of its drawer or door, from the top down."""
         names = self.part_names()
         return [(row, names[2 * k]) for k, row in enumerate(self.rows)]
+
+    def row_middles(self) -> list[float]:
+        """The height of each row's middle above the cabinet's base, from the top down."""
+        middles, z = [], self.height
+        for row in self.rows:
+            z -= self.panel
+            middles.append(z - row.height / 2)
+            z -= row.height
+        return middles
 
     def part_names(self) -> list[str]:
         names = []
@@ -212,13 +225,14 @@ def add_cabinet(spec: mujoco.MjSpec, cabinet: CabinetSpec, base_height: float) -
         else:
             name = f"{cabinet.name}.door_{doors}"
             doors += 1
-            # Hinge on the -y edge of the opening; axis -z so that positive angles swing the door outward.
-            hinge_y = -inner_w / 2
-            body = carcass.add_body(name=name, pos=[d / 2, hinge_y, z_mid])
+            # Hinged on the left (-y) or right (+y) edge of the opening, the axis pointing so that positive angles
+            # swing the door outward.
+            side = -1.0 if row.hinge == "left" else 1.0
+            body = carcass.add_body(name=name, pos=[d / 2, side * inner_w / 2, z_mid])
             body.add_joint(
                 name=f"{name}.joint",
                 type=mujoco.mjtJoint.mjJNT_HINGE,
-                axis=[0, 0, -1],
+                axis=[0, 0, side],
                 range=[0, math.radians(100)],
                 damping=2.0,
                 frictionloss=0.3,
@@ -229,10 +243,11 @@ def add_cabinet(spec: mujoco.MjSpec, cabinet: CabinetSpec, base_height: float) -
                 body,
                 f"{name}/panel",
                 (t / 2, door_w / 2, (row.height - 2 * gap) / 2),
-                (-t / 2, gap + door_w / 2, 0),
+                (-t / 2, -side * (gap + door_w / 2), 0),
                 FRONT_RGBA,
             )
-            _add_handle(body, f"{cabinet.name}.handle_{k}", np.array([0.0, door_w - 0.05, 0.0]), vertical=True)
+            handle_at = np.array([0.0, -side * (door_w - 0.05), 0.0])
+            _add_handle(body, f"{cabinet.name}.handle_{k}", handle_at, vertical=True)
             # A shelf inside the compartment so that things put behind the door rest on something.
             _add_box(
                 carcass,
@@ -269,3 +284,19 @@ def drawer_interior(model: mujoco.MjModel, drawer_body: str) -> tuple[np.ndarray
     z_lo = bottom.pos[2] + bottom.size[2]
     z_hi = side.pos[2] + side.size[2]
     return np.array([x_lo, -y_half, z_lo]), np.array([x_hi, y_half, z_hi])
+
+
+def compartment_interior(model: mujoco.MjModel, door_body: str) -> tuple[np.ndarray, np.ndarray]:
+    """The free inside of the compartment behind a door, as (lower, upper) in its cabinet's frame: from the shelf
+    it has for a floor to the panel above, between the cabinet's sides, and from its back to behind the door."""
+    door = model.body(door_body)
+    cabinet = door_body.split(".", 1)[0]
+    shelf = model.geom(f"{door_body}/shelf")
+    panel = model.geom(f"{door_body}/panel")
+    side = model.geom(f"{cabinet}/side_left")
+    back = model.geom(f"{cabinet}/back")
+    ceiling = door.pos[2] + panel.size[2] + 0.003  # the panel fills its opening but for a 3 mm gap
+    y_half = side.pos[1] - side.size[1]
+    x_lo = back.pos[0] + back.size[0]
+    x_hi = door.pos[0] - 2 * panel.size[0]
+    return np.array([x_lo, -y_half, shelf.pos[2] + shelf.size[2]]), np.array([x_hi, y_half, ceiling])

@@ -12,6 +12,7 @@ import mujoco
 import numpy as np
 
 from roboscript.geometry import Box3D, Transform
+from roboscript.sim.furniture import compartment_interior
 from roboscript.sim.world import Entity, SimWorld
 
 _CORNER_SIGNS = np.array([[sx, sy, sz] for sx in (-1, 1) for sy in (-1, 1) for sz in (-1, 1)], dtype=float)
@@ -189,6 +190,23 @@ class GroundTruth:
             lower=float(self.model.jnt_range[j][0]),
             upper=float(self.model.jnt_range[j][1]),
         )
+
+    def compartment(self, door: str) -> tuple[Transform, np.ndarray, np.ndarray]:
+        """The compartment behind ``door`` (``cabinet.door_0``): its cabinet's frame and its free inside,
+        ``(lower, upper)`` in that frame."""
+        body = self.entity(door).bodies[0]
+        carcass = int(self.model.body_parentid[body])
+        frame = Transform.from_mujoco(self.data.xpos[carcass], self.data.xquat[carcass])
+        lower, upper = compartment_interior(self.model, door)
+        return frame, lower, upper
+
+    def holding_box(self, name: str) -> Box3D:
+        """Where things put into ``name`` are: a door's compartment behind it, else ``name``'s own box."""
+        if self.entity(name).category != "door":
+            return self.box(name)
+        frame, lower, upper = self.compartment(name)
+        signs = np.array([[i, j, k] for i in (0, 1) for j in (0, 1) for k in (0, 1)], dtype=float)
+        return Box3D.from_points(frame.apply(lower + signs * (upper - lower)))
 
     def _articulated(self) -> list[str]:
         return [e.name for e in self.world.entities if e.joint >= 0]

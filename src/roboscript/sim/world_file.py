@@ -144,7 +144,7 @@ def _parse_rows(reader: Reader, rows: Any) -> tuple[CabinetRow, ...]:
     for i, row in enumerate(rows):
         if isinstance(row, str):
             row = {"kind": row}
-        r = _reader(reader.source, f"{reader.entry}.rows[{i}]", row, {"kind", "height", "open"})
+        r = _reader(reader.source, f"{reader.entry}.rows[{i}]", row, {"kind", "height", "open", "hinge"})
         kind = r.string("kind")
         if kind not in ("drawer", "door"):
             r.fail(f"row kind must be 'drawer' or 'door', got {kind!r}")
@@ -156,7 +156,13 @@ def _parse_rows(reader: Reader, rows: Any) -> tuple[CabinetRow, ...]:
         if not 0.0 <= opened <= most:
             unit = "m (a drawer's pull)" if kind == "drawer" else "degrees (a door's swing)"
             r.fail(f"row open must be between 0 and {most:g} {unit}, got {opened}")
-        out.append(CabinetRow(kind, height, opened if kind == "drawer" else math.radians(opened)))
+        hinge = r.string("hinge", "left")
+        if hinge not in ("left", "right") or (kind == "drawer" and "hinge" in r.data):
+            r.fail(
+                f"field 'hinge' is a door's: 'left' or 'right' as seen from in front of the cabinet (drawers have "
+                f"none), got {hinge!r} on a {kind}"
+            )
+        out.append(CabinetRow(kind, height, opened if kind == "drawer" else math.radians(opened), hinge))
     return tuple(out)
 
 

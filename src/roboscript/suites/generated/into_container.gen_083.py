@@ -1,0 +1,26 @@
+# Task: place the wooden block in the footed bowl
+# Plan:
+# 1. Pick up the wooden block and put it into the footed bowl.
+detect_objects()
+
+
+def pick(name):
+    """Grasps `name` from above where its shape allows, and lifts it clear of what is around it."""
+    open_gripper()
+    grasp_pose = parse_adaptive_shape_grasp_pose(object_name=name, preferred_approach_direction=[0, 0, -1])
+    grasp(grasp_pose)
+    close_gripper()
+    attach_object(name)
+    move_in_direction(direction=[0, 0, 1], distance=0.1)
+
+
+def put(name, place_pose):
+    """Carries the held `name` to `place_pose`, lets go of it and moves the hand up and away."""
+    move_to_pose(place_pose)
+    open_gripper()
+    detach_object(name)
+    move_in_direction(direction=[0, 0, 1], distance=0.1)
+
+
+pick('wooden_block')
+put('wooden_block', parse_place_pose(object_name='wooden_block', receptacle_name='footed_bowl'))
