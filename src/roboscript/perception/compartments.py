@@ -11,6 +11,7 @@ from __future__ import annotations
 
 import numpy as np
 
+from roboscript.errors import FailureError
 from roboscript.geometry import Transform
 from roboscript.perception.base import ArticulationJoint, Receptacle
 from roboscript.perception.furniture_parts import LEVEL, TOP_BAND
@@ -26,7 +27,7 @@ NEAR_HINGE = 0.05  # metres: a door's points this near its hinge turn too little
 EDGE_RANK = 5  # the top's edges: their points' 5th outermost (a camera sees a top thinly near its edges)
 
 
-class CompartmentUnseenError(ValueError):
+class CompartmentUnseenError(FailureError, ValueError):
     """Too little of the cabinet or its door was seen to tell where the compartment is."""
 
 
