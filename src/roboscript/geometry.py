@@ -69,6 +69,17 @@ def quat_from_axis_angle(axis: np.ndarray, angle: float) -> np.ndarray:
     return np.concatenate([axis * np.sin(angle / 2), [np.cos(angle / 2)]])
 
 
+def turns_about(axis: np.ndarray, pivot: np.ndarray, start: np.ndarray, ends: np.ndarray) -> np.ndarray:
+    """The signed angles (radians, right-handed about the unit ``axis``) by which each of ``ends`` ((3,) or (N, 3))
+    stands turned from ``start`` about the line through ``pivot`` along ``axis``, as seen looking down the axis."""
+    axis = np.asarray(axis, dtype=float)
+    then = np.asarray(start, dtype=float) - pivot
+    now = np.asarray(ends, dtype=float) - pivot
+    then = then - float(then @ axis) * axis
+    now = now - np.asarray(now @ axis)[..., None] * axis
+    return np.arctan2(np.cross(then, now) @ axis, now @ then)
+
+
 def rotation_angle_between(q1: np.ndarray, q2: np.ndarray) -> float:
     """Smallest angle in radians that rotates orientation ``q1`` into ``q2`` (both xyzw)."""
     dot = abs(float(np.dot(np.asarray(q1) / np.linalg.norm(q1), np.asarray(q2) / np.linalg.norm(q2))))

@@ -101,7 +101,7 @@ class PlaceRequest:
     spacing: float = REPEAT_SPACING
     budget: int = PLACE_IK_BUDGET  # IK screens for the search
     # Which way the hand backs out after letting go: up, or out of the front of a compartment behind a door.
-    retreat: np.ndarray = dataclasses.field(default_factory=lambda: np.array([0.0, 0.0, 1.0]))
+    retreat: np.ndarray = dataclasses.field(default_factory=lambda: UP.copy())
 
 
 class Placer:
@@ -154,17 +154,15 @@ class Placer:
         """Spots in the compartment behind a door, for the hand at ``tcp`` turned to point into it; the hand
         backs out of the front after letting go."""
         turn = compartments.hand_turn(tcp, receptacle, name)
-        inside = [self._footprint(o) for o in others if _within(self.perception.box(o), receptacle)]
-        height = self.perception.box(name).size[2]
+        inside = [o for o in others if _within(self.perception.box(o), receptacle)]
+        size = self.perception.box(name).size
         spots = compartments.compartment_spots(
-            receptacle, self._footprint(name), height, turn, inside, self.base_xy
+            receptacle, self._footprint(name), size[2], turn, [self._footprint(o) for o in inside], self.base_xy
         )
         if not spots:
-            size = self.perception.box(name).size
-            held = [o for o in others if _within(self.perception.box(o), receptacle)]
             raise ReceptacleFullError(
                 f"{receptacle.name!r} has no free spot for {name!r} ({size[0] * 100:.0f} x {size[1] * 100:.0f} x "
-                f"{size[2] * 100:.0f} cm); it holds {', '.join(held) or 'nothing'}"
+                f"{size[2] * 100:.0f} cm); it holds {', '.join(inside) or 'nothing'}"
             )
         return PlaceRequest(spots, f"in {receptacle.name!r}", retreat=compartments.open_side(receptacle))
 

@@ -15,6 +15,7 @@ from scipy.spatial import Delaunay, QhullError
 
 from roboscript.api.held import Held
 from roboscript.backends.base import Backend
+from roboscript.geometry import Box3D
 from roboscript.grasping.detection import GripperGeometry
 from roboscript.notices import notice
 from roboscript.perception.base import Perception
@@ -134,8 +135,7 @@ class Retreats:
         lower, upper = np.array(self.gripper.hand_lower), np.array(self.gripper.hand_upper)
         lower[2] -= WRIST_LENGTH
         upper[2] = self.gripper.tip_length
-        signs = np.array([[i, j, k] for i in (0, 1) for j in (0, 1) for k in (0, 1)], dtype=float)
-        hand = tcp.apply(lower + signs * (upper - lower))
+        hand = tcp.apply(Box3D(lower, upper).corners())
         points = self.perception.occupied(list(self.held.objects))
         above = points[(points[:, 2] > hand[:, 2].max() + 0.01) & (points[:, 2] < hand[:, 2].max() + 0.6)]
         if len(above) == 0:

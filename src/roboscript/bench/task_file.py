@@ -207,9 +207,8 @@ def _relation_check(entry: Reader, kind: str, world: WorldSpec, negate: bool) ->
     """``in: [object, container or drawer]``, ``on: [object, object or the table]`` or ``near: [object, object]``."""
     subject, target = _pair(entry, kind)
     _name_check(entry, subject, world.object_names(), "objects")
-    kinds = {"in": "containers, drawers and doors", "on": "objects and the table", "near": "objects and furniture"}
-    kinds = kinds[kind]
-    _name_check(entry, target, _receptacles(world, kind), kinds)
+    what = {"in": "containers, drawers and doors", "on": "objects and the table", "near": "objects and furniture"}
+    _name_check(entry, target, _receptacles(world, kind), what[kind])
     if subject == target:
         entry.fail(f"an object cannot be {kind} itself: {subject!r}")
     return CheckSpec(kind, subject, target, negate=negate)

@@ -12,7 +12,7 @@ from __future__ import annotations
 import numpy as np
 
 from roboscript.errors import FailureError
-from roboscript.geometry import Transform
+from roboscript.geometry import Transform, turns_about
 from roboscript.perception.base import ArticulationJoint, Receptacle
 from roboscript.perception.furniture_parts import LEVEL, TOP_BAND
 
@@ -37,14 +37,14 @@ def door_angle(joint: ArticulationJoint, shut_front: np.ndarray, front_now: np.n
     about the hinge (those within :data:`NEAR_HINGE` of it say little)."""
     axis = np.asarray(joint.axis, dtype=float)
     then = _about(np.asarray(shut_front, dtype=float) - joint.position, axis)
-    now = _about(np.atleast_2d(np.asarray(front_now, dtype=float)) - joint.position, axis)
+    points = np.atleast_2d(np.asarray(front_now, dtype=float))
+    now = _about(points - joint.position, axis)
     # What stands behind the front's plane is not the door: its boxes in the images take in the inside it opens on.
     not_behind = now @ closed_facing(joint, shut_front) > -BEHIND_FRONT
-    now = now[(np.linalg.norm(now, axis=1) > NEAR_HINGE) & not_behind]
-    if np.linalg.norm(then) < 1e-6 or len(now) == 0:
+    kept = (np.linalg.norm(now, axis=1) > NEAR_HINGE) & not_behind
+    if np.linalg.norm(then) < 1e-6 or not kept.any():
         return 0.0
-    turns = np.arctan2(np.cross(then, now) @ axis, now @ then)
-    return float(np.median(turns))
+    return float(np.median(turns_about(axis, joint.position, shut_front, points[kept])))
 
 
 def closed_facing(joint: ArticulationJoint, shut_front: np.ndarray) -> np.ndarray:

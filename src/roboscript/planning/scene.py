@@ -15,14 +15,13 @@ import contextlib
 import dataclasses
 import functools
 import itertools
-import math
 from collections.abc import Iterable, Iterator
 from dataclasses import dataclass
 
 import mujoco
 import numpy as np
 
-from roboscript.geometry import Transform
+from roboscript.geometry import Transform, turns_about
 from roboscript.phases import timed
 from roboscript.robots.description import RobotDescription
 from roboscript.robots.mujoco_model import RobotBinding, is_descendant
@@ -514,9 +513,7 @@ class PlanningScene:
         start, or its travel along a slide."""
         tcp = self.data.site_xpos[self.robot.tcp_site]
         if part.revolute:
-            then, now = part.tcp_start - part.anchor, tcp - part.anchor
-            then, now = then - (then @ part.axis) * part.axis, now - (now @ part.axis) * part.axis
-            moved = math.atan2(float(np.cross(then, now) @ part.axis), float(then @ now))
+            moved = float(turns_about(part.axis, part.anchor, part.tcp_start, tcp))
         else:
             moved = float((tcp - part.tcp_start) @ part.axis)
         self.data.qpos[part.address] = part.start + moved

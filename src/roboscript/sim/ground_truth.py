@@ -205,8 +205,7 @@ class GroundTruth:
         if self.entity(name).category != "door":
             return self.box(name)
         frame, lower, upper = self.compartment(name)
-        signs = np.array([[i, j, k] for i in (0, 1) for j in (0, 1) for k in (0, 1)], dtype=float)
-        return Box3D.from_points(frame.apply(lower + signs * (upper - lower)))
+        return Box3D.from_points(frame.apply(Box3D(lower, upper).corners()))
 
     def _articulated(self) -> list[str]:
         return [e.name for e in self.world.entities if e.joint >= 0]
