@@ -75,6 +75,10 @@ def table_surface(points: np.ndarray, normals: np.ndarray, support: float) -> tu
 FOOTPRINT_HEIGHT = 0.015  # metres above the support below which the fused surface blurs into it
 CLUSTER_GAP = 0.0125  # metres between points of one object (2.5 voxels of 5 mm)
 PIECE_SHARE = 0.2  # a furniture part keeps every piece at least this share of its largest
+SKIRT_BAND = 0.012  # metres above an object's lowest point within which a flat support beside it may show
+SKIRT_MARGIN = 0.005  # metres round the outline of an object's upper part within which its foot may reach
+PIXEL_BLUR = 0.004  # metres above the support within which depth pixels still show an object standing on it
+CLAIM_MARGIN = 0.005  # metres round a smaller instance's fused box within which a pixel's point is its own
 
 
 def fit_box(points: np.ndarray, trim: float = 1.0) -> Box3D:
@@ -95,12 +99,13 @@ def footprint_points(points: np.ndarray, support: float) -> np.ndarray:
     return upper if len(upper) >= 0.3 * len(points) and len(upper) >= 10 else points
 
 
-def object_box(points: np.ndarray, support: float) -> Box3D:
+def object_box(points: np.ndarray, support: float, blur: float = FOOTPRINT_HEIGHT) -> Box3D:
     """An object's box: its outline from :func:`footprint_points`, its height from all its points, down to the
-    table when it stands on it (the fused surface never shows the face it stands on)."""
+    table when its lowest point is within ``blur`` of it (the fused surface never shows the face an object
+    stands on, and blurs into the table that far; depth pixels hardly do)."""
     outline = fit_box(footprint_points(points, support), trim=0.5)
     heights = fit_box(points, trim=0.5)
-    bottom = support if heights.lower[2] - support < FOOTPRINT_HEIGHT else heights.lower[2]
+    bottom = support if heights.lower[2] - support < blur else heights.lower[2]
     return Box3D(
         np.array([outline.lower[0], outline.lower[1], bottom]),
         np.array([outline.upper[0], outline.upper[1], heights.upper[2]]),
@@ -198,9 +203,36 @@ def _box_overlap(a: Box3D, b: Box3D) -> float:
     return a.intersection(b).volume / smaller if smaller > 0 else 0.0
 
 
-def _mean_area(obj: MatchedObject, box_areas: Sequence[Sequence[float]]) -> float:
+def _mean_area(obj: MatchedObject | Instance3D, box_areas: Sequence[Sequence[float]]) -> float:
     areas = [box_areas[v][i] for v, i in enumerate(obj.boxes) if i != -1]
     return float(np.mean(areas)) if areas else float("inf")
+
+
+def refine_all(
+    instances: Sequence[Instance3D],
+    detections: Sequence[Sequence],
+    point_maps: Sequence[np.ndarray],
+    normal_maps: Sequence[np.ndarray],
+    support: float,
+    box_areas: Sequence[Sequence[float]],
+    pieces: Collection[str] = (),
+) -> list[Instance3D]:
+    """:func:`refine_with_depth` of each instance, smallest 2D boxes (``box_areas[v][i]``) first, each keeping the
+    pixels the smaller ones refined before it claim (a small thing's fused box may hold a strip of the plate it
+    stands on, its refined box does not); furniture parts (labelled one of ``pieces``) keep their pieces."""
+    sizes = [_mean_area(i, box_areas) for i in instances]
+    refined: dict[int, Instance3D] = {}
+    for k in sorted(range(len(instances)), key=lambda k: sizes[k]):
+        refined[k] = refine_with_depth(
+            instances[k],
+            detections,
+            point_maps,
+            normal_maps,
+            support,
+            smaller=[refined[j] for j in refined if sizes[j] < sizes[k]],
+            share=PIECE_SHARE if instances[k].label in pieces else 1.0,
+        )
+    return [refined[k] for k in range(len(instances))]
 
 
 def refine_with_depth(
@@ -209,6 +241,8 @@ def refine_with_depth(
     point_maps: Sequence[np.ndarray],
     normal_maps: Sequence[np.ndarray],
     support: float,
+    smaller: Sequence[Instance3D] = (),
+    share: float = 1.0,
     stride: int = 2,
     margin: float = 0.01,
     above: float = 0.002,
@@ -219,7 +253,13 @@ def refine_with_depth(
 
     The fused surface finds and separates objects; its points stand a few millimetres proud of flat sides seen
     at a slant (the signed-distance blur), which is the difference between a box that fits a gripper and one
-    that does not. The depth pixels have no such blur."""
+    that does not. The depth pixels have no such blur.
+
+    A point in the box of one of the ``smaller`` instances (already refined) is that instance's, as
+    :func:`build_instances` gives a point two objects claim to the smaller: a turned basket's upright box holds the cube
+    beside it and the mug inside it, and a plate's the box lying on it. What is left keeps its largest connected piece
+    (every piece of at least ``share`` of it, as in :func:`largest_cluster`): the edge of a neighbour inside the margin
+    falls away."""
     lower, upper = instance.box.lower - margin, instance.box.upper + margin
     lower = np.array([lower[0], lower[1], max(lower[2], support + above)])
     points, normals = [], []
@@ -230,15 +270,76 @@ def refine_with_depth(
         world = point_maps[view][y0:y1:stride, x0:x1:stride].reshape(-1, 3)
         normal = normal_maps[view][y0:y1:stride, x0:x1:stride].reshape(-1, 3)
         keep = np.all((world > lower) & (world < upper), axis=1) & np.isfinite(normal).all(axis=1)
+        keep &= ~_claimed_by(smaller, world)
         points.append(world[keep])
         normals.append(normal[keep])
     if not points or sum(len(p) for p in points) < 30:
         return instance
     points, normals = np.concatenate(points), np.concatenate(normals)
-    return Instance3D(instance.label, points, normals, object_box(points, support), instance.boxes)
+    piece = largest_cluster(points, share=share)
+    if len(piece) < 30:
+        return instance
+    points, normals = points[piece], normals[piece]
+    own = without_skirt(points)
+    points, normals = points[own], normals[own]
+    return Instance3D(instance.label, points, normals, object_box(points, support, PIXEL_BLUR), instance.boxes)
 
 
+def without_skirt(points: np.ndarray, band: float = SKIRT_BAND, margin: float = SKIRT_MARGIN) -> np.ndarray:
+    """Indices of ``points`` less the skirt: points within ``band`` of the lowest that stand out of the outline
+    (from above, ``margin`` larger) of the points over that band. A box lying on a plate's rim takes in, from
+    every view, the plate beside it; the plate is flat and low, the box stands above its own foot. A thing whose
+    points all lie in the band (a plate), or whose upper part outlines its foot (a bowl's rim), loses nothing."""
+    from scipy.spatial import Delaunay, QhullError
+
+    low = points[:, 2] < points[:, 2].min() + band
+    upper = points[~low, :2]
+    if len(upper) < 30 or not low.any():
+        return np.arange(len(points))
+    try:
+        outline = Delaunay(_grown_outline(upper, margin))
+    except QhullError:  # the upper points stand in a line from above: no outline to speak of
+        return np.arange(len(points))
+    inside = outline.find_simplex(points[:, :2]) >= 0
+    return np.flatnonzero(~low | inside)
+
+
+def _grown_outline(xy: np.ndarray, margin: float) -> np.ndarray:
+    """The corners of ``xy``'s convex outline, each moved ``margin`` out from its centre."""
+    from scipy.spatial import ConvexHull
+
+    corners = xy[ConvexHull(xy).vertices]
+    centre = corners.mean(axis=0)
+    away = corners - centre
+    return corners + margin * away / np.maximum(np.linalg.norm(away, axis=1, keepdims=True), 1e-9)
+
+
+def _claimed_by(others: Sequence[Instance3D], points: np.ndarray) -> np.ndarray:
+    """Which of ``points`` lie in the box of one of ``others`` (:data:`CLAIM_MARGIN` larger)."""
+    claimed = np.zeros(len(points), dtype=bool)
+    with np.errstate(invalid="ignore"):  # pixels with no depth have no point
+        for other in others:
+            claimed |= np.all(
+                (points > other.box.lower - CLAIM_MARGIN) & (points < other.box.upper + CLAIM_MARGIN), axis=1
+            )
+    return claimed
+
+
+RESTING_GAP = 0.03  # metres over another's seen top within which an object's lowest seen point may rest on it
 HIDDEN_FOOT = 0.06  # metres of an object's underside the cameras may not see (a ball's lower half, a bowl's stem)
+
+
+def _rests_on(instance: Instance3D, other: Instance3D) -> bool:
+    """Whether ``instance`` may stand on ``other``: the middle of its footprint over ``other``'s, its lowest point
+    above ``other``'s bottom and at most :data:`RESTING_GAP` over its top (a box on a plate's floor stands below
+    the plate's rim; a block on a box a little over the box's seen top)."""
+    box, below = instance.box, other.box
+    middle = box.center[:2]
+    return bool(
+        np.all(below.lower[:2] < middle)
+        and np.all(middle < below.upper[:2])
+        and below.lower[2] < box.lower[2] < below.upper[2] + RESTING_GAP
+    )
 
 
 def ground(instances: Sequence[Instance3D], support: float) -> list[Instance3D]:
@@ -248,14 +349,9 @@ def ground(instances: Sequence[Instance3D], support: float) -> list[Instance3D]:
     for instance in instances:
         box = instance.box
         gap = box.lower[2] - support
-        resting_on_other = any(
-            other is not instance
-            and np.all(other.box.lower[:2] < box.upper[:2])
-            and np.all(box.lower[:2] < other.box.upper[:2])
-            and -0.01 < box.lower[2] - other.box.upper[2] < 0.03
-            for other in instances
-        )
-        if 0 < gap < HIDDEN_FOOT and not resting_on_other:
+        if 0 < gap < HIDDEN_FOOT and not any(
+            _rests_on(instance, other) for other in instances if other is not instance
+        ):
             grounded = Box3D(np.array([*box.lower[:2], support]), box.upper.copy())
             instance = Instance3D(instance.label, instance.points, instance.normals, grounded, instance.boxes)
         out.append(instance)

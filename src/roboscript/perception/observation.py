@@ -14,7 +14,7 @@ from roboscript.perception.instances import (
     Instance3D,
     build_instances,
     ground,
-    refine_with_depth,
+    refine_all,
     support_height,
 )
 from roboscript.perception.matching import MatchedObject, Projection, match_views, membership, project
@@ -72,6 +72,6 @@ def observe(
     )
     maps = [point_map(f, hidden[f.name]) for f in usable]
     normals = [normal_map(m, f.extrinsics.position) for m, f in zip(maps, usable, strict=True)]
-    instances = [refine_with_depth(i, detections, maps, normals, support) for i in instances]
+    instances = refine_all(instances, detections, maps, normals, support, areas, pieces)
     instances = ground(instances, support)
     return Observation(usable, scene, detections, projections, memberships, matched, instances, support)

@@ -42,6 +42,7 @@ from roboscript.perception.base import (
     Receptacle,
     UnknownObjectError,
     outside,
+    within,
 )
 from roboscript.perception.compartments import CompartmentUnseenError, compartment_inside, door_angle
 from roboscript.perception.drawers import (
@@ -57,13 +58,22 @@ from roboscript.perception.furniture_parts import row_bands
 from roboscript.perception.fusion import FusionSettings
 from roboscript.perception.grounding import Grounder, normalize_phrase
 from roboscript.perception.in_hand import register
-from roboscript.perception.instances import Instance3D, fit_box, footprint_points, object_box, table_surface
+from roboscript.perception.instances import (
+    PIXEL_BLUR,
+    Instance3D,
+    fit_box,
+    footprint_points,
+    object_box,
+    table_surface,
+)
 from roboscript.perception.labels import PartLabels
 from roboscript.perception.observation import Observation, observe
 from roboscript.perception.points import robot_masks, surface_points
 from roboscript.perception.self_filter import SelfFilter
 from roboscript.phases import timed
 
+STILL = 0.01  # metres round an object's earlier box within which what a later look saw of it shows it unmoved
+STILL_SHARE = 0.97  # the share of a later look's points that must lie there
 SETTLE_TIME = 0.5  # seconds given to what was let go to come to rest before looking again
 HANG_TIME = 0.3  # seconds given to what was just lifted to stop swinging in the hand before looking at it
 SHALLOW = 0.035  # metres: containers lower than this (plates, saucers) hold things on top, not inside
@@ -99,7 +109,8 @@ class SeenObject:
     box: Box3D = field(init=False)
 
     def __post_init__(self) -> None:
-        box = object_box(self.points, self.support)
+        # Its points are depth pixels (observation's refinement), sharp down to the table.
+        box = object_box(self.points, self.support, PIXEL_BLUR)
         self.box = Box3D(np.array([*box.lower[:2], min(box.lower[2], self.floor)]), box.upper)
 
     @property
@@ -257,7 +268,12 @@ class PipelinePerception(Perception):
                 self.scene = outside(self.scene, instance.box, OCCUPANCY_MARGIN)
                 self.store[names[k]] = self._in_hand(old[names[k]], instance)
             else:
-                self.store[names[k]] = self._seen(names[k], phrase, instance, seen)
+                fresh = self._seen(names[k], phrase, instance, seen)
+                before = self.store.get(names[k])
+                # Seen by fewer cameras than before (the arm in the way, a detector's miss) where it stood still:
+                # the earlier look saw more of it (a mug's rim from one side only has no grasp pairs).
+                still = before is not None and names[k] not in self._let_go and _part_of(fresh, before)
+                self.store[names[k]] = before if still and fresh.views < before.views else fresh
         return set(names.values())
 
     def _in_hand(self, expected: SeenObject, instance: Instance3D) -> SeenObject:
@@ -663,6 +679,11 @@ def _labelled_part(parts: PartLabels, handle: str) -> str | None:
     """The part a handle moves, as the labels say (which handle is on which drawer)."""
     joints = parts.joints(handle)
     return joints[0].part if joints else None
+
+
+def _part_of(fresh: SeenObject, before: SeenObject) -> bool:
+    """Whether what ``fresh`` saw lies where ``before`` was seen (within :data:`STILL`): it has not moved since."""
+    return len(fresh.points) > 0 and float(np.mean(within(fresh.points, before.box, STILL))) >= STILL_SHARE
 
 
 def _moved(obj: SeenObject, motion: Transform) -> SeenObject:
