@@ -428,11 +428,14 @@ def test_a_transfer_lifts_the_held_object_clear_and_carries_it_clear():
     motion.planner.validate(path.waypoints)  # and the whole of it is free with the ordinary padding
 
 
-def test_a_planner_that_runs_out_of_time_retries_with_twice_the_time_and_the_next_goal():
-    """MotionPlanner.plan's retry schedule, with a test double for the OMPL planner that times out twice."""
+def test_a_planner_that_runs_out_of_time_retries_with_twice_the_time_and_the_next_goal(monkeypatch):
+    """MotionPlanner.plan's retry schedule, with a test double for the OMPL planner that times out twice (the
+    machine's load taken as none, then as twice the CPUs)."""
+    from roboscript.planning import motion as motion_module
     from roboscript.planning.motion import PLANNING_ATTEMPTS
     from roboscript.planning.planner import JointPath
 
+    monkeypatch.setattr(motion_module, "load_factor", lambda: 1.0)
     backend, motion = planner_for(objects_world(), "panda")
     start = backend.joint_positions()
     goals = [start + 0.1, start + 0.2]
@@ -460,6 +463,13 @@ def test_a_planner_that_runs_out_of_time_retries_with_twice_the_time_and_the_nex
     with pytest.raises(PlannerTimeoutError, match=r"within 2\.00 s"):
         motion.plan(start, goals, timeout=0.5)
     assert [limit for _, limit in calls] == [0.5, 1.0, 2.0]
+
+    calls.clear()
+    monkeypatch.setattr(motion_module, "load_factor", lambda: 2.0)  # a busy machine: every run twice as long
+    with pytest.raises(PlannerTimeoutError):
+        motion.plan(start, goals, timeout=0.5)
+    assert [limit for _, limit in calls] == [1.0, 2.0, 4.0]
+    assert not motion.connects(start, goals[0], timeout=0.5) and calls[-1][1] == 1.0
     backend.close()
 
 

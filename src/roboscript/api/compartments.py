@@ -41,7 +41,9 @@ def hand_turn(tcp: Transform, receptacle: Receptacle, held: str) -> float:
     if float(approach[2]) < -LEVEL_ENOUGH or float(np.linalg.norm(approach[:2])) < 1e-3:
         raise CompartmentError(
             f"{held!r} is held from above, and things go into {receptacle.name!r} from its front, under the panel "
-            f"above it: pick {held!r} with parse_horizontal_grasp_pose, then place it"
+            f"above it: it must be held level, taken with parse_horizontal_grasp_pose (where no level grasp reaches "
+            f"it among its neighbours, that tool says so in a notice and grasps it from above: set it down in the "
+            f"open first, then take it level)"
         )
     inward = -open_side(receptacle)
     return math.remainder(math.atan2(inward[1], inward[0]) - math.atan2(approach[1], approach[0]), 2 * math.pi)

@@ -216,21 +216,28 @@ def refine_all(
     support: float,
     box_areas: Sequence[Sequence[float]],
     pieces: Collection[str] = (),
+    furniture: Collection[str] = (),
 ) -> list[Instance3D]:
-    """:func:`refine_with_depth` of each instance, smallest 2D boxes (``box_areas[v][i]``) first, each keeping the
-    pixels the smaller ones refined before it claim (a small thing's fused box may hold a strip of the plate it
-    stands on, its refined box does not); furniture parts (labelled one of ``pieces``) keep their pieces."""
+    """:func:`refine_with_depth` of each instance, smallest 2D boxes (``box_areas[v][i]``) first. An object keeps
+    the pixels the smaller objects refined before it claim (a small thing's fused box may hold a strip of the plate
+    it stands on, its refined box does not); furniture and its parts (labelled one of ``furniture``) neither claim
+    nor give up points: a drawer's front stands in its carcass's box, a handle on a drawer's front, and how far a
+    drawer stands out is measured from both. Parts that show in pieces (labelled one of ``pieces``) keep them."""
     sizes = [_mean_area(i, box_areas) for i in instances]
     refined: dict[int, Instance3D] = {}
     for k in sorted(range(len(instances)), key=lambda k: sizes[k]):
+        part = instances[k].label in furniture
         refined[k] = refine_with_depth(
             instances[k],
             detections,
             point_maps,
             normal_maps,
             support,
-            smaller=[refined[j] for j in refined if sizes[j] < sizes[k]],
+            smaller=[]
+            if part
+            else [refined[j] for j in refined if sizes[j] < sizes[k] and refined[j].label not in furniture],
             share=PIECE_SHARE if instances[k].label in pieces else 1.0,
+            skirt=not part,
         )
     return [refined[k] for k in range(len(instances))]
 
@@ -243,6 +250,7 @@ def refine_with_depth(
     support: float,
     smaller: Sequence[Instance3D] = (),
     share: float = 1.0,
+    skirt: bool = True,
     stride: int = 2,
     margin: float = 0.01,
     above: float = 0.002,
@@ -259,7 +267,7 @@ def refine_with_depth(
     :func:`build_instances` gives a point two objects claim to the smaller: a turned basket's upright box holds the cube
     beside it and the mug inside it, and a plate's the box lying on it. What is left keeps its largest connected piece
     (every piece of at least ``share`` of it, as in :func:`largest_cluster`): the edge of a neighbour inside the margin
-    falls away."""
+    falls away. With ``skirt``, it also loses its skirt (:func:`without_skirt`)."""
     lower, upper = instance.box.lower - margin, instance.box.upper + margin
     lower = np.array([lower[0], lower[1], max(lower[2], support + above)])
     points, normals = [], []
@@ -280,8 +288,9 @@ def refine_with_depth(
     if len(piece) < 30:
         return instance
     points, normals = points[piece], normals[piece]
-    own = without_skirt(points)
-    points, normals = points[own], normals[own]
+    if skirt:
+        own = without_skirt(points)
+        points, normals = points[own], normals[own]
     return Instance3D(instance.label, points, normals, object_box(points, support, PIXEL_BLUR), instance.boxes)
 
 

@@ -48,10 +48,12 @@ def observe(
     settings: FusionSettings | None = None,
     robot_masks: Sequence[np.ndarray] | None = None,
     pieces: Collection[str] = (),
+    furniture: Collection[str] = (),
 ) -> Observation:
     """Runs the chain on ``frames`` for the things ``phrases`` name. ``robot_masks``: per frame, the pixels of the
     robot itself (from its model), left out of the fused surface; ``pieces``: the phrases of furniture parts,
-    which may be seen in several pieces (an open drawer's front and its inside)."""
+    which may be seen in several pieces (an open drawer's front and its inside); ``furniture``: the phrases of
+    furniture and all its parts (see :func:`~roboscript.perception.instances.refine_all`)."""
     if not frames:
         raise ValueError("observe needs at least one camera frame")
     scene = fuse(frames, settings, robot_masks)
@@ -72,6 +74,6 @@ def observe(
     )
     maps = [point_map(f, hidden[f.name]) for f in usable]
     normals = [normal_map(m, f.extrinsics.position) for m, f in zip(maps, usable, strict=True)]
-    instances = refine_all(instances, detections, maps, normals, support, areas, pieces)
+    instances = refine_all(instances, detections, maps, normals, support, areas, pieces, furniture)
     instances = ground(instances, support)
     return Observation(usable, scene, detections, projections, memberships, matched, instances, support)

@@ -187,7 +187,7 @@ class PipelinePerception(Perception):
         phrases = [p for p in asked if p not in self.furniture_phrases and p != TABLE]
         furniture = list(self.furniture_phrases)
         pieces = {p for p, n in self.furniture_phrases.items() if shows_in_pieces(n)}
-        seen = observe(frames, self.grounder, phrases + furniture, self.settings, masks, pieces=pieces)
+        seen = observe(frames, self.grounder, phrases + furniture, self.settings, masks, pieces, furniture)
         self.last, self._looked, self._stale = seen, True, False
         self.masks = [masks[k] for k, f in enumerate(frames) if f.name in seen.scene.used]
         self._look_tcp = self.backend.tcp_pose().position.copy()

@@ -13,6 +13,7 @@ import numpy as np
 
 from roboscript.backends.base import Backend
 from roboscript.geometry import Transform
+from roboscript.load import load_factor
 from roboscript.planning.cartesian import CartesianResult, arc_poses, cartesian_path
 from roboscript.planning.errors import (
     CartesianPathIncompleteError,
@@ -167,8 +168,9 @@ class MotionPlanner:
         machine too (``JointPath.attempts`` says how many runs it took). A run whose every path failed the dense
         validation (a narrow passage the planner's coarser checks slipped through) is retried the same way. While
         the gripper holds something, the path is a transfer (:mod:`roboscript.planning.transfer`) where one can be
-        found."""
-        name, budget = planner or self.default_planner, timeout or self.planning_timeout
+        found. Each run's time is scaled by the machine's load (:func:`~roboscript.load.load_factor`), as every
+        wall-clock budget here is."""
+        name, budget = planner or self.default_planner, self._budget(timeout)
         transfer = bool(self.scene.attached)  # carried clear of everything where that can be done
         for attempt in range(PLANNING_ATTEMPTS):
             goal, limit = goals[attempt % len(goals)], budget * 2**attempt
@@ -192,10 +194,15 @@ class MotionPlanner:
         walled in by the table, or reached only through a passage too narrow for the dense validation), not a
         verdict, since a busy machine may need the retries of :meth:`plan`."""
         try:
-            self.planner.plan(start, goal, self.default_planner, timeout or self.planning_timeout)
+            self.planner.plan(start, goal, self.default_planner, self._budget(timeout))
         except (PlannerTimeoutError, PathInCollisionError):
             return False
         return True
+
+    def _budget(self, timeout: float | None) -> float:
+        """A planner run's seconds: ``timeout`` (default: the planning timeout) as long as it takes on a busy
+        machine."""
+        return (timeout or self.planning_timeout) * load_factor()
 
     def ik(
         self, pose: Transform, reference: np.ndarray | None = None, attempts: int = 16, max_attempts: int = 150
