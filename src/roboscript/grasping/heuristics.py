@@ -63,8 +63,10 @@ def central_lift_grasps(
     outward = outward / (np.linalg.norm(outward) + 1e-9)
     candidates = []
     # Shallower grasps follow the one asked for: where the hand would meet what stands round the object at that
-    # depth (a block in a bowl, the hand on its rim), a grasp nearer the top still holds it.
-    depths = [z] + [d for d in (box.upper[2] - 0.03, box.upper[2] - SHALLOWEST) if d > z + 0.005]
+    # depth (a block in a bowl, the hand on its rim), a grasp nearer the top still holds it; where the fingertips
+    # would meet what a low object lies on (a gelatin box on a plate's floor), one with the pads' top at its top.
+    shallower = (box.upper[2] - 0.03, box.upper[2] - SHALLOWEST, box.upper[2] - FINGER_PAD)
+    depths = [z] + [d for d in sorted(shallower) if d > z + 0.003]
     for depth in depths:
         for k in order:
             if 2 * half[k] > max_width - 0.003:

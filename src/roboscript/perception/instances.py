@@ -76,9 +76,10 @@ FOOTPRINT_HEIGHT = 0.015  # metres above the support below which the fused surfa
 CLUSTER_GAP = 0.0125  # metres between points of one object (2.5 voxels of 5 mm)
 PIECE_SHARE = 0.2  # a furniture part keeps every piece at least this share of its largest
 SKIRT_BAND = 0.012  # metres above an object's lowest point within which a flat support beside it may show
+SKIRT_BULK = 0.4  # the least share of an object's points over the band for them to outline it (not a knife's edge)
 SKIRT_MARGIN = 0.005  # metres round the outline of an object's upper part within which its foot may reach
 PIXEL_BLUR = 0.004  # metres above the support within which depth pixels still show an object standing on it
-CLAIM_MARGIN = 0.005  # metres round a smaller instance's fused box within which a pixel's point is its own
+CLAIM_MARGIN = 0.005  # metres round a smaller instance's refined box within which a pixel's point is its own
 
 
 def fit_box(points: np.ndarray, trim: float = 1.0) -> Box3D:
@@ -215,30 +216,23 @@ def refine_all(
     normal_maps: Sequence[np.ndarray],
     support: float,
     box_areas: Sequence[Sequence[float]],
-    pieces: Collection[str] = (),
     furniture: Collection[str] = (),
 ) -> list[Instance3D]:
-    """:func:`refine_with_depth` of each instance, smallest 2D boxes (``box_areas[v][i]``) first. An object keeps
-    the pixels the smaller objects refined before it claim (a small thing's fused box may hold a strip of the plate
-    it stands on, its refined box does not); furniture and its parts (labelled one of ``furniture``) neither claim
-    nor give up points: a drawer's front stands in its carcass's box, a handle on a drawer's front, and how far a
-    drawer stands out is measured from both. Parts that show in pieces (labelled one of ``pieces``) keep them."""
+    """:func:`refine_with_depth` of each instance, smallest 2D boxes (``box_areas[v][i]``) first. An object gives
+    up to the smaller objects refined before it the points in their boxes (a basket's upright box holds the cube
+    beside it; a plate's, the box lying on it), and keeps its largest piece less its skirt. Furniture and its parts
+    (labelled one of ``furniture``) are refined as they are seen: a drawer's front stands in its carcass's box, a
+    handle on a drawer's front, an open door shows in pieces round the arm, and how far a drawer or door stands out
+    is measured from all of it."""
     sizes = [_mean_area(i, box_areas) for i in instances]
     refined: dict[int, Instance3D] = {}
     for k in sorted(range(len(instances)), key=lambda k: sizes[k]):
-        part = instances[k].label in furniture
-        refined[k] = refine_with_depth(
-            instances[k],
-            detections,
-            point_maps,
-            normal_maps,
-            support,
-            smaller=[]
-            if part
-            else [refined[j] for j in refined if sizes[j] < sizes[k] and refined[j].label not in furniture],
-            share=PIECE_SHARE if instances[k].label in pieces else 1.0,
-            skirt=not part,
-        )
+        maps = (instances[k], detections, point_maps, normal_maps, support)
+        if instances[k].label in furniture:
+            refined[k] = refine_with_depth(*maps)
+            continue
+        smaller = [refined[j] for j in refined if sizes[j] < sizes[k] and refined[j].label not in furniture]
+        refined[k] = refine_with_depth(*maps, smaller=smaller, own=True)
     return [refined[k] for k in range(len(instances))]
 
 
@@ -249,8 +243,7 @@ def refine_with_depth(
     normal_maps: Sequence[np.ndarray],
     support: float,
     smaller: Sequence[Instance3D] = (),
-    share: float = 1.0,
-    skirt: bool = True,
+    own: bool = False,
     stride: int = 2,
     margin: float = 0.01,
     above: float = 0.002,
@@ -264,10 +257,9 @@ def refine_with_depth(
     that does not. The depth pixels have no such blur.
 
     A point in the box of one of the ``smaller`` instances (already refined) is that instance's, as
-    :func:`build_instances` gives a point two objects claim to the smaller: a turned basket's upright box holds the cube
-    beside it and the mug inside it, and a plate's the box lying on it. What is left keeps its largest connected piece
-    (every piece of at least ``share`` of it, as in :func:`largest_cluster`): the edge of a neighbour inside the margin
-    falls away. With ``skirt``, it also loses its skirt (:func:`without_skirt`)."""
+    :func:`build_instances` gives a point two objects claim to the smaller. With ``own`` (an object, not a piece of
+    furniture), what is left keeps its largest connected piece (:func:`largest_cluster`: the edge of a neighbour
+    inside the margin falls away) less its skirt (:func:`without_skirt`)."""
     lower, upper = instance.box.lower - margin, instance.box.upper + margin
     lower = np.array([lower[0], lower[1], max(lower[2], support + above)])
     points, normals = [], []
@@ -284,26 +276,29 @@ def refine_with_depth(
     if not points or sum(len(p) for p in points) < 30:
         return instance
     points, normals = np.concatenate(points), np.concatenate(normals)
-    piece = largest_cluster(points, share=share)
-    if len(piece) < 30:
-        return instance
-    points, normals = points[piece], normals[piece]
-    if skirt:
-        own = without_skirt(points)
-        points, normals = points[own], normals[own]
-    return Instance3D(instance.label, points, normals, object_box(points, support, PIXEL_BLUR), instance.boxes)
+    if own:
+        piece = largest_cluster(points)
+        if len(piece) < 30:
+            return instance
+        points, normals = points[piece], normals[piece]
+        kept = without_skirt(points)
+        points, normals = points[kept], normals[kept]
+    box = object_box(points, support, PIXEL_BLUR if own else FOOTPRINT_HEIGHT)
+    return Instance3D(instance.label, points, normals, box, instance.boxes)
 
 
 def without_skirt(points: np.ndarray, band: float = SKIRT_BAND, margin: float = SKIRT_MARGIN) -> np.ndarray:
-    """Indices of ``points`` less the skirt: points within ``band`` of the lowest that stand out of the outline
-    (from above, ``margin`` larger) of the points over that band. A box lying on a plate's rim takes in, from
-    every view, the plate beside it; the plate is flat and low, the box stands above its own foot. A thing whose
-    points all lie in the band (a plate), or whose upper part outlines its foot (a bowl's rim), loses nothing."""
+    """Indices of ``points`` less the skirt: points within ``band`` of the lowest (its first percentile) that stand
+    more than ``margin`` out of the outline from above of the points over that band. A box lying on a plate takes in,
+    from every view, the plate beside it; the plate is flat and low, the box stands above its own foot. A thing whose
+    points all lie in the band (a plate), whose upper part outlines its foot (a bowl's rim), or whose points over the
+    band are fewer than :data:`SKIRT_BULK` of them (a knife beside a box, the box's side in its margin) loses
+    nothing."""
     from scipy.spatial import Delaunay, QhullError
 
-    low = points[:, 2] < points[:, 2].min() + band
+    low = points[:, 2] < np.percentile(points[:, 2], 1) + band
     upper = points[~low, :2]
-    if len(upper) < 30 or not low.any():
+    if len(upper) < max(30, SKIRT_BULK * len(points)) or not low.any():
         return np.arange(len(points))
     try:
         outline = Delaunay(_grown_outline(upper, margin))
@@ -314,54 +309,92 @@ def without_skirt(points: np.ndarray, band: float = SKIRT_BAND, margin: float = 
 
 
 def _grown_outline(xy: np.ndarray, margin: float) -> np.ndarray:
-    """The corners of ``xy``'s convex outline, each moved ``margin`` out from its centre."""
+    """The corners of ``xy``'s convex outline grown by ``margin`` every way (each corner moved out eight ways)."""
     from scipy.spatial import ConvexHull
 
     corners = xy[ConvexHull(xy).vertices]
-    centre = corners.mean(axis=0)
-    away = corners - centre
-    return corners + margin * away / np.maximum(np.linalg.norm(away, axis=1, keepdims=True), 1e-9)
+    turns = np.linspace(0.0, 2 * np.pi, 8, endpoint=False)
+    ways = margin * np.column_stack([np.cos(turns), np.sin(turns)])
+    return (corners[:, None, :] + ways[None, :, :]).reshape(-1, 2)
 
 
 def _claimed_by(others: Sequence[Instance3D], points: np.ndarray) -> np.ndarray:
-    """Which of ``points`` lie in the box of one of ``others`` (:data:`CLAIM_MARGIN` larger)."""
+    """Which of ``points`` lie in the box of one of ``others``, grown by :data:`CLAIM_MARGIN` sideways and up but
+    not below its bottom (what it stands on keeps its floor round it: a plate's, round the box lying on it). A
+    point with no depth (NaN) is nobody's. Boxes, not the others' points: an object's refined points miss
+    the sides its cameras did not see, which a larger neighbour's cameras did (a plate kept a box's side as its
+    own, and the fingers met it there)."""
     claimed = np.zeros(len(points), dtype=bool)
-    with np.errstate(invalid="ignore"):  # pixels with no depth have no point
+    with np.errstate(invalid="ignore"):
         for other in others:
-            claimed |= np.all(
-                (points > other.box.lower - CLAIM_MARGIN) & (points < other.box.upper + CLAIM_MARGIN), axis=1
-            )
+            lower = np.array([*(other.box.lower[:2] - CLAIM_MARGIN), other.box.lower[2]])
+            claimed |= np.all((points > lower) & (points < other.box.upper + CLAIM_MARGIN), axis=1)
     return claimed
 
 
+FLOOR_REACH = 0.02  # metres round an object's footprint within which what it stands on shows beside it
+FLOOR_UPWARD = 0.8  # normal's z above which a point of what it stands on faces up
+FLOOR_TOLERANCE = 0.002  # metres over an object's lowest seen point that a floor beside it may stand
+FLOOR_POINTS = 10  # fewer such points than this: no floor is seen
+ON_TOP = 0.01  # metres below another's seen top within which an object's lowest seen point stands on that top
 RESTING_GAP = 0.03  # metres over another's seen top within which an object's lowest seen point may rest on it
 HIDDEN_FOOT = 0.06  # metres of an object's underside the cameras may not see (a ball's lower half, a bowl's stem)
 
 
-def _rests_on(instance: Instance3D, other: Instance3D) -> bool:
-    """Whether ``instance`` may stand on ``other``: the middle of its footprint over ``other``'s, its lowest point
-    above ``other``'s bottom and at most :data:`RESTING_GAP` over its top (a box on a plate's floor stands below
-    the plate's rim; a block on a box a little over the box's seen top)."""
+def _may_rest_on(instance: Instance3D, other: Instance3D) -> bool:
+    """Whether ``instance`` may stand on ``other``: their footprints overlap, and its lowest seen point is above
+    ``other``'s bottom and at most :data:`RESTING_GAP` over its top (a box on a plate's floor stands below the
+    plate's rim; a block on a box a little over the box's seen top)."""
     box, below = instance.box, other.box
-    middle = box.center[:2]
     return bool(
-        np.all(below.lower[:2] < middle)
-        and np.all(middle < below.upper[:2])
+        np.all(below.lower[:2] < box.upper[:2])
+        and np.all(box.lower[:2] < below.upper[:2])
         and below.lower[2] < box.lower[2] < below.upper[2] + RESTING_GAP
     )
 
 
+def _on_top_of(instance: Instance3D, other: Instance3D) -> bool:
+    """Whether ``instance``'s lowest seen point is near ``other``'s seen top (a block on a box whose top it hides:
+    no floor shows beside it)."""
+    return bool(-ON_TOP < instance.box.lower[2] - other.box.upper[2] < RESTING_GAP)
+
+
+def floor_under(instance: Instance3D, supports: Sequence[Instance3D]) -> float | None:
+    """The height of what ``instance`` stands on, as seen beside it: the upward-facing points of ``supports`` within
+    :data:`FLOOR_REACH` of its footprint and below its lowest seen point (a plate's floor round a box lying on it, a
+    bowl's bottom round the apple in it, a box's top round the block on it); None where too few show."""
+    box = instance.box
+    near = [
+        s.points[
+            (s.normals[:, 2] > FLOOR_UPWARD)
+            & np.all(s.points[:, :2] > box.lower[:2] - FLOOR_REACH, axis=1)
+            & np.all(s.points[:, :2] < box.upper[:2] + FLOOR_REACH, axis=1)
+            & (s.points[:, 2] < box.lower[2] + FLOOR_TOLERANCE)
+        ]
+        for s in supports
+        if len(s.points) == len(s.normals)
+    ]
+    heights = np.concatenate([p[:, 2] for p in near]) if near else np.zeros(0)
+    return float(np.percentile(heights, 10)) if len(heights) >= FLOOR_POINTS else None
+
+
 def ground(instances: Sequence[Instance3D], support: float) -> list[Instance3D]:
-    """Instances whose lowest seen point floats a little above the table, with nothing under them, reach down to
-    the table: what the cameras do not see of a ball's underside or a footed bowl's stem is still there."""
+    """Each instance's box reaches down to what it stands on: the floor seen beside it of the things it may rest
+    on (:func:`floor_under`); else, unless it stands on another's top that it hides, where its lowest seen point
+    floats a little above the table, the table: what the cameras do not see of a ball's underside or a footed
+    bowl's stem is still there, and what they do not see of an apple in a bowl reaches down to the bowl's bottom."""
     out = []
     for instance in instances:
         box = instance.box
-        gap = box.lower[2] - support
-        if 0 < gap < HIDDEN_FOOT and not any(
-            _rests_on(instance, other) for other in instances if other is not instance
-        ):
-            grounded = Box3D(np.array([*box.lower[:2], support]), box.upper.copy())
+        supports = [o for o in instances if o is not instance and _may_rest_on(instance, o)]
+        floor = floor_under(instance, supports)
+        bottom = float(box.lower[2])
+        if floor is not None:
+            bottom = min(bottom, floor)
+        elif 0 < bottom - support < HIDDEN_FOOT and not any(_on_top_of(instance, s) for s in supports):
+            bottom = support
+        if bottom < box.lower[2]:
+            grounded = Box3D(np.array([*box.lower[:2], bottom]), box.upper.copy())
             instance = Instance3D(instance.label, instance.points, instance.normals, grounded, instance.boxes)
         out.append(instance)
     return out

@@ -42,7 +42,6 @@ from roboscript.perception.base import (
     Receptacle,
     UnknownObjectError,
     outside,
-    within,
 )
 from roboscript.perception.compartments import CompartmentUnseenError, compartment_inside, door_angle
 from roboscript.perception.drawers import (
@@ -72,7 +71,7 @@ from roboscript.perception.points import robot_masks, surface_points
 from roboscript.perception.self_filter import SelfFilter
 from roboscript.phases import timed
 
-STILL = 0.01  # metres round an object's earlier box within which what a later look saw of it shows it unmoved
+STILL = 0.006  # metres from what an earlier look saw of an object within which a later look's points show it unmoved
 STILL_SHARE = 0.97  # the share of a later look's points that must lie there
 SETTLE_TIME = 0.5  # seconds given to what was let go to come to rest before looking again
 HANG_TIME = 0.3  # seconds given to what was just lifted to stop swinging in the hand before looking at it
@@ -109,7 +108,7 @@ class SeenObject:
     box: Box3D = field(init=False)
 
     def __post_init__(self) -> None:
-        # Its points are depth pixels (observation's refinement), sharp down to the table.
+        # Its points are depth pixels (observation's refinement, where it found enough), sharp down to the table.
         box = object_box(self.points, self.support, PIXEL_BLUR)
         self.box = Box3D(np.array([*box.lower[:2], min(box.lower[2], self.floor)]), box.upper)
 
@@ -682,8 +681,14 @@ def _labelled_part(parts: PartLabels, handle: str) -> str | None:
 
 
 def _part_of(fresh: SeenObject, before: SeenObject) -> bool:
-    """Whether what ``fresh`` saw lies where ``before`` was seen (within :data:`STILL`): it has not moved since."""
-    return len(fresh.points) > 0 and float(np.mean(within(fresh.points, before.box, STILL))) >= STILL_SHARE
+    """Whether what ``fresh`` saw lies on what ``before`` saw (all but a few points within :data:`STILL` of its
+    points): it has not moved since. A box pushed 2 cm shows a strip of its top where none was."""
+    from scipy.spatial import cKDTree
+
+    if len(fresh.points) == 0 or len(before.points) == 0:
+        return False
+    distance, _ = cKDTree(before.points).query(fresh.points, distance_upper_bound=STILL)
+    return float(np.mean(np.isfinite(distance))) >= STILL_SHARE
 
 
 def _moved(obj: SeenObject, motion: Transform) -> SeenObject:

@@ -190,9 +190,9 @@ class MotionPlanner:
 
     def connects(self, start: np.ndarray, goal: np.ndarray, timeout: float | None = None) -> bool:
         """Whether one planner run finds a collision-free path from ``start`` to ``goal`` within ``timeout``
-        (default: the planning timeout): a screen for goals that IK reaches but a path cannot (a configuration
-        walled in by the table, or reached only through a passage too narrow for the dense validation), not a
-        verdict, since a busy machine may need the retries of :meth:`plan`."""
+        (default: the planning timeout; scaled by the load, as :meth:`plan`'s): a screen for goals that IK reaches
+        but a path cannot (a configuration walled in by the table, or reached only through a passage too narrow for
+        the dense validation), not a verdict, since a busy machine may need the retries of :meth:`plan`."""
         try:
             self.planner.plan(start, goal, self.default_planner, self._budget(timeout))
         except (PlannerTimeoutError, PathInCollisionError):
