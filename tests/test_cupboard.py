@@ -74,7 +74,7 @@ def test_the_hand_is_turned_level_into_the_compartment_and_a_grip_from_above_is_
     assert np.allclose(level.rotation[:, 2], [1, 0, 0], atol=1e-9)
     assert hand_turn(level, compartment, "red_block") == pytest.approx(math.pi / 2)
     from_above = Transform(np.zeros(3), np.array([0.0, 1.0, 0.0, 0.0]))  # approach straight down
-    with pytest.raises(CompartmentError, match="pick 'red_block' with parse_horizontal_grasp_pose"):
+    with pytest.raises(CompartmentError, match="it must be held level, taken with parse_horizontal_grasp_pose"):
         hand_turn(from_above, compartment, "red_block")
 
 
