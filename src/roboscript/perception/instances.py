@@ -14,6 +14,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from roboscript.geometry import Box3D
+from roboscript.perception.base import within
 from roboscript.perception.matching import MatchedObject, Projection
 
 SUPPORT_MARGIN = 0.004  # metres above the support plane that still count as the support
@@ -328,7 +329,7 @@ def _claimed_by(others: Sequence[Instance3D], points: np.ndarray) -> np.ndarray:
     with np.errstate(invalid="ignore"):
         for other in others:
             lower = np.array([*(other.box.lower[:2] - CLAIM_MARGIN), other.box.lower[2]])
-            claimed |= np.all((points > lower) & (points < other.box.upper + CLAIM_MARGIN), axis=1)
+            claimed |= within(points, Box3D(lower, other.box.upper + CLAIM_MARGIN))
     return claimed
 
 
@@ -372,7 +373,6 @@ def floor_under(instance: Instance3D, supports: Sequence[Instance3D]) -> float |
             & (s.points[:, 2] < box.lower[2] + FLOOR_TOLERANCE)
         ]
         for s in supports
-        if len(s.points) == len(s.normals)
     ]
     heights = np.concatenate([p[:, 2] for p in near]) if near else np.zeros(0)
     return float(np.percentile(heights, 10)) if len(heights) >= FLOOR_POINTS else None
