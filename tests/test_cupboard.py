@@ -5,6 +5,7 @@ it, placement into it from the front, the door swept with the hand in the planni
 from __future__ import annotations
 
 import math
+from pathlib import Path
 
 import numpy as np
 import pytest
@@ -152,3 +153,23 @@ def test_a_thing_gripped_from_above_for_the_compartment_gets_an_error_that_says_
     record = run_trial(TrialSpec(task.id, "panda", 0, 0, program, suite="generated"))
     assert not record.success
     assert "is held from above" in record.error and "parse_horizontal_grasp_pose" in record.error
+
+
+CORPUS = Path(__file__).parent / "data" / "prompt_corpus"
+
+
+def test_a_door_swung_to_the_edge_of_reach_stops_where_the_hand_can_still_back_off_its_handle():
+    # The program swings the door 90 degrees; the Panda reaches some 75. Stopped at the very edge, the open
+    # fingers could not back off the handle, and the next motion dragged them through it.
+    program = (CORPUS / "geometry" / "generated" / "into_cupboard.gen_089.py").read_text()
+    record = run_trial(TrialSpec("into_cupboard.gen_089", "panda", 0, 0, program, suite="generated"))
+    assert "stopped where it can still back off the handle" in record.output
+    assert record.success, (record.error, record.checks)
+
+
+def test_a_low_thing_gripped_tilted_down_goes_into_the_compartment_with_the_hand_levelled():
+    # The UR5e takes the wooden bar (4 cm high) from the side tilted 52 degrees down; pitched like that, the wrist
+    # meets the panel over the compartment at every spot.
+    program = (CORPUS / "concise" / "generated" / "into_cupboard.gen_083.py").read_text()
+    record = run_trial(TrialSpec("into_cupboard.gen_083", "ur5e", 0, 1, program, suite="generated"))
+    assert record.success, (record.error, record.checks)

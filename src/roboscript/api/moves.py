@@ -11,7 +11,7 @@ import numpy as np
 
 from roboscript.api.held import Held
 from roboscript.api.placement import Placer
-from roboscript.api.retreats import Retreats
+from roboscript.api.retreats import RETREAT_AFTER_RELEASE, Retreats
 from roboscript.api.touching import Touching
 from roboscript.backends.base import Backend
 from roboscript.geometry import Transform, rotation_angle_between
@@ -130,8 +130,17 @@ class Moves:
                 line = self.motion.cartesian(targets)
                 if line.fraction < SWING_LEAST:
                     raise CartesianPathIncompleteError(line.fraction, line.reason)
-                self.motion.execute(line.waypoints)
-            if line.fraction < 1.0:
+                waypoints, fraction = line.waypoints, line.fraction
+                if fraction < 1.0:
+                    waypoints, fraction = self._where_it_can_let_go(line.waypoints, line.fraction)
+                self.motion.execute(waypoints)
+            if fraction < line.fraction:
+                notice(
+                    f"follow_path: holding {doors[0]}, the hand followed {fraction:.0%} of the path and stopped where "
+                    f"it can still back off the handle: beyond {line.fraction:.0%} the path is out of the arm's reach "
+                    f"({line.reason})"
+                )
+            elif line.fraction < 1.0:
                 notice(
                     f"follow_path: holding {doors[0]}, the hand followed {line.fraction:.0%} of the path: the rest is "
                     f"beyond the arm's reach ({line.reason})"
@@ -139,6 +148,25 @@ class Moves:
         else:
             self.motion.follow(targets)
         self.contacts.withdraw_cleared(self.held)
+
+    def _where_it_can_let_go(self, waypoints: np.ndarray, fraction: float) -> tuple[np.ndarray, float]:
+        """The waypoints of a door's swing cut short by the arm's reach, up to the last one the hand can back off
+        the handle from (:data:`RETREAT_AFTER_RELEASE` along its approach axis, within reach), with the fraction
+        of the path that is; all of them where none can (the swing is then as far as the arm goes). At the very
+        edge of reach the open fingers stay round the handle: the next motion drags them through it, and a look
+        from there cannot see the handle behind the hand."""
+        positions = np.array([self.motion.kinematics.fk(q).position for q in waypoints])
+        steps = np.linalg.norm(np.diff(positions, axis=0), axis=1)
+        swept = np.concatenate([[0.0], np.cumsum(steps)])
+        least = SWING_LEAST / fraction * swept[-1]  # the share of the path a swing must keep
+        for index in range(len(waypoints) - 1, 0, -1):
+            if swept[index] < least:
+                break
+            q = waypoints[index]
+            back = -self.motion.kinematics.fk(q).rotation[:, 2]
+            if self.motion.reach_along(q, back, RETREAT_AFTER_RELEASE) >= RETREAT_AFTER_RELEASE - 1e-3:
+                return waypoints[: index + 1], fraction * swept[index] / max(swept[-1], 1e-9)
+        return waypoints, fraction
 
     def grasp(self, target: Transform) -> None:
         # The way to the pre-grasp is planned, not straight: it is never the retreat itself, whatever its direction.

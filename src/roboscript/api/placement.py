@@ -45,6 +45,7 @@ PLACE_RETREAT = 0.10  # metres a place pose should leave straight above it: the 
 # this far (degrees) toward the spot's open side, the held object with it, and lets go of it there: an object
 # released a few degrees off upright lands on its lower edge and settles back onto its base.
 PLACE_LEANS = (20.0, 35.0)
+LEVEL_PITCH = 5.0  # degrees below level under which a hand counts as level
 # Where things may be put down on the table, from the robot's base: in front of it, clear of it, within reach.
 TABLE_REACH = (np.array([0.15, -0.45]), np.array([0.73, 0.45]))
 ASIDE_CLEARANCE = 0.035  # metres kept around a thing put aside on the table, for the fingers that come for it again
@@ -227,10 +228,13 @@ class Placer:
         upright = self._search(carried, spots, PLACE_IK_QUICK, (0.0,), *limits)
         best = upright.leaving
         leaning: _Search | None = None
-        if best is None and request.retreat[2] > 0.5:
+        leans = PLACE_LEANS if request.retreat[2] > 0.5 else _levelling(tcp)
+        if best is None and leans:
             # A pose the hand cannot back out of straight up would leave a program's own approach from above
-            # (or its retreat) no room: leaning out from under what stands over the spot is better.
-            leaning = self._search(carried, spots, PLACE_IK_QUICK, PLACE_LEANS, *limits)
+            # (or its retreat) no room: leaning out from under what stands over the spot is better. A hand
+            # pitched down into a compartment (a low object held from the side, tilted so that the hand clears
+            # the table) brings the wrist up against the panel above: levelled, it tilts the object instead.
+            leaning = self._search(carried, spots, PLACE_IK_QUICK, leans, *limits)
             best = leaning.leaving or upright.longest
         if best is None:
             # The quick screen may miss the one IK branch that clears the furniture (a mug going into a drawer
@@ -470,6 +474,15 @@ class Placer:
         scene = self.motion.scene
         with scene.ignoring_held(), scene.fingers_open():
             return cartesian_path(self.motion.kinematics, scene, q, [up]).fraction * PLACE_RETREAT
+
+
+def _levelling(tcp: Transform) -> tuple[float, ...]:
+    """The leans (degrees, toward the front of a compartment) that level the hand at ``tcp``, pitched down, by
+    :data:`PLACE_LEANS` and at most all the way; none for a hand about level."""
+    pitch = math.degrees(math.asin(float(np.clip(-tcp.rotation[2, 2], -1.0, 1.0))))
+    if pitch < LEVEL_PITCH:
+        return ()
+    return tuple(sorted({min(lean, pitch) for lean in (*PLACE_LEANS, pitch)}))
 
 
 def _clear_of(spots: list, points: np.ndarray, radius: float, table_top: float) -> list:

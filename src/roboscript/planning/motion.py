@@ -449,6 +449,15 @@ class MotionPlanner:
         self.execute(line.waypoints)
         return line.fraction * distance
 
+    def reach_along(self, q: np.ndarray, direction: np.ndarray, distance: float) -> float:
+        """How far, up to ``distance``, the TCP of the arm at ``q`` could move straight along ``direction`` (the
+        hand kept as it is) within the arm's reach: IK and continuity only, collisions not checked (a question
+        about a configuration the arm is not in yet)."""
+        direction = np.asarray(direction, dtype=float) / float(np.linalg.norm(direction))
+        start = self.kinematics.fk(q)
+        end = Transform(start.position + direction * distance, start.quaternion)
+        return cartesian_path(self.kinematics, None, q, [end]).fraction * distance
+
     def arc(self, axis: np.ndarray, pivot: np.ndarray, angle: float, n: int = 20, min_fraction: float = 1.0):
         """Turns the TCP about a revolute joint (a door's hinge) by ``angle`` radians."""
         return self.follow(arc_poses(self.backend.tcp_pose(), axis, pivot, n, angle), min_fraction)

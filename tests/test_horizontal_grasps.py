@@ -1,0 +1,79 @@
+"""How wide a horizontal grasp must open: across what the cameras see of the object and, for a box, across its
+footprint's corners, which they sample thinly or not at all (a round thing's rectangle overstates it)."""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+import pytest
+
+from roboscript.geometry import Box3D
+from roboscript.grasping.heuristics import Outline, horizontal_grasps
+from roboscript.perception.base import ObjectPoints
+
+MAX_WIDTH = 0.085  # the 2F-85's opening
+BASE = np.array([0.0, 0.0])
+CENTER = np.array([-0.37, 0.41])
+
+
+class _Seen:
+    """Test double: one object on the table (at z 0.82) whose points are ``points``, with its footprint
+    rectangle and box as perception would give them."""
+
+    def __init__(self, points: np.ndarray, yaw: float, half: np.ndarray, height: float):
+        self.cloud, self.yaw, self.half = points, yaw, half
+        corners = np.array([[sx * half[0], sy * half[1]] for sx in (-1, 1) for sy in (-1, 1)])
+        c, s = math.cos(yaw), math.sin(yaw)
+        xy = corners @ np.array([[c, s], [-s, c]]) + CENTER
+        self.outline = Box3D(np.array([*xy.min(axis=0), 0.82]), np.array([*xy.max(axis=0), 0.82 + height]))
+
+    def box(self, name):
+        return self.outline
+
+    def points(self, name):
+        return ObjectPoints(self.cloud, np.tile([0.0, 0.0, 1.0], (len(self.cloud), 1)))
+
+    def footprint(self, name):
+        return CENTER, self.yaw, self.half
+
+
+def _top_face(yaw: float, half: np.ndarray, height: float, keep) -> np.ndarray:
+    """Points on a grid over the footprint's top face, those ``keep`` (local x, y) accepts."""
+    grid = [(x, y) for x in np.linspace(-half[0], half[0], 21) for y in np.linspace(-half[1], half[1], 9)]
+    local = np.array([p for p in grid if keep(*p)])
+    c, s = math.cos(yaw), math.sin(yaw)
+    xy = local @ np.array([[c, s], [-s, c]]) + CENTER
+    return np.column_stack([xy, np.full(len(xy), 0.82 + height)])
+
+
+def _across(yaw: float, half: np.ndarray, direction: np.ndarray) -> float:
+    """How wide the turned rectangle is along ``direction``."""
+    along = np.array([math.cos(yaw), math.sin(yaw)]) @ direction[:2]
+    side = np.array([-math.sin(yaw), math.cos(yaw)]) @ direction[:2]
+    return 2 * (half[0] * abs(along) + half[1] * abs(side))
+
+
+def test_a_box_is_gripped_only_where_its_footprint_fits_between_the_fingers_whatever_corners_were_seen():
+    yaw, half = math.radians(72), np.array([0.05, 0.02])  # a 10 x 4 cm bar, 4 cm high
+    # Its far corners unseen: the points alone are narrower than the bar slantwise.
+    points = _top_face(yaw, half, 0.04, lambda x, y: abs(x) + 0.6 * abs(y) < 0.052)
+    seen = _Seen(points, yaw, half, 0.04)
+    grasps = horizontal_grasps(seen, "wooden_bar", None, MAX_WIDTH, BASE)
+    assert grasps
+    assert all(_across(yaw, half, g.rotation[:, 1]) <= MAX_WIDTH - 0.003 for g in grasps)
+    outline = Outline.of(seen, "wooden_bar", points)
+    assert outline.box_like
+    slantwise = np.array([math.cos(math.radians(129)), math.sin(math.radians(129)), 0.0])
+    assert outline.across(slantwise) == pytest.approx(_across(yaw, half, slantwise))
+    assert outline.across(slantwise) > MAX_WIDTH  # 57 degrees off the bar's length: 8.8 cm
+
+
+def test_a_round_thing_is_gripped_across_what_is_seen_not_across_its_rectangles_diagonal():
+    half = np.array([0.04, 0.04])  # a disc 8 cm across: its rectangle is 11.3 cm corner to corner
+    points = _top_face(0.0, half, 0.03, lambda x, y: x * x + y * y <= 0.04**2)
+    seen = _Seen(points, 0.0, half, 0.03)
+    assert not Outline.of(seen, "orange", points).box_like
+    grasps = horizontal_grasps(seen, "orange", None, MAX_WIDTH, BASE)
+    headings = {round(math.degrees(math.atan2(g.rotation[1, 1], g.rotation[0, 1]))) % 180 for g in grasps}
+    assert any(h % 90 not in (0,) and abs(h % 90 - 45) < 30 for h in headings)  # slantwise to the rectangle too
