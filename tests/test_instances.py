@@ -121,14 +121,13 @@ def test_the_larger_object_gives_up_the_smaller_ones_surface_and_furniture_keeps
     cube_box = Box3D(np.r_[0.1, 0.1, TABLE], np.r_[0.15, 0.15, TABLE + 0.06])
     instances = [Instance3D("tray", np.zeros((0, 3)), np.zeros((0, 3)), tray_box, (0,))]
     instances.append(Instance3D("cube", np.zeros((0, 3)), np.zeros((0, 3)), cube_box, (1,)))
-    areas = [[120.0 * 120, 28.0 * 28]]
 
-    tray, cube = refine_all(instances, detections, [points], [normals], TABLE, areas)
+    tray, cube = refine_all(instances, detections, [points], [normals], TABLE)
     assert tray.points[:, 2].max() < TABLE + 0.035  # the cube's top is the cube's
     assert cube.points[:, 2].max() > TABLE + 0.035
     assert tray.box.upper[2] == pytest.approx(TABLE + 0.03, abs=0.002)
 
-    tray, _ = refine_all(instances, detections, [points], [normals], TABLE, areas, furniture={"tray"})
+    tray, _ = refine_all(instances, detections, [points], [normals], TABLE, furniture={"tray"})
     assert tray.points[:, 2].max() > TABLE + 0.035  # a piece of furniture gives nothing up
 
 
@@ -136,3 +135,28 @@ def test_a_block_hiding_the_top_it_stands_on_is_not_taken_down_to_the_table():
     below = _instance("red box", Box3D(np.r_[0.0, 0.0, TABLE], np.r_[0.06, 0.06, TABLE + 0.05]))
     block = _instance("green block", Box3D(np.r_[0.0, 0.0, TABLE + 0.052], np.r_[0.06, 0.06, TABLE + 0.1]))
     assert ground([below, block], TABLE)[1].box.lower[2] == pytest.approx(TABLE + 0.052)
+
+
+def test_a_block_on_a_box_stands_on_the_ring_of_its_top_seen_round_it_not_on_stray_points_at_its_foot():
+    top = TABLE + 0.05
+    ring = _grid((-0.04, 0.04), (-0.04, 0.04), top)
+    ring = ring[(np.abs(ring[:, 0]) > 0.03) | (np.abs(ring[:, 1]) > 0.03)][:8]  # the block hides all but a sliver
+    stray = np.array([[0.041, 0.0, TABLE + 0.004], [0.0, 0.041, TABLE + 0.005]])  # the table at the box's foot
+    below = _instance("red box", Box3D(np.r_[-0.04, -0.04, TABLE], np.r_[0.04, 0.04, top]), np.vstack([ring, stray]))
+    block = _instance("green block", Box3D(np.r_[-0.03, -0.03, top + 0.001], np.r_[0.03, 0.03, top + 0.05]))
+    assert ground([below, block], TABLE)[1].box.lower[2] == pytest.approx(top, abs=0.002)
+
+
+def test_objects_are_refined_smallest_in_space_first_however_small_the_images_show_them():
+    from roboscript.perception.grounding import Detection2D
+    from roboscript.perception.instances import refine_all
+
+    points, normals = _one_view()
+    # The tray's box in the image is the smaller (as a box under a block is, hidden by it from above).
+    detections = [[Detection2D("tray", (30, 30, 70, 70)), Detection2D("cube", (29, 29, 71, 71))]]
+    tray_box = Box3D(np.r_[0.0, 0.0, TABLE], np.r_[0.3, 0.3, TABLE + 0.06])
+    cube_box = Box3D(np.r_[0.1, 0.1, TABLE], np.r_[0.15, 0.15, TABLE + 0.06])
+    instances = [Instance3D("tray", np.zeros((0, 3)), np.zeros((0, 3)), tray_box, (0,))]
+    instances.append(Instance3D("cube", np.zeros((0, 3)), np.zeros((0, 3)), cube_box, (1,)))
+    tray, cube = refine_all(instances, detections, [points], [normals], TABLE)
+    assert tray.points[:, 2].max() < TABLE + 0.035 and cube.points[:, 2].max() > TABLE + 0.035

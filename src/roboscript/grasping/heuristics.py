@@ -74,6 +74,19 @@ def central_lift_grasps(
             if 2 * half[k] > max_width - 0.003:
                 continue
             candidates.append(Transform.from_rotation(np.array([*center_xy, depth]), _frame(axes[k], DOWN, outward)))
+    # Then the hand turned off square, where the object is narrow enough that way: fingers closing slantwise turn
+    # it square as they close, and the hand's ends swing clear of a neighbour's corner (a Rubik's cube by a
+    # basket turned 35 degrees, whose rim stood 5 mm inside the hand's end either square way).
+    points = perception.points(name).points
+    outline = Outline.of(perception, name, points)
+    for depth in depths:
+        for k, turn in ((k, turn) for turn in OFF_SQUARE for k in order):
+            closing = _turned(axes[k], turn)
+            across = outline.across(closing) if outline.box_like or not len(points) else _extent(points, closing)
+            if across <= max_width - 0.003:
+                candidates.append(
+                    Transform.from_rotation(np.array([*center_xy, depth]), _frame(closing, DOWN, outward))
+                )
     if not candidates:
         raise GraspError(
             f"{name!r} is {2 * half.min() * 100:.1f} cm across its narrowest side, wider than the gripper's "
@@ -82,6 +95,13 @@ def central_lift_grasps(
     return candidates
 
 
+def _turned(direction: np.ndarray, angle: float) -> np.ndarray:
+    """The horizontal ``direction`` turned ``angle`` radians about the vertical."""
+    c, s = math.cos(angle), math.sin(angle)
+    return np.array([c * direction[0] - s * direction[1], s * direction[0] + c * direction[1], 0.0])
+
+
+OFF_SQUARE = (math.radians(15), -math.radians(15), math.radians(30), -math.radians(30))
 SHALLOWEST = 0.018  # metres below an object's top: the shallowest top-down grasp (fingertip pads are ~2 cm)
 FINGER_PAD = 0.01  # metres: half the height of a fingertip pad
 RIM_GRIP = 0.02  # metres below a tall object's top where the higher horizontal grip closes (a cup at its rim)

@@ -216,16 +216,19 @@ def refine_all(
     point_maps: Sequence[np.ndarray],
     normal_maps: Sequence[np.ndarray],
     support: float,
-    box_areas: Sequence[Sequence[float]],
     furniture: Collection[str] = (),
 ) -> list[Instance3D]:
-    """:func:`refine_with_depth` of each instance, smallest 2D boxes (``box_areas[v][i]``) first. An object gives
-    up to the smaller objects refined before it the points in their boxes (a basket's upright box holds the cube
-    beside it; a plate's, the box lying on it), and keeps its largest piece less its skirt. Furniture and its parts
-    (labelled one of ``furniture``) are refined as they are seen: a drawer's front stands in its carcass's box, a
-    handle on a drawer's front, an open door shows in pieces round the arm, and how far a drawer or door stands out
-    is measured from all of it."""
-    sizes = [_mean_area(i, box_areas) for i in instances]
+    """:func:`refine_with_depth` of each instance, smallest (fused) box first. An object gives up to the smaller
+    objects refined before it the points in their boxes (a basket's upright box holds the cube beside it; a
+    plate's, the box lying on it), and keeps its largest piece less its skirt. Furniture and its parts (labelled one
+    of ``furniture``) are refined as they are seen: a drawer's front stands in its carcass's box, a handle on a
+    drawer's front, an open door shows in pieces round the arm, and how far a drawer or door stands out is measured
+    from all of it.
+
+    Smallest in space, not in the images: a block stacked on a box hides the box's top from every camera above,
+    and the box's boxes in the images come out the smaller; refined first, the box took the block's sides, and the
+    block stood 3 cm higher on it than it does."""
+    sizes = [i.box.volume for i in instances]
     refined: dict[int, Instance3D] = {}
     for k in sorted(range(len(instances)), key=lambda k: sizes[k]):
         maps = (instances[k], detections, point_maps, normal_maps, support)
@@ -337,6 +340,7 @@ FLOOR_REACH = 0.02  # metres round an object's footprint within which what it st
 FLOOR_UPWARD = 0.8  # normal's z above which a point of what it stands on faces up
 FLOOR_TOLERANCE = 0.002  # metres over an object's lowest seen point that a floor beside it may stand
 FLOOR_POINTS = 10  # fewer such points than this: no floor is seen
+FLOOR_LAYER = 0.004  # metres: the thickness of the layer of those points that is the floor
 ON_TOP = 0.01  # metres below another's seen top within which an object's lowest seen point stands on that top
 RESTING_GAP = 0.03  # metres over another's seen top within which an object's lowest seen point may rest on it
 HIDDEN_FOOT = 0.06  # metres of an object's underside the cameras may not see (a ball's lower half, a bowl's stem)
@@ -361,9 +365,10 @@ def _on_top_of(instance: Instance3D, other: Instance3D) -> bool:
 
 
 def floor_under(instance: Instance3D, supports: Sequence[Instance3D]) -> float | None:
-    """The height of what ``instance`` stands on, as seen beside it: the upward-facing points of ``supports`` within
-    :data:`FLOOR_REACH` of its footprint and below its lowest seen point (a plate's floor round a box lying on it, a
-    bowl's bottom round the apple in it, a box's top round the block on it); None where too few show."""
+    """The height of what ``instance`` stands on, as seen beside it: the densest layer of the upward-facing points of
+    ``supports`` within :data:`FLOOR_REACH` of its footprint and below its lowest seen point (a plate's floor round
+    a box lying on it, a bowl's bottom round the apple in it, a box's top round the block on it); None where too few
+    show."""
     box = instance.box
     near = [
         s.points[
@@ -375,7 +380,12 @@ def floor_under(instance: Instance3D, supports: Sequence[Instance3D]) -> float |
         for s in supports
     ]
     heights = np.concatenate([p[:, 2] for p in near]) if near else np.zeros(0)
-    return float(np.percentile(heights, 10)) if len(heights) >= FLOOR_POINTS else None
+    if len(heights) < FLOOR_POINTS:
+        return None
+    # The densest layer, not the lowest points: of a box's top that a block on it hides, a thin ring shows, and
+    # two points of the table at the box's foot put the block 4 cm under its top.
+    lower, upper = densest_layer(heights, FLOOR_LAYER)
+    return float(np.median(heights[(heights >= lower) & (heights <= upper)]))
 
 
 def ground(instances: Sequence[Instance3D], support: float) -> list[Instance3D]:

@@ -74,6 +74,6 @@ def observe(
     )
     maps = [point_map(f, hidden[f.name]) for f in usable]
     normals = [normal_map(m, f.extrinsics.position) for m, f in zip(maps, usable, strict=True)]
-    instances = refine_all(instances, detections, maps, normals, support, areas, furniture)
+    instances = refine_all(instances, detections, maps, normals, support, furniture)
     instances = ground(instances, support)
     return Observation(usable, scene, detections, projections, memberships, matched, instances, support)

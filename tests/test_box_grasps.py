@@ -1,5 +1,6 @@
-"""How wide a horizontal grasp must open: across what the cameras see of the object and, for a box, across its
-footprint's corners, which they sample thinly or not at all (a round thing's rectangle overstates it)."""
+"""How wide a grasp must open: across what the cameras see of the object and, for a box, across its footprint's
+corners, which they sample thinly or not at all (a round thing's rectangle overstates it); and the grasps from
+above turned off square where the object is narrow enough that way."""
 
 from __future__ import annotations
 
@@ -9,7 +10,7 @@ import numpy as np
 import pytest
 
 from roboscript.geometry import Box3D
-from roboscript.grasping.heuristics import Outline, horizontal_grasps
+from roboscript.grasping.heuristics import Outline, central_lift_grasps, horizontal_grasps
 from roboscript.perception.base import ObjectPoints
 
 MAX_WIDTH = 0.085  # the 2F-85's opening
@@ -77,3 +78,17 @@ def test_a_round_thing_is_gripped_across_what_is_seen_not_across_its_rectangles_
     grasps = horizontal_grasps(seen, "orange", None, MAX_WIDTH, BASE)
     headings = {round(math.degrees(math.atan2(g.rotation[1, 1], g.rotation[0, 1]))) % 180 for g in grasps}
     assert any(h % 90 not in (0,) and abs(h % 90 - 45) < 30 for h in headings)  # slantwise to the rectangle too
+
+
+def test_grasps_from_above_come_square_first_then_turned_where_the_box_is_narrow_enough_that_way():
+    half = np.array([0.0285, 0.0285])  # a Rubik's cube, 5.7 cm
+    cube = _Seen(_top_face(0.0, half, 0.057, lambda x, y: True), 0.0, half, 0.057)
+    grasps = central_lift_grasps(cube, "rubiks_cube", "center", 0.08, BASE)
+    turns = [round(math.degrees(math.atan2(g.rotation[1, 1], g.rotation[0, 1]))) % 90 for g in grasps]
+    square = [t in (0, 90) for t in turns]
+    assert square[0] and square.index(False) == sum(square)  # every square grasp before any turned one
+    assert {15, 75} <= set(turns)  # 15 degrees either way: 7.0 cm across
+    assert 30 not in turns and 60 not in turns  # 30 degrees: 7.8 cm, more than the 8 cm opening less its margin
+    half = np.array([0.045, 0.036])  # 9 x 7.2 cm: turned 15 degrees it is 9.3 cm across
+    box = _Seen(_top_face(0.0, half, 0.05, lambda x, y: True), 0.0, half, 0.05)
+    assert all(abs(g.rotation[0, 1]) < 1e-9 for g in central_lift_grasps(box, "brown_box", "center", 0.08, BASE))
