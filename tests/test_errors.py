@@ -5,7 +5,7 @@ from pathlib import Path
 
 import pytest
 
-from roboscript.api.placement import PlacementError, ReceptacleFullError
+from roboscript.api.place_requests import PlacementError, ReceptacleFullError
 from roboscript.api.signature import ToolCallError
 from roboscript.bench.task_file import TaskFileError
 from roboscript.codegen.outcomes import Outcome

@@ -7,7 +7,7 @@ import numpy as np
 import pytest
 
 from roboscript.api.nearby import NEAREST_BOUND, Support, free_spots, ring_candidates
-from roboscript.api.placement import PlacementError
+from roboscript.api.place_requests import PlacementError
 from roboscript.api.spots import Footprint
 from roboscript.assembly import build_tools
 from roboscript.backends.mujoco_backend import MujocoBackend

@@ -4,7 +4,7 @@ import math
 
 import numpy as np
 
-from roboscript.api.placement import _clear_of
+from roboscript.api.place_requests import _clear_of
 from roboscript.api.spots import Footprint, PlacementSpot, gap, gaps, spots_in_receptacle
 from roboscript.geometry import Transform, quat_from_yaw
 from roboscript.perception.base import Receptacle

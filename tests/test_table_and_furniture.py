@@ -98,7 +98,7 @@ def test_placing_on_the_table_puts_the_object_aside_on_its_top(tools):
 def test_a_thing_put_aside_leaves_room_for_fingers_to_come_for_it_again():
     """A gelatin box (2.8 cm high) put aside next to a Rubik's cube would be out of a hand's reach: the fingers of a
     hand coming from above for it would land on the cube. The spot chosen keeps 3.5 cm clear of its neighbours."""
-    from roboscript.api.placement import ASIDE_CLEARANCE
+    from roboscript.api.place_requests import ASIDE_CLEARANCE
     from roboscript.sim.world_file import parse_world
 
     world = parse_world(

@@ -7,7 +7,7 @@ import numpy as np
 import pytest
 
 from roboscript.api import Pose, ToolAPI
-from roboscript.api.placement import PlacementError, ReceptacleFullError
+from roboscript.api.place_requests import PlacementError, ReceptacleFullError
 from roboscript.api.signature import ToolCallError
 from roboscript.assembly import build_tools
 from roboscript.backends.mujoco_backend import MujocoBackend
