@@ -173,3 +173,26 @@ def test_a_low_thing_gripped_tilted_down_goes_into_the_compartment_with_the_hand
     program = (CORPUS / "concise" / "generated" / "into_cupboard.gen_083.py").read_text()
     record = run_trial(TrialSpec("into_cupboard.gen_083", "ur5e", 0, 1, program, suite="generated"))
     assert record.success, (record.error, record.checks)
+
+
+def test_a_motion_into_the_compartment_is_planned_to_its_mouth_and_goes_in_along_its_way_out():
+    from roboscript.assembly import build_tools
+
+    with MujocoBackend(parse_world(_cupboard(door_open=90)), robot="panda", settle=0.3) as backend:
+        motion = build_tools(backend).motion
+        inside = backend.ground_truth.holding_box("cabinet.door_0")
+        # Level, pointing into the cabinet (+y), 6 cm past its front and 5 cm over the compartment's floor.
+        rotation = np.column_stack([[0.0, 0.0, 1.0], [1.0, 0.0, 0.0], [0.0, 1.0, 0.0]])
+        pose = Transform.from_rotation(np.array([0.0, inside.lower[1] + 0.06, inside.lower[2] + 0.05]), rotation)
+        goal = motion.ik(pose)
+        way_out = np.array([0.0, -0.1, 0.0])
+        motion.prefer_goal(pose, goal, way_out)
+        way_in = motion._way_in(pose, goal)
+        assert way_in is not None
+        assert np.allclose(motion.kinematics.fk(way_in[0]).position, pose.position + way_out, atol=1e-3)
+        assert np.allclose(way_in[-1], goal)
+        planned, plan = [], motion.plan
+        motion.plan = lambda start, goals, *rest: planned.append(goals) or plan(start, goals, *rest)  # a spy
+        motion.move_to_pose(pose)
+        assert np.allclose(planned[0][0], way_in[0])  # planned to the mouth, not into the compartment
+        assert np.linalg.norm(backend.tcp_pose().position - pose.position) < 0.01

@@ -118,7 +118,9 @@ class Placer:
                 f"no reachable, collision-free pose puts {name!r} {where} ({upright.tried} spots tried): "
                 f"{upright.errors[0] if upright.errors else 'no spot'}"
             )
-        self.motion.prefer_goal(best[0], best[1])
+        # Into a compartment, the hand goes in along its way out (the retreat's line, checked clear above).
+        way_out = request.retreat * PLACE_RETREAT if request.retreat[2] < 0.5 else None
+        self.motion.prefer_goal(best[0], best[1], way_out)
         return best[0], best[2]
 
     def place_pose(self, name: str, receptacle: str | None, target: np.ndarray | None, tcp: Transform) -> Transform:

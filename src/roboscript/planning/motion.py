@@ -89,6 +89,7 @@ class MotionPlanner:
         self.default_planner = "RRTConnect"
         self.planning_timeout = 2.0
         self._preferred: list[tuple[Transform, np.ndarray]] = []  # configurations chosen for poses ahead of time
+        self._ways_out: list[tuple[Transform, np.ndarray]] = []  # the straight ways out of poses (prefer_goal)
 
     @property
     def scene(self) -> PlanningScene:
@@ -336,18 +337,22 @@ class MotionPlanner:
         self.execute(path)
         return int(np.argmin([pose_distance(path.goal, g) for g in goals]))
 
-    def prefer_goal(self, pose: Transform, q: np.ndarray) -> None:
+    def prefer_goal(self, pose: Transform, q: np.ndarray, way_out: np.ndarray | None = None) -> None:
         """Makes ``q`` the goal of the next motion to ``pose`` (a place pose chosen because the hand can leave it
         from ``q``), where the IK nearest the start would otherwise decide. It holds for one motion, and until the
-        gripper lets go of what it holds."""
+        gripper lets go of what it holds. ``way_out``: the TCP's straight way out of a narrow place (a compartment
+        behind a door), as a displacement; a motion to ``pose`` that is no straight line is then planned to the
+        way's mouth and goes in along it, as MoveIt's place pipeline approaches (planning into the compartment
+        itself ran out of time beside the door)."""
         self._preferred = [*self._preferred[-7:], (pose, np.asarray(q, dtype=float).copy())]
+        if way_out is not None:
+            self._ways_out = [*self._ways_out[-7:], (pose, np.asarray(way_out, dtype=float).copy())]
 
     def _preferred_for(self, pose: Transform, consume: bool = False) -> np.ndarray | None:
         """The configuration preferred for ``pose``, if one was chosen and is still free of collisions."""
         for k in range(len(self._preferred) - 1, -1, -1):
             known, q = self._preferred[k]
-            same_place = np.linalg.norm(known.position - pose.position) < 1e-4
-            if same_place and abs(float(np.dot(known.quaternion, pose.quaternion))) > 1 - 1e-8:
+            if _same(known, pose):
                 if consume:
                     del self._preferred[k]
                 return q if self.scene.is_valid(q) else None
@@ -405,9 +410,37 @@ class MotionPlanner:
         if line.fraction >= 1.0 and (preferred is None or same_pose(line.waypoints[-1], preferred, 0.2)):
             path = line.waypoints
         else:
+            way_in = self._way_in(pose, preferred)
+            if way_in is not None:
+                try:
+                    self.execute(self.plan(self.sync(), [way_in[0]], planner, None))
+                except (PlannerTimeoutError, PathInCollisionError):
+                    way_in = None  # no path to its mouth either: planned to the pose itself, below
+            if way_in is not None:
+                self._preferred_for(pose, consume=True)
+                return self.execute(self._from_here(way_in))
             path = self.plan_to_pose(pose, planner)
         self._preferred_for(pose, consume=True)
         return self.execute(path)
+
+    def _way_in(self, pose: Transform, goal: np.ndarray | None) -> np.ndarray | None:
+        """The straight line into ``pose`` ending at ``goal`` (the configuration preferred for it), along the way
+        out registered with it (:meth:`prefer_goal`), as joint waypoints from its mouth; None where there is none
+        or the line is blocked."""
+        way_out = next((out for known, out in self._ways_out if _same(known, pose)), None)
+        if goal is None or way_out is None:
+            return None
+        mouth = Transform(pose.position + way_out, pose.quaternion)
+        line = self.cartesian([mouth], start=goal)
+        return line.waypoints[::-1].copy() if line.fraction >= 1.0 and len(line.waypoints) > 1 else None
+
+    def _from_here(self, line: np.ndarray) -> np.ndarray:
+        """``line`` starting from the present configuration, which the motion to its start reached (perhaps a
+        whole turn about a joint away: planner.py)."""
+        q = self.sync()
+        line = line + whole_turns(line[0], q)
+        line[0] = q
+        return line
 
     def follow(self, poses: Sequence[Transform], min_fraction: float = 1.0) -> ExecutionReport:
         """Executes a Cartesian path through ``poses``; raises if less than ``min_fraction`` is achievable."""
@@ -471,4 +504,11 @@ class MotionPlanner:
     def detach(self, name: str) -> None:
         self.scene.detach(name)
         self._preferred.clear()  # chosen for placing what was held
+        self._ways_out.clear()
         self.sync()
+
+
+def _same(a: Transform, b: Transform) -> bool:
+    """Whether two poses are one (a pose handed back by a program)."""
+    same_place = float(np.linalg.norm(a.position - b.position)) < 1e-4
+    return same_place and abs(float(np.dot(a.quaternion, b.quaternion))) > 1 - 1e-8
