@@ -10,7 +10,7 @@ import numpy as np
 import pytest
 
 from roboscript.geometry import Box3D
-from roboscript.grasping.heuristics import Outline, central_lift_grasps, horizontal_grasps
+from roboscript.grasping.heuristics import GraspError, Outline, central_lift_grasps, horizontal_grasps
 from roboscript.perception.base import ObjectPoints
 
 MAX_WIDTH = 0.085  # the 2F-85's opening
@@ -92,3 +92,11 @@ def test_grasps_from_above_come_square_first_then_turned_where_the_box_is_narrow
     half = np.array([0.045, 0.036])  # 9 x 7.2 cm: turned 15 degrees it is 9.3 cm across
     box = _Seen(_top_face(0.0, half, 0.05, lambda x, y: True), 0.0, half, 0.05)
     assert all(abs(g.rotation[0, 1]) < 1e-9 for g in central_lift_grasps(box, "brown_box", "center", 0.08, BASE))
+
+
+def test_a_round_thing_wider_than_the_opening_is_not_gripped_slantwise_where_its_far_side_is_unseen():
+    half = np.array([0.043, 0.043])  # a tuna can 8.6 cm across, the 2F-85 opening 8.5
+    near_half = _top_face(0.0, half, 0.034, lambda x, y: x * x + y * y <= 0.043**2 and x + y < 0.0)
+    can = _Seen(near_half, 0.0, half, 0.034)
+    with pytest.raises(GraspError, match="wider than the gripper"):
+        central_lift_grasps(can, "tuna_can", "center", MAX_WIDTH, BASE)
