@@ -138,3 +138,30 @@ def test_no_free_spot_within_the_bound_says_how_far_the_nearest_is():
         # 15 cm past the edge of the table (y up to 0.9 m): the nearest spot on it is further than 15 cm.
         with pytest.raises(PlacementError, match=r"within 15 cm.*the nearest free spot on 'table' is \d+ cm away"):
             tools.parse_place_pose("apple", position=[0.0, 1.05, 0.0])
+
+
+def test_a_position_over_a_saucer_with_no_room_on_it_is_moved_onto_the_table_beside_it(caplog):
+    # A temporary spot a program chose fell on a saucer (nothing named), and a lime takes the room on it.
+    world = _world(
+        [
+            {"name": "toy_car", "type": "toy_car", "position": [0.1, -0.2]},
+            {"name": "pink_saucer", "type": "pink_saucer", "position": [0.0, 0.1]},
+            {"name": "lime", "type": "lime", "on": "pink_saucer", "position": [0.0, 0.0]},
+        ]
+    )
+    with MujocoBackend(world, robot="panda", settle=0.5) as backend:
+        tools = build_tools(backend)
+        gt = backend.ground_truth
+        tools.open_gripper()
+        tools.grasp(tools.parse_adaptive_shape_grasp_pose("toy_car", preferred_approach_direction=[0, 0, -1]))
+        tools.close_gripper()
+        tools.attach_object("toy_car")
+        tools.move_in_direction([0, 0, 1], 0.1)
+        saucer = gt.box("pink_saucer").center
+        with caplog.at_level(logging.INFO, logger="roboscript.notices"):
+            pose = tools.parse_place_pose("toy_car", position=saucer)
+        assert any("cm away" in r.getMessage() for r in caplog.records)
+        _put(tools, "toy_car", pose)
+        car = gt.box("toy_car")
+        assert car.lower[2] < gt.box("table").upper[2] + 0.01  # on the table, beside the saucer
+        assert np.linalg.norm(car.center[:2] - saucer[:2]) <= NEAREST_BOUND + 0.02

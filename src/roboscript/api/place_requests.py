@@ -122,17 +122,25 @@ class PlaceRequests:
         first; a PlacementError that says how far the nearest free one is where there is none."""
         _, yaw, half = self.perception.footprint(name)
         height = self.perception.box(name).size[2]
+        table = supports.table_top(self.perception)
         if receptacle_name is None:
-            support = supports.support_under(self.perception, name, target[:2], np.asarray(half))
+            under = supports.support_under(self.perception, name, target[:2], np.asarray(half))
+            # Nothing named: where what is under the position has no room (a temporary spot that fell on a
+            # saucer too small for a toy car), the table round it.
+            candidates = [under]
+            if under.region.name != TABLE:
+                candidates.append(supports.support_named(self.perception, name, table))
         else:
             # On the table at a position: anywhere on its top (reach is for the motion planner to judge), not only
             # where things are put aside.
-            named = supports.table_top(self.perception) if receptacle_name == TABLE else None
-            support = supports.support_named(self.perception, name, named or self._receptacle(receptacle_name, name))
-        spots = free_spots(ring_candidates(target[:2], NEAREST_BOUND, self.base_xy), half, yaw, height, support)
-        spots = _open_side(spots, support.region)
-        if spots:
-            return spots
+            named = table if receptacle_name == TABLE else self._receptacle(receptacle_name, name)
+            candidates = [supports.support_named(self.perception, name, named)]
+        for support in candidates:
+            spots = free_spots(ring_candidates(target[:2], NEAREST_BOUND, self.base_xy), half, yaw, height, support)
+            spots = _open_side(spots, support.region)
+            if spots:
+                return spots
+        support = candidates[-1]
         farther = free_spots(ring_candidates(target[:2], REPORT_BOUND, self.base_xy), half, yaw, height, support)
         where = f"on {support.region.name!r}"
         nearest = (
