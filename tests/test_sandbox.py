@@ -43,6 +43,8 @@ HOSTILE = [
     ("def f():\n    yield 1", FORBIDDEN, "generators (yield) are not allowed"),
     ("s = '{0.__class__}'.format(1)", FORBIDDEN, "format strings may not name dunder attributes"),
     ("m = print.__self__", FORBIDDEN, ".__self__"),
+    ("def f():\n    pass\nf.__name__ = 'g'", FORBIDDEN, ".__name__"),  # read only
+    ("n = np.__name__.__class__", FORBIDDEN, ".__class__"),
     ("g = Pose.__init__.__globals__", FORBIDDEN, ".__init__"),
     ("d = vars(np)", FORBIDDEN, "'vars' is not allowed"),
     ("breakpoint()", FORBIDDEN, "'breakpoint' is not allowed"),
@@ -231,3 +233,10 @@ def test_a_time_limit_stretches_with_the_machines_load_up_to_a_cap(monkeypatch):
     assert Limits(timeout=10.0).scaled_to_load().timeout == 40.0  # an endless loop still ends
     monkeypatch.setattr(os, "getloadavg", lambda: (0.1, 0.0, 0.0))
     assert Limits(timeout=10.0).scaled_to_load().describe() == "10 s limit"
+
+
+def test_a_program_may_read_a_functions_name_for_its_messages():
+    program = "def make_grasp(name):\n    return name\nprint('no', make_grasp.__name__, 'for', 'apple')\n"
+    result = execute(program, {}, Limits(timeout=5))
+    assert result.outcome is Outcome.OK and result.error is None
+    assert result.output == "no make_grasp for apple\n"

@@ -90,7 +90,7 @@ def find_violations(tree: ast.AST) -> list[Violation]:
         if not isinstance(node, ALLOWED_NODES):
             why = _WHY.get(type(node), f"{type(node).__name__} is not allowed in a program")
             found.append(Violation(line, why))
-        elif isinstance(node, ast.Attribute) and (node.attr.startswith("_") or node.attr in FORBIDDEN_ATTRIBUTES):
+        elif isinstance(node, ast.Attribute) and _forbidden_attribute(node):
             found.append(Violation(line, f"the attribute .{node.attr} is not allowed"))
         elif isinstance(node, ast.Name) and (node.id.startswith("__") or node.id in FORBIDDEN_NAMES):
             found.append(Violation(line, f"the name {node.id!r} is not allowed"))
@@ -114,6 +114,17 @@ def find_violations(tree: ast.AST) -> list[Violation]:
         for line, method in uncalled_checked_methods(tree)
     ]
     return sorted(found, key=lambda v: v.line)
+
+
+# Dunder attributes a program may read: a string, and nothing to be reached from it (a defensive program's
+# messages name the function that failed, ``make_grasp.__name__``).
+READABLE_DUNDERS = frozenset({"__name__"})
+
+
+def _forbidden_attribute(node: ast.Attribute) -> bool:
+    if node.attr in READABLE_DUNDERS and isinstance(node.ctx, ast.Load):
+        return False
+    return node.attr.startswith("_") or node.attr in FORBIDDEN_ATTRIBUTES
 
 
 # Bounds on a program's shape: past them, compiling it (CPython's symbol tables copy a function's names into every
