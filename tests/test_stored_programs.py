@@ -2,11 +2,13 @@
 through ``roboscript bench`` is in test_bench)."""
 
 import json
+from pathlib import Path
 
 import pytest
 
 from roboscript.bench.stored_programs import StoredProgramsError, compose, load_program_store
 from roboscript.bench.tasks import load_suite
+from roboscript.codegen.checker import check_program
 
 PAPER = load_suite("paper")
 
@@ -60,3 +62,13 @@ def test_a_generated_code_file_given_itself_must_be_in_the_format(tmp_path):
         load_program_store(bad, PAPER)
     with pytest.raises(StoredProgramsError, match="neither a folder"):
         load_program_store(tmp_path / "missing", PAPER)
+
+
+PROMPT_CORPUS = Path(__file__).parent / "data" / "prompt_corpus"
+
+
+@pytest.mark.parametrize("path", sorted(PROMPT_CORPUS.glob("*/*/*.py")), ids=lambda p: f"{p.parts[-3]}/{p.stem}")
+def test_every_program_written_from_the_prompt_passes_the_static_check(path):
+    # They are what an LLM writes: what the checker refuses in them (a defensive program's make_grasp.__name__) is
+    # the checker's to allow, or a hole in the prompt.
+    assert check_program(path.read_text()) == []
