@@ -241,3 +241,15 @@ def test_an_llm_that_fails_during_repair_leaves_the_attempt_standing_with_the_re
     assert attempt["repair_error"].startswith("LLMError:") and "500" in attempt["repair_error"]
     with pytest.raises(ValueError, match="repair rounds must be 0 or more"):
         TrialSpec("simple_0", "panda", 0, 0, program="", llm=llm, repair_rounds=-1)
+
+
+def test_the_prompt_names_every_kind_of_thing_the_gripper_cannot_pick_up():
+    # A sorting task's readers (three of three) took a blue saucer for one of "the blue objects" and failed at its
+    # grasp: what cannot be moved is a fact a program cannot have unless the prompt says it.
+    from roboscript.objects.library import object_types
+
+    prompt = system_prompt()
+    start = prompt.index("- Plates, saucers")
+    rule = prompt[start : prompt.index("\n- ", start + 1)].lower()
+    kinds = {t.category.split()[-1] for t in object_types().values() if not t.pickable}
+    assert kinds and all(f"{kind}s" in rule for kind in kinds) and "cannot pick" in rule

@@ -22,6 +22,8 @@ Rules:
   `cabinet.handle_1` is the second drawer's and `cabinet.handle_2` the door's). The table and the furniture are
   objects too (`get_3d_bbox('table')`, `parse_place_pose(name, 'table')`), and `get_object_name_list()` lists
   them: leave out `table`, `cabinet` and its parts when you mean the things on the table.
+- Plates, saucers, bowls and baskets stay where they are: things go in or on them, and the gripper cannot pick
+  them up.
 - Positions are in metres in the robot's frame: x forward, y left, z up.
 - To pick something: open_gripper(), grasp(a grasp pose), close_gripper(), attach_object(name), then lift it.
 - To put something down: move_to_pose(a place pose), open_gripper(), detach_object(name), then move up.
