@@ -1,25 +1,27 @@
 # Task: sort the objects on the table by colour: put the blue objects on the blue plate.
 # Plan:
-# 1. The blue objects other than the blue plate itself are the blue saucer and the blue cup
-#    (the medication bottle and the green apple are not blue).
-# 2. Move the flat saucer first, then the cup, so the cup does not stand in the saucer's way.
-# 3. For each: grasp it from above with an adaptive grasp, lift it, place it on the blue plate,
-#    release it and move up.
-detect_objects()
-blue_objects = ['blue_saucer', 'blue_cup']
+# 1. Detect the objects.
+# 2. Decide which objects are blue from their names: blue_cup is moved; blue_plate is the target
+#    and blue_saucer is a saucer, which stays where it is; the others are not blue.
+# 3. For each blue object: grasp it with the adaptive grasp from above, lift it, place it on the
+#    blue plate, release it and move up.
 
 
-def pick_and_place(name, receptacle):
+def pick_and_place(object_name, receptacle_name):
     open_gripper()
-    grasp(parse_adaptive_shape_grasp_pose(name, preferred_approach_direction=np.array([0, 0, -1])))
+    grasp_pose = parse_adaptive_shape_grasp_pose(object_name, None, np.array([0, 0, -1]))
+    grasp(grasp_pose)
     close_gripper()
-    attach_object(name)
+    attach_object(object_name)
     move_in_direction(np.array([0, 0, 1]), 0.1)
-    move_to_pose(parse_place_pose(name, receptacle))
+    place_pose = parse_place_pose(object_name, receptacle_name)
+    move_to_pose(place_pose)
     open_gripper()
-    detach_object(name)
+    detach_object(object_name)
     move_in_direction(np.array([0, 0, 1]), 0.1)
 
 
-for name in blue_objects:
-    pick_and_place(name, 'blue_plate')
+detect_objects()
+blue_objects = ['blue_cup']
+for object_name in blue_objects:
+    pick_and_place(object_name, 'blue_plate')
