@@ -538,3 +538,26 @@ def test_fingers_that_let_go_from_the_side_are_drawn_out_before_the_hand_rises()
         assert float(backed @ -approach) > 0.04 and abs(backed[2] - (-approach[2]) * np.linalg.norm(backed)) < 0.01
         assert stops[-1][2] - stops[0][2] == pytest.approx(0.1, abs=0.01)  # then the program's own rise
         np.testing.assert_allclose(backend.ground_truth.box("soup_can").center, placed, atol=0.005)
+
+
+def test_a_box_with_no_reachable_grasp_from_above_is_taken_by_its_best_grasp_with_a_notice(caplog):
+    import logging
+
+    from roboscript.bench.tasks import load_suite
+    from roboscript.sim.world_catalog import load_world
+
+    # Closing across its narrow side, the hand's end reaches over the mug beside it; across its long side the box
+    # is wider than the Panda's opening (into_drawer.gen_069, as its trials place things).
+    world = load_world(load_suite("generated")["into_drawer.gen_069"].world)
+    with MujocoBackend(world, robot="panda", seed=0, randomize=True, settle=0.5) as backend:
+        tools = build_tools(backend)
+        with caplog.at_level(logging.INFO, logger="roboscript.notices"):
+            pose = tools.parse_central_lift_grasp_pose("blue_box", "center")
+        assert any("taking the best grasp of its shape instead" in r.getMessage() for r in caplog.records)
+        resting = backend.ground_truth.box("blue_box").center
+        tools.open_gripper()
+        tools.grasp(pose)
+        tools.close_gripper()
+        tools.attach_object("blue_box")
+        tools.move_in_direction([0, 0, 1], 0.1)
+        assert backend.ground_truth.box("blue_box").center[2] - resting[2] > 0.08

@@ -137,7 +137,8 @@ class ToolAPI:
         its narrower horizontal side (a long object is gripped across, not along its length). ``description``:
         ``'top'`` (fingertips 3 cm below its top) or ``'center'`` (at mid height, as deep as the fingers reach). The
         object must be narrower across than the gripper opens (8 cm on the Panda, 8.5 cm on the UR5e), else
-        GraspError. Returns the grasp Pose for ``grasp()``."""
+        GraspError. Where the hand cannot take it from above (a neighbour in the way), the best grasp of its shape,
+        with a ``[notice]`` line. Returns the grasp Pose for ``grasp()``."""
         return Pose.from_transform(self.grasps.central(self._name(object_name), description))
 
     @tool

@@ -71,10 +71,21 @@ class GraspChooser:
         return -self.gripper.hand_upper[2]
 
     def central(self, name: str, description: str) -> Transform:
-        candidates = central_lift_grasps(
-            self.perception, name, description, self.gripper.max_width, self.base_xy, self.finger_reach
-        )
-        return self.first_reachable(name, candidates, "central lift")
+        """A top-down grasp at the object's middle; where none the arm can take (the hand's end over a neighbour
+        on every side that fits between the fingers), the best grasp of its shape instead, with a notice, as
+        :meth:`horizontal` does: the program asked for a way to pick the object up."""
+        try:
+            candidates = central_lift_grasps(
+                self.perception, name, description, self.gripper.max_width, self.base_xy, self.finger_reach
+            )
+            return self.first_reachable(name, candidates, "central lift")
+        except PlanningError as failure:
+            if name not in self.perception.objects():
+                raise
+            why = str(failure).split("; first failure")[0]
+        pose = self.adaptive(name, GraspPreferences(approach=np.array([0.0, 0.0, -1.0])))
+        notice(f"parse_central_lift_grasp_pose: {why}; taking the best grasp of its shape instead")
+        return pose
 
     def horizontal(self, name: str, approach: np.ndarray | None) -> Transform:
         """A level (or tilted) grasp; for an object none of which the arm can take (a cup whose rim is wider than
