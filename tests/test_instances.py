@@ -160,3 +160,12 @@ def test_objects_are_refined_smallest_in_space_first_however_small_the_images_sh
     instances.append(Instance3D("cube", np.zeros((0, 3)), np.zeros((0, 3)), cube_box, (1,)))
     tray, cube = refine_all(instances, detections, [points], [normals], TABLE)
     assert tray.points[:, 2].max() < TABLE + 0.035 and cube.points[:, 2].max() > TABLE + 0.035
+
+
+def test_an_apple_by_a_bowls_wall_stands_on_its_bottom_not_on_the_rim_seen_beside_it():
+    bottom, rim = TABLE + 0.01, TABLE + 0.06
+    floor = _grid((0.0, 0.02), (-0.03, 0.03), bottom)  # a sliver of the bottom shows beside the apple
+    lip = _grid((-0.06, -0.05), (-0.04, 0.04), rim, step=0.002)  # the rim's top, many points, as close
+    bowl = _instance("bowl", Box3D(np.r_[-0.09, -0.09, TABLE], np.r_[0.09, 0.09, rim]), np.vstack([floor, lip]))
+    seen = Box3D(np.r_[-0.045, -0.035, rim + 0.005], np.r_[0.0, 0.035, rim + 0.04])  # over the rim only
+    assert ground([bowl, _instance("apple", seen)], TABLE)[1].box.lower[2] == pytest.approx(bottom, abs=0.002)

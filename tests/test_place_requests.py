@@ -165,3 +165,18 @@ def test_a_position_over_a_saucer_with_no_room_on_it_is_moved_onto_the_table_bes
         car = gt.box("toy_car")
         assert car.lower[2] < gt.box("table").upper[2] + 0.01  # on the table, beside the saucer
         assert np.linalg.norm(car.center[:2] - saucer[:2]) <= NEAREST_BOUND + 0.02
+
+
+def test_bowls_and_baskets_have_walls_plates_and_saucers_do_not():
+    from roboscript.api import supports
+
+    world = _world([
+        {"name": "white_plate", "type": "white_plate", "position": [0.0, 0.25]},
+        {"name": "pink_saucer", "type": "pink_saucer", "position": [0.0, -0.25]},
+        {"name": "red_bowl", "type": "red_bowl", "position": [0.2, 0.0]},
+        {"name": "basket", "type": "basket", "position": [-0.15, 0.0]},
+    ])  # fmt: skip
+    with MujocoBackend(world, robot="panda", settle=0.5) as backend:
+        perception = build_tools(backend).perception
+        walls = {n: supports.has_walls(perception, supports.holds(perception, n)) for n in perception.objects()}
+        assert walls == {"white_plate": False, "pink_saucer": False, "red_bowl": True, "basket": True}

@@ -125,10 +125,10 @@ class PlaceRequests:
         table = supports.table_top(self.perception)
         if receptacle_name is None:
             under = supports.support_under(self.perception, name, target[:2], np.asarray(half))
-            # Nothing named: where what is under the position has no room (a temporary spot that fell on a
-            # saucer too small for a toy car), the table round it.
+            # Nothing named: where the flat top under the position has no room (a temporary spot that fell on an
+            # occupied saucer), the table round it; a full bowl or drawer is an error (it was meant to go in).
             candidates = [under]
-            if under.region.name != TABLE:
+            if under.region.name != TABLE and not supports.has_walls(self.perception, under.region):
                 candidates.append(supports.support_named(self.perception, name, table))
         else:
             # On the table at a position: anywhere on its top (reach is for the motion planner to judge), not only
@@ -140,7 +140,7 @@ class PlaceRequests:
             spots = _open_side(spots, support.region)
             if spots:
                 return spots
-        support = candidates[-1]
+        support = candidates[-1]  # the widest search: where the nearest free spot is
         farther = free_spots(ring_candidates(target[:2], REPORT_BOUND, self.base_xy), half, yaw, height, support)
         where = f"on {support.region.name!r}"
         nearest = (

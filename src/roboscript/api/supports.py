@@ -83,6 +83,16 @@ def whole_surface(perception: Perception, receptacle: Receptacle) -> Receptacle 
     return Receptacle(receptacle.name, frame, lower, upper)
 
 
+def has_walls(perception: Perception, receptacle: Receptacle) -> bool:
+    """Whether ``receptacle`` holds things within walls (a bowl, a basket, a drawer, a compartment), not on a flat
+    top (a plate, a saucer, a box's top, the table)."""
+    if kind_of(receptacle.name) in ("drawer", "door"):
+        return True
+    if receptacle.name == TABLE:
+        return False
+    return bool(perception.box(receptacle.name).upper[2] - floor_of(receptacle) >= FLAT_RIM)
+
+
 def is_closed_drawer(receptacle: Receptacle) -> bool:
     return kind_of(receptacle.name) == "drawer" and receptacle.upper[0] - receptacle.lower[0] < CLOSED_DRAWER
 

@@ -341,6 +341,7 @@ FLOOR_UPWARD = 0.8  # normal's z above which a point of what it stands on faces 
 FLOOR_TOLERANCE = 0.002  # metres over an object's lowest seen point that a floor beside it may stand
 FLOOR_POINTS = 10  # fewer such points than this: no floor is seen
 FLOOR_LAYER = 0.004  # metres: the thickness of the layer of those points that is the floor
+FLOOR_LAYER_POINTS = 5  # the fewest points such a layer holds (fewer are strays)
 ON_TOP = 0.01  # metres below another's seen top within which an object's lowest seen point stands on that top
 RESTING_GAP = 0.03  # metres over another's seen top within which an object's lowest seen point may rest on it
 HIDDEN_FOOT = 0.06  # metres of an object's underside the cameras may not see (a ball's lower half, a bowl's stem)
@@ -365,10 +366,10 @@ def _on_top_of(instance: Instance3D, other: Instance3D) -> bool:
 
 
 def floor_under(instance: Instance3D, supports: Sequence[Instance3D]) -> float | None:
-    """The height of what ``instance`` stands on, as seen beside it: the densest layer of the upward-facing points of
-    ``supports`` within :data:`FLOOR_REACH` of its footprint and below its lowest seen point (a plate's floor round
-    a box lying on it, a bowl's bottom round the apple in it, a box's top round the block on it); None where too few
-    show."""
+    """The height of what ``instance`` stands on, as seen beside it: the lowest layer of a few of the upward-facing
+    points of ``supports`` within :data:`FLOOR_REACH` of its footprint and below its lowest seen point (a plate's
+    floor round a box lying on it, a bowl's bottom round the apple in it, a box's top round the block on it); None
+    where too few show."""
     box = instance.box
     near = [
         s.points[
@@ -382,10 +383,16 @@ def floor_under(instance: Instance3D, supports: Sequence[Instance3D]) -> float |
     heights = np.concatenate([p[:, 2] for p in near]) if near else np.zeros(0)
     if len(heights) < FLOOR_POINTS:
         return None
-    # The densest layer, not the lowest points: of a box's top that a block on it hides, a thin ring shows, and
-    # two points of the table at the box's foot put the block 4 cm under its top.
-    lower, upper = densest_layer(heights, FLOOR_LAYER)
-    return float(np.median(heights[(heights >= lower) & (heights <= upper)]))
+    # The lowest layer that holds a few points, not the lowest points: of a box's top that a block on it hides, a
+    # thin ring shows, and two points of the table at the box's foot put the block 4 cm under its top. Lowest, not
+    # densest: a bowl's rim round the apple in it may show more than its bottom does.
+    heights = np.sort(heights)
+    within = np.searchsorted(heights, heights + FLOOR_LAYER, side="right") - np.arange(len(heights))
+    layers = np.flatnonzero(within >= FLOOR_LAYER_POINTS)
+    if not len(layers):
+        return None
+    start = int(layers[0])
+    return float(np.median(heights[start : start + int(within[start])]))
 
 
 def ground(instances: Sequence[Instance3D], support: float) -> list[Instance3D]:

@@ -345,8 +345,9 @@ class MotionPlanner:
         way's mouth and goes in along it, as MoveIt's place pipeline approaches (planning into the compartment
         itself ran out of time beside the door)."""
         self._preferred = [*self._preferred[-7:], (pose, np.asarray(q, dtype=float).copy())]
+        self._ways_out = [(known, out) for known, out in self._ways_out[-7:] if not _same(known, pose)]
         if way_out is not None:
-            self._ways_out = [*self._ways_out[-7:], (pose, np.asarray(way_out, dtype=float).copy())]
+            self._ways_out.append((pose, np.asarray(way_out, dtype=float).copy()))
 
     def _preferred_for(self, pose: Transform, consume: bool = False) -> np.ndarray | None:
         """The configuration preferred for ``pose``, if one was chosen and is still free of collisions."""
@@ -418,7 +419,11 @@ class MotionPlanner:
                     way_in = None  # no path to its mouth either: planned to the pose itself, below
             if way_in is not None:
                 self._preferred_for(pose, consume=True)
-                return self.execute(self._from_here(way_in))
+                line = self._from_here(way_in)
+                if self.scene.within_limits(line.min(axis=0)) and self.scene.within_limits(line.max(axis=0)):
+                    return self.execute(line)
+                # Reached its mouth a whole turn about a joint off, the line in would pass a limit: planned in.
+                return self.execute(self.plan_to_joints(way_in[-1], planner))
             path = self.plan_to_pose(pose, planner)
         self._preferred_for(pose, consume=True)
         return self.execute(path)
@@ -427,7 +432,7 @@ class MotionPlanner:
         """The straight line into ``pose`` ending at ``goal`` (the configuration preferred for it), along the way
         out registered with it (:meth:`prefer_goal`), as joint waypoints from its mouth; None where there is none
         or the line is blocked."""
-        way_out = next((out for known, out in self._ways_out if _same(known, pose)), None)
+        way_out = next((out for known, out in reversed(self._ways_out) if _same(known, pose)), None)
         if goal is None or way_out is None:
             return None
         mouth = Transform(pose.position + way_out, pose.quaternion)
