@@ -155,16 +155,15 @@ class Moves:
         of the path that is; all of them where none can (the swing is then as far as the arm goes). At the very
         edge of reach the open fingers stay round the handle: the next motion drags them through it, and a look
         from there cannot see the handle behind the hand."""
-        positions = np.array([self.motion.kinematics.fk(q).position for q in waypoints])
-        steps = np.linalg.norm(np.diff(positions, axis=0), axis=1)
+        poses = [self.motion.kinematics.fk(q) for q in waypoints]
+        steps = np.linalg.norm(np.diff([pose.position for pose in poses], axis=0), axis=1)
         swept = np.concatenate([[0.0], np.cumsum(steps)])
         least = SWING_LEAST / fraction * swept[-1]  # the share of the path a swing must keep
         for index in range(len(waypoints) - 1, 0, -1):
             if swept[index] < least:
                 break
-            q = waypoints[index]
-            back = -self.motion.kinematics.fk(q).rotation[:, 2]
-            if self.motion.reach_along(q, back, RETREAT_AFTER_RELEASE) >= RETREAT_AFTER_RELEASE - 1e-3:
+            back = -poses[index].rotation[:, 2]
+            if self.motion.reach_along(waypoints[index], back, RETREAT_AFTER_RELEASE) >= RETREAT_AFTER_RELEASE - 1e-3:
                 return waypoints[: index + 1], fraction * swept[index] / max(swept[-1], 1e-9)
         return waypoints, fraction
 

@@ -387,12 +387,12 @@ def floor_under(instance: Instance3D, supports: Sequence[Instance3D]) -> float |
     # thin ring shows, and two points of the table at the box's foot put the block 4 cm under its top. Lowest, not
     # densest: a bowl's rim round the apple in it may show more than its bottom does.
     heights = np.sort(heights)
-    within = np.searchsorted(heights, heights + FLOOR_LAYER, side="right") - np.arange(len(heights))
-    layers = np.flatnonzero(within >= FLOOR_LAYER_POINTS)
+    in_layer = np.searchsorted(heights, heights + FLOOR_LAYER, side="right") - np.arange(len(heights))
+    layers = np.flatnonzero(in_layer >= FLOOR_LAYER_POINTS)
     if not len(layers):
         return None
     start = int(layers[0])
-    return float(np.median(heights[start : start + int(within[start])]))
+    return float(np.median(heights[start : start + int(in_layer[start])]))
 
 
 def ground(instances: Sequence[Instance3D], support: float) -> list[Instance3D]:

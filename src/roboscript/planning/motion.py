@@ -319,14 +319,10 @@ class MotionPlanner:
         """Moves in along the option's straight line to ``target``; where it had none, or the line is blocked now
         (the world moved), straight if that has become feasible, else planned."""
         goal, line = option
-        q = self.sync()
-        if line is not None:
-            # The path here may have ended at the line's start turned a whole turn about a joint (planner.py).
-            line = line + whole_turns(line[0], q)
-            line[0] = q
-            if self.scene.within_limits(line.min(axis=0)) and self.scene.within_limits(line.max(axis=0)):
-                self.execute(line)
-                return
+        here = None if line is None else self._from_here(line)
+        if here is not None:
+            self.execute(here)
+            return
         straight = self.cartesian([target])
         self.execute(straight.waypoints if straight.fraction >= 1.0 else self.plan_to_joints(goal))
 
@@ -419,11 +415,9 @@ class MotionPlanner:
                     way_in = None  # no path to its mouth either: planned to the pose itself, below
             if way_in is not None:
                 self._preferred_for(pose, consume=True)
-                line = self._from_here(way_in)
-                if self.scene.within_limits(line.min(axis=0)) and self.scene.within_limits(line.max(axis=0)):
-                    return self.execute(line)
+                here = self._from_here(way_in)
                 # Reached its mouth a whole turn about a joint off, the line in would pass a limit: planned in.
-                return self.execute(self.plan_to_joints(way_in[-1], planner))
+                return self.execute(here if here is not None else self.plan_to_joints(way_in[-1], planner))
             path = self.plan_to_pose(pose, planner)
         self._preferred_for(pose, consume=True)
         return self.execute(path)
@@ -439,13 +433,14 @@ class MotionPlanner:
         line = self.cartesian([mouth], start=goal)
         return line.waypoints[::-1].copy() if line.fraction >= 1.0 and len(line.waypoints) > 1 else None
 
-    def _from_here(self, line: np.ndarray) -> np.ndarray:
+    def _from_here(self, line: np.ndarray) -> np.ndarray | None:
         """``line`` starting from the present configuration, which the motion to its start reached (perhaps a
-        whole turn about a joint away: planner.py)."""
+        whole turn about a joint away: planner.py); None where it then passes a joint limit."""
         q = self.sync()
         line = line + whole_turns(line[0], q)
         line[0] = q
-        return line
+        within = self.scene.within_limits(line.min(axis=0)) and self.scene.within_limits(line.max(axis=0))
+        return line if within else None
 
     def follow(self, poses: Sequence[Transform], min_fraction: float = 1.0) -> ExecutionReport:
         """Executes a Cartesian path through ``poses``; raises if less than ``min_fraction`` is achievable."""
