@@ -80,12 +80,7 @@ class GraspChooser:
             )
             return self.first_reachable(name, candidates, "central lift")
         except PlanningError as failure:
-            if name not in self.perception.objects():
-                raise
-            why = str(failure).split("; first failure")[0]
-        pose = self.adaptive(name, GraspPreferences(approach=np.array([0.0, 0.0, -1.0])))
-        notice(f"parse_central_lift_grasp_pose: {why}; taking the best grasp of its shape instead")
-        return pose
+            return self._shape_instead(name, failure, "parse_central_lift_grasp_pose", "")
 
     def horizontal(self, name: str, approach: np.ndarray | None) -> Transform:
         """A level (or tilted) grasp; for an object none of which the arm can take (a cup whose rim is wider than
@@ -100,12 +95,18 @@ class GraspChooser:
                 return self.first_reachable(name, candidates, "horizontal")
             except (GraspError, PlanningError) as exc:
                 failure = failure or exc
+        # From above: a rim taken from the side leaves a finger hooked inside the cup when it is let go.
+        return self._shape_instead(name, failure, "parse_horizontal_grasp_pose", " from above")
+
+    def _shape_instead(self, name: str, failure: GraspError | PlanningError, tool: str, said: str) -> Transform:
+        """The best grasp of the object's shape, approached from above, where ``tool``'s own grasps failed, with a
+        notice that says why (``said``: how the notice names the approach); ``failure`` again for what is no
+        object (a handle)."""
         if name not in self.perception.objects():
             raise failure
         why = str(failure).split("; first failure")[0]
-        # From above: a rim taken from the side leaves a finger hooked inside the cup when it is let go.
         pose = self.adaptive(name, GraspPreferences(approach=np.array([0.0, 0.0, -1.0])))
-        notice(f"parse_horizontal_grasp_pose: {why}; taking the best grasp of its shape from above instead")
+        notice(f"{tool}: {why}; taking the best grasp of its shape{said} instead")
         return pose
 
     def adaptive(self, name: str, preferences: GraspPreferences) -> Transform:
