@@ -14,6 +14,7 @@ from roboscript.grasping.detection import (
     detect_grasps,
     falls_free,
     object_middle,
+    pad_contact,
 )
 from roboscript.perception.base import ObjectPoints, Receptacle
 
@@ -267,3 +268,34 @@ def test_no_point_beyond_the_gripper_reach_can_collide():
         for width in (0.0, 0.04, gripper.max_width - 0.003):
             assert not collides(np.eye(3), np.zeros(3), points[distance > reach], gripper, width)
             assert collides(np.eye(3), np.zeros(3), points[distance < reach], gripper, width)
+
+
+def cylinder_surface(center_xy, radius, z_low, z_high, spacing=0.003):
+    """Points and outward normals on a vertical cylinder's side and its top."""
+    points, normals = [], []
+    turns = max(int(2 * math.pi * radius / spacing), 8)
+    for z in np.arange(z_low, z_high + 1e-9, spacing):
+        for k in range(turns):
+            a = 2 * math.pi * k / turns
+            n = np.array([math.cos(a), math.sin(a), 0.0])
+            points.append([center_xy[0] + radius * n[0], center_xy[1] + radius * n[1], z])
+            normals.append(n)
+    for r in np.arange(0.0, radius, spacing):
+        for k in range(max(int(2 * math.pi * r / spacing), 1)):
+            a = 2 * math.pi * k / max(int(2 * math.pi * r / spacing), 1)
+            points.append([center_xy[0] + r * math.cos(a), center_xy[1] + r * math.sin(a), z_high])
+            normals.append([0.0, 0.0, 1.0])
+    return np.array(points), np.array(normals)
+
+
+def test_only_what_lies_against_the_pads_counts_as_held():
+    # A 4 cm bottle body up to 6 cm, a 2.4 cm neck above it: held at the shoulder, the pads touch the body's top
+    # centimetre only; the neck between them is not held.
+    body, _ = cylinder_surface((0.0, 0.0), 0.02, 0.82, 0.88)
+    neck, _ = cylinder_surface((0.0, 0.0), 0.012, 0.88, 0.90)
+    points = np.vstack([body, neck])
+    down = np.array([[1.0, 0.0, 0.0], [0.0, -1.0, 0.0], [0.0, 0.0, -1.0]])  # approach -z, closing along -y
+    at_shoulder = pad_contact(down, np.array([0.0, 0.0, 0.89]), points, 0.04)
+    lower = pad_contact(down, np.array([0.0, 0.0, 0.86]), points, 0.04)
+    assert at_shoulder < 0.012
+    assert lower > 0.02

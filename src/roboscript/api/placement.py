@@ -35,6 +35,8 @@ PLACE_IK_WIDE = (24, 200)  # the same where the quick screen reached no spot
 PLACE_RAISE_LIMIT = 0.04  # metres a place pose is raised at most when the held object has sunk in the hand
 # How much higher than resting a held object is tried, lowest first: a longer drop topples tall things.
 PLACE_LIFTS = (0.0, 0.01, 0.02, 0.05, 0.1)
+PLACE_LOW_LIFTS = PLACE_LIFTS[:3]  # tried first on the first few spots (PLACE_LOW_SPOTS)
+PLACE_LOW_SPOTS = 4
 PLACE_RETREAT = 0.10  # metres a place pose should leave straight above it: the customary pre-place approach and retreat
 # Where no upright pose reaches any spot (a drawer beneath another, at the edge of the arm's reach), the hand leans
 # this far (degrees) toward the spot's open side, the held object with it, and lets go of it there: an object
@@ -68,6 +70,7 @@ class _Search:
     room: float = 0.0
     tried: int = 0
     errors: list[str] = dataclasses.field(default_factory=list)
+    screens: int = PLACE_PATH_SCREENS  # planner runs left to check that a pose can be reached
 
 
 class Placer:
@@ -167,53 +170,66 @@ class Placer:
         budget: int = PLACE_IK_BUDGET,
         retreat: np.ndarray = UP,
     ) -> _Search:
-        """Spots in order (skipping near-repeats of spots that failed), for a collision-free IK from which the hand can
-        also retreat straight up (:data:`PLACE_RETREAT`; along ``retreat``), as a place's retreat would: a hand put down
-        with a link against the cabinet has no way out but through what it let go. Each spot is tried with the object
-        turned as the spot allows (round, or any quarter turn at a position), and released higher up so the hand clears
-        a deep container's walls; ``leans``: the angles (degrees) the hand may lean toward the spot's open side, in
+        """Spots in order (skipping near-repeats), for a collision-free IK from which the hand can also retreat
+        straight up (:data:`PLACE_RETREAT`; along ``retreat``), as a place's retreat would: a hand put down with a
+        link against the cabinet has no way out but through what it let go. Each spot is tried with the object
+        turned as the spot allows (round, or any quarter turn at a position), and released higher up so the hand
+        clears a deep container's walls, but first low (:data:`PLACE_LOW_LIFTS`) on the first
+        :data:`PLACE_LOW_SPOTS`; ``leans``: the angles (degrees) the hand may lean toward the spot's open side, in
         order, at each height. Of the turns and IK branches that work at a height, the one nearest the arm's present
         configuration is taken (a hand kept facing one way can make the arm swing round behind itself), provided one
         planner run finds a path to it (:data:`PLACE_PATH_SCREENS` runs at most). The wide ``search``
         (:data:`PLACE_IK_WIDE`) is a last resort and stops at the first spot it reaches."""
         q = self.motion.sync()
         found = _Search()
-        tried: list[PlacementSpot] = []
-        screens = PLACE_PATH_SCREENS
-        done = False
-        for spot in spots:
-            if budget <= 0 or done:
-                break
-            if any(np.linalg.norm(spot.center - t.center) < spacing and _same_turn(spot.yaw, t.yaw) for t in tried):
-                continue
-            tried.append(spot)
-            found.tried += 1
-            for lift, lean in [(lift, lean) for lift in PLACE_LIFTS for lean in leans]:
-                reached = self._place_options(carried, spot, lift, lean, q, found.errors, search)
-                budget -= len(spot.turns)
-                options = [(self._retreat_room(pose, g, retreat), pose, g) for pose, goals in reached for g in goals]
-                for room, pose, g in options:
-                    if found.longest is None or room > found.room + 1e-3:
-                        found.room, found.longest = room, (pose, g, spot)
-                if search == PLACE_IK_WIDE:
-                    done = bool(options)
-                else:
-                    leaving = [(pose, g, spot) for room, pose, g in options if room >= PLACE_RETREAT - 1e-3]
-                    leaving.sort(key=lambda c: float(np.sum((c[1] - q) ** 2)))
-                    for pose, goal, _ in leaving[:screens]:
-                        screens -= 1
-                        # As a grasp's pre-grasp is screened: a configuration IK reaches may be walled in (a UR5e
-                        # branch turned back over its shoulder beside the basket), and no path reaches it.
-                        if self.motion.connects(q, goal):
-                            found.leaving = (pose, goal, spot)
-                            return found
-                    # Leaving the full retreat though no path was found to it in one planner run: the motion's
-                    # own retries may find one.
-                    found.leaving = found.leaving or (leaving[0] if leaving else None)
-                    done = bool(leaving) and screens <= 0
-                if done or budget <= 0:
-                    break
+        distinct = _distinct(spots, spacing)
+        tried: set[tuple[int, float, float]] = set()
+        # A short drop on one of the first few spots beats a long one on the first: a cup let go 5 cm above a plate
+        # (the hand's first spot walled in lower down by the arm's own links) caught on the opening fingers.
+        for chosen, lifts in ((distinct[:PLACE_LOW_SPOTS], PLACE_LOW_LIFTS), (distinct, PLACE_LIFTS)):
+            for index, spot in enumerate(chosen):
+                found.tried = max(found.tried, index + 1)
+                for lift, lean in [(lift, lean) for lift in lifts for lean in leans]:
+                    if budget <= 0 or (index, lift, lean) in tried:
+                        continue
+                    tried.add((index, lift, lean))
+                    budget -= len(spot.turns)
+                    if self._try(found, carried, spot, (lift, lean), q, search, retreat):
+                        return found
         return found
+
+    def _try(
+        self,
+        found: _Search,
+        carried: _Carried,
+        spot: PlacementSpot,
+        lift_lean: tuple[float, float],
+        q: np.ndarray,
+        search: tuple[int, int],
+        retreat: np.ndarray,
+    ) -> bool:
+        """One spot at one height and lean (see :meth:`_search`), what it reaches added to ``found``; whether the
+        search is over."""
+        reached = self._place_options(carried, spot, *lift_lean, q, found.errors, search)
+        options = [(self._retreat_room(pose, g, retreat), pose, g) for pose, goals in reached for g in goals]
+        for room, pose, g in options:
+            if found.longest is None or room > found.room + 1e-3:
+                found.room, found.longest = room, (pose, g, spot)
+        if search == PLACE_IK_WIDE:
+            return bool(options)
+        leaving = [(pose, g, spot) for room, pose, g in options if room >= PLACE_RETREAT - 1e-3]
+        leaving.sort(key=lambda c: float(np.sum((c[1] - q) ** 2)))
+        for pose, goal, _ in leaving[: found.screens]:
+            found.screens -= 1
+            # As a grasp's pre-grasp is screened: a configuration IK reaches may be walled in (a UR5e branch turned
+            # back over its shoulder beside the basket), and no path reaches it.
+            if self.motion.connects(q, goal):
+                found.leaving = (pose, goal, spot)
+                return True
+        # Leaving the full retreat though no path was found to it in one planner run: the motion's own retries may
+        # find one.
+        found.leaving = found.leaving or (leaving[0] if leaving else None)
+        return bool(leaving) and found.screens <= 0
 
     def _place_options(
         self,
@@ -270,6 +286,16 @@ def _levelling(tcp: Transform) -> tuple[float, ...]:
     if pitch < LEVEL_PITCH:
         return ()
     return tuple(sorted({min(lean, pitch) for lean in (*PLACE_LEANS, pitch)}))
+
+
+def _distinct(spots: list[PlacementSpot], spacing: float) -> list[PlacementSpot]:
+    """The spots in order, without those within ``spacing`` of an earlier one turned the same way: a spot that
+    near one that failed would fail the same way."""
+    out: list[PlacementSpot] = []
+    for spot in spots:
+        if not any(np.linalg.norm(spot.center - t.center) < spacing and _same_turn(spot.yaw, t.yaw) for t in out):
+            out.append(spot)
+    return out
 
 
 def _same_turn(a: float, b: float) -> bool:

@@ -68,6 +68,7 @@ UPWARD = 0.7  # normal's z above which a point faces up (within 45 degrees)
 MIN_UPWARD_POINTS = 20  # fewer upward-facing points than this: the middle is taken over all points
 # A grasp whose object, let go, would not fall free of the open fingers ranks behind those that do (see falls_free).
 UNCLEAN_RELEASE_PENALTY = 1.5
+PAD_FACE = 0.004  # metres either side of a closed pad's face where the object's surface counts as touching it
 FRICTION_CONE = math.atan(0.5)  # a friction coefficient of 0.5, cautious for cardboard and plastic
 
 
@@ -198,9 +199,13 @@ def falls_free(
 
 
 def pad_contact(rotation: np.ndarray, tcp: np.ndarray, points: np.ndarray, width: float, pad: float = 0.025) -> float:
-    """How far, along the approach, the object extends between the finger pads (metres)."""
+    """How far, along the approach, the object's surface lies against the finger pads (metres): only points
+    within :data:`PAD_FACE` of where the closed pads' faces are count. A bottle held at its shoulder has its
+    narrower neck between the pads too, but the pads touch only the body's top centimetre; counted whole, that grip
+    looked as good as one lower down, and the bottle, held by its edge, sprang out of the opening hand."""
     local = (points - tcp) @ rotation
-    between = (np.abs(local[:, 0]) < 0.01) & (np.abs(local[:, 1]) < width / 2 + 0.004)
+    across = np.abs(local[:, 1])
+    between = (np.abs(local[:, 0]) < 0.01) & (across < width / 2 + PAD_FACE) & (across > width / 2 - PAD_FACE)
     between &= (local[:, 2] > -pad) & (local[:, 2] < 0.012)
     if not between.any():
         return 0.0
