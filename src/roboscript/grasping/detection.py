@@ -1,7 +1,8 @@
 """An adaptive 6-DoF grasp detector that needs no learned weights.
 
 Antipodal sampling over an object's observed points: a seed point's normal gives a closing line; a point on the
-far side of the object along that line whose normal is roughly opposite closes the pair. Each pair becomes grasps
+far side of the object along that line whose normal is roughly opposite closes the pair. An open container's rim
+adds pairs across its wall (:mod:`roboscript.grasping.rims`). Each pair becomes grasps
 with several approach directions perpendicular to its closing axis. Candidates are scored by contact quality (how
 well both normals lie inside the friction cone), rejected where the fingers (closing from fully open) or the hand
 behind them would hit observed points, and ranked by the caller's preferences (position, approach direction, plane
@@ -16,6 +17,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from roboscript.geometry import Transform
+from roboscript.grasping.rims import rim_pairs
 from roboscript.perception.base import ObjectPoints
 from roboscript.phases import timed
 
@@ -230,7 +232,7 @@ def detect_grasps(
     """
     preferences = preferences or GraspPreferences()
     rng = np.random.default_rng(seed)
-    pairs = antipodal_pairs(cloud, gripper, rng)
+    pairs = antipodal_pairs(cloud, gripper, rng) + rim_pairs(cloud, gripper.max_width - WIDTH_MARGIN)
     if not pairs:
         return []
     centre_of_object, radius = object_middle(cloud)
