@@ -467,8 +467,9 @@ def test_where_no_upright_pose_reaches_a_spot_the_hand_leans_toward_the_open_sid
 
         tools.motion.ik_choices = refuses_upright
         leaning = tools.parse_place_pose("plum", "footed_bowl").to_transform()
-        tilt = np.degrees(np.arccos(np.clip(leaning.rotation[:, 2] @ held.rotation[:, 2], -1, 1)))
-        assert tilt == pytest.approx(PLACE_LEANS[0], abs=1.0)
+        # The lean turns the hand as held, which is itself a few degrees off vertical and may be turned half round
+        # about the vertical first (the plum may face either way): off vertical by the lean, give or take that.
+        assert off_vertical(leaning) == pytest.approx(PLACE_LEANS[0], abs=off_vertical(held) + 1.0)
         back = -leaning.rotation[:, 2]  # from the TCP up the hand
         to_base = tools.placer.base_xy - leaning.position[:2]
         assert back[:2] @ to_base > 0, "the top of the hand leans toward the robot"
