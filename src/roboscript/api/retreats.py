@@ -86,10 +86,15 @@ class Retreats:
         # Away from what was let go is back along the approach, or up where the hand came from above. Fingers
         # that gripped from the side, or tilted, are drawn out first: rising, they dragged a cup let go in a basket
         # or a drawer up with them (a UR5e's open fingers clear a cup's rim by half a millimetre each side).
+        # Tilted 39 degrees, the hand rising straight up (within the 60 degrees of any own retreat) hooked a
+        # UR5e's fingers under a cup's rim all the same: after a release from the side or tilted, only a motion
+        # within 20 degrees of backing out is the program's own.
         from_above = float(pending.direction @ UP) > FROM_ABOVE
-        away = [pending.direction, UP] if pending.kind == "release" and from_above else [pending.direction]
-        long_enough = length >= pending.distance or (shorter and pending.kind == "release")
-        if length > 0.0 and long_enough and any(float(a @ motion) / length > OWN_RETREAT for a in away):
+        release = pending.kind == "release"
+        away = [pending.direction, UP] if release and from_above else [pending.direction]
+        cone = FROM_ABOVE if release and not from_above else OWN_RETREAT
+        long_enough = length >= pending.distance or (shorter and release)
+        if length > 0.0 and long_enough and any(float(a @ motion) / length > cone for a in away):
             return pending
         self.leave_where_started()
         self.motion.retreat(pending.direction, pending.distance)
