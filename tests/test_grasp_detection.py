@@ -3,6 +3,7 @@
 import math
 
 import numpy as np
+import pytest
 
 from roboscript.api.spots import Footprint, fits, gap, spots_in_receptacle
 from roboscript.geometry import Box3D, Transform
@@ -299,3 +300,6 @@ def test_only_what_lies_against_the_pads_counts_as_held():
     lower = pad_contact(down, np.array([0.0, 0.0, 0.86]), points, 0.04)
     assert at_shoulder < 0.012
     assert lower > 0.02
+    # A box grasp closes from the full opening: the pads stop where the object is widest, and what lies there is
+    # held all the same (counted against the opening's faces, a banana held across its middle counted as nothing).
+    assert pad_contact(down, np.array([0.0, 0.0, 0.86]), points, 0.077) == pytest.approx(lower, abs=0.002)

@@ -37,6 +37,7 @@ PLACE_RAISE_LIMIT = 0.04  # metres a place pose is raised at most when the held 
 PLACE_LIFTS = (0.0, 0.01, 0.02, 0.05, 0.1)
 PLACE_LOW_LIFTS = PLACE_LIFTS[:3]  # tried first on the first few spots (PLACE_LOW_SPOTS)
 PLACE_LOW_SPOTS = 4
+PLACE_LOW_RADIUS = 0.03  # metres from the first spot within which those spots lie
 PLACE_RETREAT = 0.10  # metres a place pose should leave straight above it: the customary pre-place approach and retreat
 # Where no upright pose reaches any spot (a drawer beneath another, at the edge of the arm's reach), the hand leans
 # this far (degrees) toward the spot's open side, the held object with it, and lets go of it there: an object
@@ -175,19 +176,28 @@ class Placer:
         link against the cabinet has no way out but through what it let go. Each spot is tried with the object
         turned as the spot allows (round, or any quarter turn at a position), and released higher up so the hand
         clears a deep container's walls, but first low (:data:`PLACE_LOW_LIFTS`) on the first
-        :data:`PLACE_LOW_SPOTS`; ``leans``: the angles (degrees) the hand may lean toward the spot's open side, in
-        order, at each height. Of the turns and IK branches that work at a height, the one nearest the arm's present
-        configuration is taken (a hand kept facing one way can make the arm swing round behind itself), provided one
-        planner run finds a path to it (:data:`PLACE_PATH_SCREENS` runs at most). The wide ``search``
-        (:data:`PLACE_IK_WIDE`) is a last resort and stops at the first spot it reaches."""
+        :data:`PLACE_LOW_SPOTS` within :data:`PLACE_LOW_RADIUS` of the first one; ``leans``: the angles (degrees)
+        the hand may lean toward the spot's open side, in order, at each height. Of the turns and IK branches that
+        work at a height, the one nearest the arm's present configuration is taken (a hand kept facing one way can
+        make the arm swing round behind itself), provided one planner run finds a path to it
+        (:data:`PLACE_PATH_SCREENS` runs at most). The wide ``search`` (:data:`PLACE_IK_WIDE`) is a last resort and
+        stops at the first spot it reaches."""
         q = self.motion.sync()
         found = _Search()
         distinct = _distinct(spots, spacing)
         tried: set[tuple[int, float, float]] = set()
         # A short drop on one of the first few spots beats a long one on the first: a cup let go 5 cm above a plate
         # (the hand's first spot walled in lower down by the arm's own links) caught on the opening fingers.
-        for chosen, lifts in ((distinct[:PLACE_LOW_SPOTS], PLACE_LOW_LIFTS), (distinct, PLACE_LIFTS)):
-            for index, spot in enumerate(chosen):
+        # Not far off, though: beyond a few centimetres the packing order counts for more (a gelatin box put 6 cm
+        # into a basket's middle left no room for the last cup).
+        beside = [
+            k
+            for k in range(min(PLACE_LOW_SPOTS, len(distinct)))
+            if _apart(distinct[k], distinct[0]) <= PLACE_LOW_RADIUS
+        ]
+        for indices, lifts in ((beside, PLACE_LOW_LIFTS), (range(len(distinct)), PLACE_LIFTS)):
+            for index in indices:
+                spot = distinct[index]
                 found.tried = max(found.tried, index + 1)
                 for lift, lean in [(lift, lean) for lift in lifts for lean in leans]:
                     if budget <= 0 or (index, lift, lean) in tried:
@@ -296,6 +306,10 @@ def _distinct(spots: list[PlacementSpot], spacing: float) -> list[PlacementSpot]
         if not any(np.linalg.norm(spot.center - t.center) < spacing and _same_turn(spot.yaw, t.yaw) for t in out):
             out.append(spot)
     return out
+
+
+def _apart(a: PlacementSpot, b: PlacementSpot) -> float:
+    return float(np.linalg.norm(a.center[:2] - b.center[:2]))
 
 
 def _same_turn(a: float, b: float) -> bool:

@@ -201,17 +201,23 @@ def falls_free(
 
 
 def pad_contact(rotation: np.ndarray, tcp: np.ndarray, points: np.ndarray, width: float, pad: float = 0.025) -> float:
-    """How far, along the approach, the object's surface lies against the finger pads (metres): only points
-    within :data:`PAD_FACE` of where the closed pads' faces are count. A bottle held at its shoulder has its
-    narrower neck between the pads too, but the pads touch only the body's top centimetre; counted whole, that grip
-    looked as good as one lower down, and the bottle, held by its edge, sprang out of the opening hand."""
+    """How far, along the approach, the object's surface lies against the finger pads (metres). The pads, closing
+    from ``width`` (the opening a grasp needs, or the full opening for a box grasp), stop at the object's widest
+    points on each side; only points within :data:`PAD_FACE` of those count. A bottle held at its shoulder has
+    its narrower neck between the pads too, but the pads touch only the body's top centimetre; counted whole, that
+    grip looked as good as one lower down, and the bottle, held by its edge, sprang out of the opening hand."""
     local = (points - tcp) @ rotation
-    across = np.abs(local[:, 1])
-    between = (np.abs(local[:, 0]) < 0.01) & (across < width / 2 + PAD_FACE) & (across > width / 2 - PAD_FACE)
+    between = (np.abs(local[:, 0]) < 0.01) & (np.abs(local[:, 1]) < width / 2 + PAD_FACE)
     between &= (local[:, 2] > -pad) & (local[:, 2] < 0.012)
     if not between.any():
         return 0.0
-    z = local[between, 2]
+    across, along = local[between, 1], local[between, 2]
+    touching = np.zeros(len(across), dtype=bool)
+    for side in (across >= 0.0, across < 0.0):
+        if side.any():
+            face = np.abs(across[side]).max()
+            touching[side] = np.abs(across[side]) > face - PAD_FACE
+    z = along[touching]
     return float(z.max() - z.min())
 
 
