@@ -19,9 +19,10 @@ Rules:
 - Refer to objects by the names in the query. Parts of furniture are numbered from the top down:
   `cabinet.drawer_0` is the top drawer, `cabinet.door_0` the top door, and `cabinet.handle_k` is the handle on the
   k-th row from the top, drawers and doors counted together (in a cabinet of two drawers above a door,
-  `cabinet.handle_1` is the second drawer's and `cabinet.handle_2` the door's). The table and the furniture are
-  objects too (`get_3d_bbox('table')`, `parse_place_pose(name, 'table')`), and `get_object_name_list()` lists
-  them: leave out `table`, `cabinet` and its parts when you mean the things on the table.
+  `cabinet.handle_1` is the second drawer's and `cabinet.handle_2` the door's); the query lists a cabinet's drawers
+  and doors in that order, from the top. The table and the furniture are objects too (`get_3d_bbox('table')`,
+  `parse_place_pose(name, 'table')`), and `get_object_name_list()` lists them: leave out `table`, `cabinet` and
+  its parts when you mean the things on the table.
 - Plates, saucers, bowls and baskets stay where they are: things go in or on them, and the gripper cannot pick
   them up.
 - Positions are in metres in the robot's frame: x forward, y left, z up.
