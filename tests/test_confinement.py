@@ -253,3 +253,42 @@ def test_what_a_tool_noticed_on_the_programs_behalf_is_in_its_output_and_never_p
     assert result.outcome is Outcome.OK, result
     assert result.output == "[notice] retreat: backed off 0.030 m of 0.060 m: the rest is out of reach\nafter\n"
     assert "retreat" not in capsys.readouterr().out
+
+
+def test_a_program_catches_the_tools_errors_by_the_names_their_doc_strings_give():
+    # "GraspError where no grasp fits": a program's `except GraspError:` raised NameError just when the grasp
+    # failed. The names are the program's own classes, related as the tools' are: PlanningError catches an IKError
+    # and a planner time-out alike, FailureError any failure, and a builtin base still works.
+    from roboscript.api.program_errors import PROGRAM_ERRORS
+    from roboscript.grasping.heuristics import GraspError
+    from roboscript.planning.errors import IKError, PlannerTimeoutError
+
+    def grasp_it():
+        raise GraspError("no grasp fits")
+
+    def reach():
+        raise IKError([0.1, 0.2, 0.3], 0.05, 0.0, "out of reach")
+
+    def plan():
+        raise PlannerTimeoutError("RRTConnect", 1.0)
+
+    program = """
+caught = []
+for tool, kind in ((grasp_it, GraspError), (reach, PlanningError), (plan, PlanningError), (grasp_it, FailureError),
+                   (grasp_it, ValueError)):
+    try:
+        tool()
+    except kind as error:
+        caught.append(kind.__name__)  # not caught: the program fails
+try:
+    raise PlacementError('made by the program')
+except RuntimeError as error:
+    caught.append(str(error))
+print(caught)
+"""
+    namespace = {"Pose": Pose, "grasp_it": grasp_it, "reach": reach, "plan": plan, **PROGRAM_ERRORS}
+    result = run_program(program, namespace, LIMITS, forwarded=["grasp_it", "reach", "plan"])
+    assert result.outcome is Outcome.OK, result
+    assert result.output == (
+        "['GraspError', 'PlanningError', 'PlanningError', 'FailureError', 'ValueError', 'made by the program']\n"
+    )

@@ -19,6 +19,7 @@ from roboscript.api.joints import JOINT_TYPES, joint_report
 from roboscript.api.moves import Moves
 from roboscript.api.placement import Placer
 from roboscript.api.pose import Pose, pose_argument
+from roboscript.api.program_errors import PROGRAM_ERRORS
 from roboscript.api.retreats import Retreats
 from roboscript.api.signature import tool
 from roboscript.api.spots import DROP
@@ -67,8 +68,8 @@ class ToolAPI:
         )
 
     def namespace(self) -> dict[str, object]:
-        """The names a program may use: every tool, ``np`` and ``Pose``."""
-        return {**{name: getattr(self, name) for name in self.TOOL_NAMES}, "np": np, "Pose": Pose}
+        """The names a program may use: every tool, ``np``, ``Pose`` and the errors it may catch."""
+        return {**{name: getattr(self, name) for name in self.TOOL_NAMES}, "np": np, "Pose": Pose, **PROGRAM_ERRORS}
 
     # --- perception ------------------------------------------------------------------------------------------
 

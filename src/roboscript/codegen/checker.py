@@ -9,6 +9,7 @@ import inspect
 from collections.abc import Callable, Mapping
 from dataclasses import dataclass
 
+from roboscript.api.program_errors import PROGRAM_ERRORS
 from roboscript.api.signature import ALIASES
 from roboscript.codegen.guard import find_violations
 from roboscript.codegen.outcomes import Outcome
@@ -124,8 +125,9 @@ def undefined_calls(program: str, tools: Mapping[str, inspect.Signature] | None 
 
 
 def _callable_names(tree: ast.AST, tools: Mapping[str, inspect.Signature]) -> set[str]:
-    """Names a program may call: tools, builtins, its own functions, and names it assigns (a lambda, an alias)."""
-    return set(tools) | PROGRAM_BUILTINS | set(_defined_functions(tree)) | _assigned_names(tree)
+    """Names a program may call: tools, builtins, the errors it may raise, its own functions, and names it assigns
+    (a lambda, an alias)."""
+    return set(tools) | PROGRAM_BUILTINS | set(PROGRAM_ERRORS) | set(_defined_functions(tree)) | _assigned_names(tree)
 
 
 def _bind(call: ast.Call, name: str, signature: inspect.Signature, aliases: bool) -> list[Finding]:

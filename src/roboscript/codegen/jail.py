@@ -68,7 +68,8 @@ class _Run:
         self.output = io.StringIO()
         stand_ins = {name: _stand_in(name, fd, self.output) for name in init["tools"]}
         data = wire.from_tree(init["data"])
-        namespace = {**data, "Pose": Pose, "Point": Point, "Quaternion": Quaternion, **stand_ins}
+        errors = protocol.program_error_classes(init.get("errors", {}))
+        namespace = {**data, **errors, "Pose": Pose, "Point": Point, "Quaternion": Quaternion, **stand_ins}
         self.program = init["program"]
         self.scope = program_scope(namespace, self.output)
         _quiet_runtime(self.output)

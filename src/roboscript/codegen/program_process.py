@@ -107,6 +107,7 @@ def run_program(
         "limits": dataclasses.asdict(limits),
         "tools": list(forwarded),
         "data": _data(namespace, forwarded),
+        "errors": protocol.error_family(_errors(namespace)),
         "confine": confine,
         "probe": probe,
     }  # fmt: skip
@@ -127,8 +128,14 @@ def run_program(
             side.end()
 
 
+def _errors(namespace: dict) -> dict[str, type]:
+    """The exception classes of ``namespace``: the program's process makes its own of those names."""
+    return {k: v for k, v in namespace.items() if isinstance(v, type) and issubclass(v, BaseException)}
+
+
 def _data(namespace: dict, forwarded: Collection[str]) -> object:
-    data = {k: v for k, v in namespace.items() if k not in forwarded and k not in JAIL_NAMES}
+    skipped = {*forwarded, *JAIL_NAMES, *_errors(namespace)}
+    data = {k: v for k, v in namespace.items() if k not in skipped}
     try:
         return wire.to_tree(data, protocol.MAX_INIT)
     except wire.WireError as exc:

@@ -11,6 +11,7 @@ from dataclasses import dataclass
 from importlib import resources
 
 from roboscript.api import ToolAPI
+from roboscript.api.program_errors import PROGRAM_ERRORS
 
 RULES = """You write Python programs that make a robot arm with a parallel gripper do a task on a table.
 Rules:
@@ -44,7 +45,11 @@ def tool_reference() -> str:
         indented = "\n".join("    " + line if line else "" for line in doc.splitlines())
         blocks.append(f'def {method.usage}:\n    """\n{indented}\n    """')
     pose = "Pose(): a pose with .position.x/.y/.z and .orientation.x/.y/.z/.w (a unit quaternion), all assignable."
-    return "\n\n".join(blocks) + "\n\n# " + pose
+    errors = (
+        f"Errors a program may catch by name: {', '.join(PROGRAM_ERRORS)}; FailureError is any the robot could not "
+        "do, UsageError any call that was wrong."
+    )
+    return "\n\n".join(blocks) + "\n\n# " + pose + "\n# " + errors
 
 
 def system_prompt() -> str:

@@ -18,7 +18,7 @@ import contextlib
 
 from roboscript.codegen import wire
 from roboscript.codegen.sandbox import shortened
-from roboscript.errors import FailureError, UsageError, error_message
+from roboscript.errors import FailureError, RoboScriptError, UsageError, error_message
 
 MAX_ARGUMENTS = 1024**2  # bytes of one tool call (a path of 1000 poses takes about 150 kB)
 MAX_REPLY = 64 * 1024**2  # bytes of one tool's answer
@@ -55,6 +55,9 @@ def exception_spec(exc: BaseException, message_limit: int) -> dict:
                 attributes[key] = wire.to_tree(value, MAX_ERROR_ATTRIBUTES)
     return {
         "name": cls.__name__[:MAX_EXCEPTION_NAME],
+        # The project's error classes it derives from, nearest first: a program's ``except PlanningError`` catches
+        # an IKError (see :func:`error_family`).
+        "lineage": [c.__name__ for c in cls.__mro__[1:] if issubclass(c, RoboScriptError)][:8],
         "bases": most_specific or ["RuntimeError"],
         "failure": isinstance(exc, FailureError),
         "message": message,
@@ -63,16 +66,59 @@ def exception_spec(exc: BaseException, message_limit: int) -> dict:
 
 
 _made: dict[tuple, type] = {}
+_named: dict[str, type] = {}  # the program's own error classes, by name (see program_error_classes)
+
+
+def error_family(classes: dict[str, type]) -> dict:
+    """How the error classes a program may name (``classes``, by name) derive from one another and from the
+    builtins, for :func:`program_error_classes` to make the program's own: the nearest of them each derives from,
+    the builtins it adds, whether it is the robot's failure."""
+    family = {}
+    for name, cls in classes.items():
+        parents = [n for n, c in classes.items() if c is not cls and issubclass(cls, c)]
+        parents = [p for p in parents if not any(q != p and issubclass(classes[q], classes[p]) for q in parents)]
+        builtins = [c for c in cls.__mro__ if c in _RELAYABLE.values() and c is not Exception]
+        builtins = [b for b in builtins if not any(issubclass(classes[p], b) for p in parents)]
+        builtins = [b for b in builtins if not any(o is not b and issubclass(o, b) for o in builtins)]
+        family[name] = {
+            "parents": parents,
+            "bases": [b.__name__ for b in builtins],
+            "failure": issubclass(cls, FailureError),
+        }
+    return family
+
+
+def program_error_classes(family: dict) -> dict[str, type]:
+    """The program's own error classes from :func:`error_family`'s description, parents first; the tools' errors
+    of those names are raised as these (:func:`rebuild_exception`)."""
+    pending = dict(family)
+    while pending:
+        ready = [n for n, d in pending.items() if all(p in _named for p in d.get("parents", ()))]
+        if not ready:
+            break  # a parent that is not described: those left keep the builtins only
+        for name in ready:
+            described = pending.pop(name)
+            parents = tuple(_named[p] for p in described["parents"])
+            builtins = tuple(_RELAYABLE[b] for b in described.get("bases", ()) if b in _RELAYABLE)
+            _named[name] = _exception_class(name, parents + builtins or (Exception,), described.get("failure") is True)
+    return {name: _named[name] for name in family if name in _named}
 
 
 def rebuild_exception(spec: dict) -> BaseException:
-    """The exception a spec describes, as the program's side raises it."""
+    """The exception a spec describes, as the program's side raises it: of the program's own class of that name,
+    or of a class deriving from the nearest of them it derives from, or from its builtins alone."""
     name = spec.get("name")
     if not isinstance(name, str) or not name.isidentifier() or len(name) > MAX_EXCEPTION_NAME:
         name = "ToolError"
     bases = tuple(_RELAYABLE[b] for b in spec.get("bases", ()) if isinstance(b, str) and b in _RELAYABLE)
     failure = spec.get("failure") is True
-    cls = _exception_class(name, bases or (RuntimeError,), failure)
+    kin = [_named[n] for n in spec.get("lineage", ()) if isinstance(n, str) and n in _named]
+    if name in _named:
+        cls = _named[name]
+    elif kin:
+        cls = _exception_class(name, (kin[0],), failure)
+    else:
+        cls = _exception_class(name, bases or (RuntimeError,), failure)
     message = spec.get("message")
     exc = cls(message if isinstance(message, str) else "")
     attributes = spec.get("attributes")
