@@ -1,0 +1,37 @@
+# Task: exchange the places of the white medication bottle and the apple
+# Plan:
+# 1. Remember both positions before anything moves.
+# 2. Move the bottle aside to a free spot on the table, so that its place is free.
+# 3. Move the apple to where the bottle was.
+# 4. Move the bottle to where the apple was.
+detect_objects()
+bottle_at = get_object_center_position('white_medication_bottle')
+apple_at = get_object_center_position('apple')
+open_gripper()
+grasp(parse_central_lift_grasp_pose(object_name='white_medication_bottle', description='center'))
+close_gripper()
+attach_object('white_medication_bottle')
+move_in_direction([0, 0, 1], 0.1)
+move_to_pose(parse_place_pose(object_name='white_medication_bottle', receptacle_name='table'))
+open_gripper()
+detach_object('white_medication_bottle')
+move_in_direction([0, 0, 1], 0.1)
+open_gripper()
+grasp(parse_central_lift_grasp_pose(object_name='apple', description='center'))
+close_gripper()
+attach_object('apple')
+move_in_direction([0, 0, 1], 0.1)
+move_to_pose(parse_place_pose(object_name='apple', position=bottle_at))
+open_gripper()
+detach_object('apple')
+move_in_direction([0, 0, 1], 0.1)
+detect_objects(object_list=['white_medication_bottle'])
+open_gripper()
+grasp(parse_central_lift_grasp_pose(object_name='white_medication_bottle', description='center'))
+close_gripper()
+attach_object('white_medication_bottle')
+move_in_direction([0, 0, 1], 0.1)
+move_to_pose(parse_place_pose(object_name='white_medication_bottle', position=apple_at))
+open_gripper()
+detach_object('white_medication_bottle')
+move_in_direction([0, 0, 1], 0.1)

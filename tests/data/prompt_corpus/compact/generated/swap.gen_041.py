@@ -1,0 +1,37 @@
+# Task: exchange the places of the gelatin box and the red mug
+# Plan:
+# 1. Remember both positions before anything moves.
+# 2. Move the red mug (adaptive grasp from above, by its rim) aside to a free spot on the table.
+# 3. Move the gelatin box (top-down grasp) to where the mug was.
+# 4. Detect the mug anew, then move it to where the gelatin box was.
+detect_objects()
+box_at = get_object_center_position('gelatin_box')
+mug_at = get_object_center_position('red_mug')
+open_gripper()
+grasp(parse_adaptive_shape_grasp_pose(object_name='red_mug', preferred_approach_direction=[0, 0, -1]))
+close_gripper()
+attach_object('red_mug')
+move_in_direction([0, 0, 1], 0.1)
+move_to_pose(parse_place_pose(object_name='red_mug', receptacle_name='table'))
+open_gripper()
+detach_object('red_mug')
+move_in_direction([0, 0, 1], 0.1)
+open_gripper()
+grasp(parse_central_lift_grasp_pose(object_name='gelatin_box', description='center'))
+close_gripper()
+attach_object('gelatin_box')
+move_in_direction([0, 0, 1], 0.1)
+move_to_pose(parse_place_pose(object_name='gelatin_box', position=mug_at))
+open_gripper()
+detach_object('gelatin_box')
+move_in_direction([0, 0, 1], 0.1)
+detect_objects(object_list=['red_mug'])
+open_gripper()
+grasp(parse_adaptive_shape_grasp_pose(object_name='red_mug', preferred_approach_direction=[0, 0, -1]))
+close_gripper()
+attach_object('red_mug')
+move_in_direction([0, 0, 1], 0.1)
+move_to_pose(parse_place_pose(object_name='red_mug', position=box_at))
+open_gripper()
+detach_object('red_mug')
+move_in_direction([0, 0, 1], 0.1)
