@@ -180,3 +180,16 @@ def test_bowls_and_baskets_have_walls_plates_and_saucers_do_not():
         perception = build_tools(backend).perception
         walls = {n: supports.has_walls(perception, supports.holds(perception, n)) for n in perception.objects()}
         assert walls == {"white_plate": False, "pink_saucer": False, "red_bowl": True, "basket": True}
+
+
+def test_the_doc_string_gives_the_distances_the_placement_keeps():
+    # A program reads how far a thing put aside goes from where it stood, and how far a taken position may move:
+    # the words must be the code's.
+    import inspect
+
+    from roboscript.api.place_requests import ASIDE_AWAY
+    from roboscript.api.tools import ToolAPI
+
+    doc = " ".join(inspect.getdoc(ToolAPI.parse_place_pose).split())
+    assert f"at least {ASIDE_AWAY * 100:.0f} cm from where it stood" in doc
+    assert f"spot within {NEAREST_BOUND * 100:.0f} cm" in doc

@@ -1,4 +1,4 @@
-"""The LLM-facing tool API: ``Pose`` and the perception and motion tools (DESIGN.md §3).
+"""The LLM-facing tool API: ``Pose`` and the perception and motion tools.
 
 ``ToolAPI`` is imported on first use: a program's process needs the pose types alone, without the planner,
 perception and simulator modules the tools stand on.

@@ -25,6 +25,7 @@ DRAWER_WALL_MARGIN = 0.025
 PLACE_IK_BUDGET = 96  # IK screens per parse_place_pose call (each costs a few milliseconds to ~0.1 s)
 PLACE_IK_BUDGET_NEAR = 200  # the same round a program's position, whose spots are tried one ring after another
 # Where things may be put down on the table, from the robot's base: in front of it, clear of it, within reach.
+ASIDE_AWAY = 0.15  # metres at least from where it stood that a thing put aside goes (parse_place_pose says so)
 TABLE_REACH = (np.array([0.15, -0.45]), np.array([0.73, 0.45]))
 ASIDE_CLEARANCE = 0.035  # metres kept around a thing put aside on the table, for the fingers that come for it again
 REPEAT_SPACING = 0.05  # metres: a receptacle's spot this near one that failed is not tried
@@ -185,7 +186,7 @@ class PlaceRequests:
             spots = [
                 s
                 for s in spots
-                if np.linalg.norm(s.center[:2] - box.center[:2]) > 0.15
+                if np.linalg.norm(s.center[:2] - box.center[:2]) > ASIDE_AWAY
                 and np.linalg.norm(s.center[:2] - self.base_xy) >= reach
             ]
             if spots:

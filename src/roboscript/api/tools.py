@@ -1,9 +1,7 @@
-"""The tool API: the functions a generated program calls (DESIGN.md §3), a thin facade over perception, grasping,
-placement and the motion planner of one robot.
-
-Every tool checks its arguments first and raises an error that names what was wrong and what would be valid; a
-failed tool leaves the world as it was (nothing moves before a motion has been planned in full). Each doc-string
-is what the prompt shows an LLM (:mod:`roboscript.codegen.prompt`).
+"""The tool API: the functions a generated program calls, a thin facade over perception, grasping, placement and
+the motion planner of one robot. Every tool checks its arguments first and raises an error that names what was
+wrong and what would be valid; a failed tool leaves the world as it was (nothing moves before a motion has been
+planned in full). Each doc-string is what the prompt shows an LLM (:mod:`roboscript.codegen.prompt`).
 """
 
 from __future__ import annotations
@@ -116,9 +114,9 @@ class ToolAPI:
         """The joint of ``object_name`` (``'cabinet'`` or one of its parts) nearest ``position`` (e.g. a
         handle's centre), of ``type`` ``'any'``, ``'prismatic'`` (drawers) or ``'revolute'`` (doors). Returns a dict:
         ``joint_position`` (a point on the joint's axis), ``joint_axis`` (unit vector), ``type``, ``joint_value``
-        (how far it is open now) and ``joint_upper`` (how far it opens at most); metres for a drawer, degrees for a
-        door. A drawer's axis points out of the cabinet: moving the hand along +axis pulls it open, along -axis pushes
-        it shut. A door's axis is its hinge, directed so that a positive ``angle`` of
+        (how far it is open now, 0 when shut) and ``joint_upper`` (how far it opens at most); metres for a drawer,
+        degrees for a door. A drawer's axis points out of the cabinet: moving the hand along +axis pulls it open,
+        along -axis pushes it shut. A door's axis is its hinge, directed so that a positive ``angle`` of
         ``generate_arc_path_around_joint`` opens it."""
         point = vector(position, "position")
         return joint_report(self.perception, self._name(object_name), point, one_of(type, "type", JOINT_TYPES))
@@ -248,7 +246,8 @@ class ToolAPI:
         ``move_to_pose`` there, then ``open_gripper()``. Give ``receptacle_name``, ``position`` or both:
 
         - ``receptacle_name``: into a container or an open drawer, onto a plate, or on top of any object with a flat
-          top (stacking); ``'table'``: aside on a free spot of the table; a door opened 40 degrees or more
+          top (stacking); ``'table'``: aside on a free spot of the table at least 15 cm from where it stood (its
+          place stays free for another thing); a door opened 40 degrees or more
           (``'cabinet.door_0'``): into the compartment behind it, carried in level: grasp the object with
           ``parse_horizontal_grasp_pose`` first (after ``open_gripper()`` the hand backs out the way it came).
         - ``position`` ``[x, y, z]``: the object's middle goes above (x, y), resting on whatever is there (the table, or

@@ -1,1 +1,1 @@
-"""The benchmark: tasks, checks, metrics, trial runner, results and reference programs (DESIGN.md §5)."""
+"""The benchmark: tasks, checks, metrics, trial runner, results and reference programs."""

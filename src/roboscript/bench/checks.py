@@ -1,4 +1,4 @@
-"""The benchmark's checks, evaluated on ground-truth geometry at the end of a trial (DESIGN.md §5).
+"""The benchmark's checks, evaluated on ground-truth geometry at the end of a trial.
 
 ``in(a, b)``: at least 80% of a's box volume inside b's box (a door's: its compartment's). ``on(a, b)``: a's bottom
 above b's bottom and at least 80% of a's footprint over b's. ``at(a, p)``: a's centre within 0.1 m of p. ``joint(j) >

@@ -1,4 +1,4 @@
-"""The four metrics of the benchmark over a task's trials (DESIGN.md §5)."""
+"""The four metrics of the benchmark over a task's trials."""
 
 from __future__ import annotations
 

@@ -1,5 +1,5 @@
 """Articulation from points: a drawer's sliding axis and a door's hinge line, from the points of its front panel
-and the centre of its handle (DESIGN.md §6, the geometric estimator of the full-perception mode).
+and the centre of its handle (the geometric estimator of the full-perception mode).
 
 A drawer slides along the normal of its front. A door turns about the vertical edge of its front farthest from
 its handle. Both are given in the form ground truth uses (:class:`ArticulationJoint`): the axis point on the

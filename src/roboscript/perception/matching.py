@@ -1,4 +1,4 @@
-"""Cross-view matching: which 2D boxes in different views show the same object (DESIGN.md §6).
+"""Cross-view matching: which 2D boxes in different views show the same object.
 
 The fused points are projected into every view. A box is described by the binary vector of the points that fall
 inside it and are visible there (their depth agrees with the view's depth image, so points hidden behind the

@@ -1,5 +1,5 @@
 """One look at the scene: ground every view in 2D, fuse the views in 3D, match boxes across views, cut out 3D
-instances (DESIGN.md §6). :func:`observe` is the whole chain; each step is its own module."""
+instances. :func:`observe` is the whole chain; each step is its own module."""
 
 from __future__ import annotations
 
