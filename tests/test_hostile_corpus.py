@@ -19,6 +19,7 @@ import numpy as np
 import pytest
 
 from roboscript.api import Pose
+from roboscript.api.program_errors import PROGRAM_ERRORS
 from roboscript.api.tools import ToolAPI
 from roboscript.codegen.checker import check_program
 from roboscript.codegen.outcomes import Outcome
@@ -78,7 +79,7 @@ def _namespace(calls: list) -> dict:
 
         return call
 
-    return {name: tool(name, answer) for name, answer in _answers().items()} | {"Pose": Pose}
+    return {name: tool(name, answer) for name, answer in _answers().items()} | {"Pose": Pose, **PROGRAM_ERRORS}
 
 
 def test_the_corpus_covers_every_class_three_times():
