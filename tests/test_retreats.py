@@ -22,11 +22,14 @@ def test_rising_is_backing_out_only_within_20_degrees_of_a_tilted_release():
     with MujocoBackend("cluttered_2_pick_and_place", robot="ur5e", settle=0.3) as backend:
         retreats = build_tools(backend).retreats
         up = np.array([0.0, 0.0, 0.1])
-        retreats.pending = Owed(_tilted(39.0), 0.03, "release")
+        retreats.pending = Owed(_tilted(39.0), 0.03, "release", of_object=True)
         start = backend.tcp_pose().position
         assert retreats.first(up, shorter=True) is None  # the owed retreat was made first
         moved = backend.tcp_pose().position - start
         assert float(moved @ _tilted(39.0)) > 0.02
         for tilt in (0.0, 15.0):  # from above, or nearly along the way out: the program's move is its retreat
-            retreats.pending = Owed(_tilted(tilt), 0.03, "release")
+            retreats.pending = Owed(_tilted(tilt), 0.03, "release", of_object=True)
             assert retreats.first(up, shorter=True) is not None, tilt
+        # A handle's bar leaves the fingers any way back: within the 60 degrees of any own retreat.
+        retreats.pending = Owed(_tilted(39.0), 0.03, "release", of_object=False)
+        assert retreats.first(up, shorter=True) is not None

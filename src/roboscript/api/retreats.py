@@ -44,6 +44,7 @@ class Owed:
     direction: np.ndarray
     distance: float
     kind: str
+    of_object: bool = False  # a release of an object (not of a drawer's or a door's handle)
 
 
 class Retreats:
@@ -72,7 +73,8 @@ class Retreats:
     def owe_release(self) -> None:
         """After letting go: back along the approach axis, until the fingertips have cleared what was held."""
         back = -self.backend.tcp_pose().rotation[:, 2]
-        self.pending = Owed(back, self._out_from_under(back, self._release_distance(back)), "release")
+        distance = self._out_from_under(back, self._release_distance(back))
+        self.pending = Owed(back, distance, "release", of_object=bool(self.held.objects))
 
     def first(self, motion: np.ndarray | None, shorter: bool = False) -> Owed | None:
         """Makes the owed retreat, unless ``motion`` (the program's next straight move, as a displacement of the
@@ -87,12 +89,14 @@ class Retreats:
         # that gripped from the side, or tilted, are drawn out first: rising, they dragged a cup let go in a basket
         # or a drawer up with them (a UR5e's open fingers clear a cup's rim by half a millimetre each side).
         # Tilted 39 degrees, the hand rising straight up (within the 60 degrees of any own retreat) hooked a
-        # UR5e's fingers under a cup's rim all the same: after a release from the side or tilted, only a motion
-        # within 20 degrees of backing out is the program's own.
+        # UR5e's fingers under a cup's rim all the same: after letting go of an object from the side or tilted,
+        # only a motion within 20 degrees of backing out is the program's own. A handle's bar leaves the fingers
+        # any way back: a program's own step back from a high drawer's handle, along the front's normal and not
+        # the tilted hand's axis, is its retreat (made first, the owed one left its next pose out of reach).
         from_above = float(pending.direction @ UP) > FROM_ABOVE
         release = pending.kind == "release"
         away = [pending.direction, UP] if release and from_above else [pending.direction]
-        cone = FROM_ABOVE if release and not from_above else OWN_RETREAT
+        cone = FROM_ABOVE if release and pending.of_object and not from_above else OWN_RETREAT
         long_enough = length >= pending.distance or (shorter and release)
         if length > 0.0 and long_enough and any(float(a @ motion) / length > cone for a in away):
             return pending
