@@ -200,7 +200,9 @@ class Placer:
                 spot = distinct[index]
                 found.tried = max(found.tried, index + 1)
                 for lift, lean in [(lift, lean) for lift in lifts for lean in leans]:
-                    if budget <= 0 or (index, lift, lean) in tried:
+                    if budget <= 0:
+                        return found
+                    if (index, lift, lean) in tried:
                         continue
                     tried.add((index, lift, lean))
                     budget -= len(spot.turns)
