@@ -114,6 +114,16 @@ def test_without_a_terminal_the_first_motion_needs_yes(tmp_path):
     assert "must be confirmed" in run.stderr and "--yes" in run.stderr
 
 
+def test_an_unreachable_master_ends_the_run_with_its_address_instead_of_retrying(tmp_path):
+    """rospy retries an absent master for ever; the run asks the master itself first, with a time limit."""
+    program = tmp_path / "small.py"
+    program.write_text(SMALL_MOTIONS)
+    run, _ = _exec(program, "http://127.0.0.1:9", "--dry-run")  # port 9 (discard): nothing listens on loopback
+    assert run.returncode == 2, run.stderr
+    assert "no ROS master answers at http://127.0.0.1:9" in run.stderr
+    assert "Will keep trying" not in run.stderr + run.stdout
+
+
 def test_robot_only_options_without_a_robot_say_what_is_missing(tmp_path):
     program = tmp_path / "small.py"
     program.write_text(SMALL_MOTIONS)

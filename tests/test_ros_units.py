@@ -1,8 +1,10 @@
-"""Pieces of the ROS side that need no master: finding a complete camera frame among lagging topics, and the
-tool calls a run's log records."""
+"""Pieces of the ROS side that need no master: finding a complete camera frame among lagging topics, the tool
+calls a run's log records, and runs that end with a clear error when the master or the robot's state is missing."""
 
 from __future__ import annotations
 
+import socket
+import threading
 import time
 from types import SimpleNamespace
 
@@ -12,7 +14,7 @@ from roboscript.backends.driven import DriverBackend
 from roboscript.drivers.base import Driver, DriverError, JointStateReading
 from roboscript.geometry import Transform
 from roboscript.robot_config import load_robot_config
-from roboscript.ros.driver import _newest_complete
+from roboscript.ros.driver import _newest_complete, check_master
 from roboscript.ros.run_log import logged_namespace
 
 
@@ -106,3 +108,64 @@ def test_a_stale_joint_state_is_waited_on_while_the_arm_stands_still_but_not_dur
     with pytest.raises(DriverError, match="the robot's driver or the connection is down"):
         backend.joint_positions()
     assert driver.asked > asked + 1  # it kept asking through its patience before giving up
+
+
+def _in_thread(call) -> BaseException | None:
+    """What ``call`` raised, run in a thread given 30 s (a call that never returns fails the test, not hangs it)."""
+    raised: list[BaseException | None] = []
+
+    def target():
+        try:
+            call()
+            raised.append(None)
+        except BaseException as error:  # handed to the test, whatever it is
+            raised.append(error)
+
+    thread = threading.Thread(target=target, daemon=True)
+    thread.start()
+    thread.join(30.0)
+    assert raised, "the call did not return: it would have hung the run"
+    return raised[0]
+
+
+def test_no_master_on_the_port_is_a_clear_error_not_an_endless_retry():
+    with socket.socket() as probe:  # a port nothing listens on
+        probe.bind(("127.0.0.1", 0))
+        port = probe.getsockname()[1]
+    error = _in_thread(lambda: check_master(f"http://127.0.0.1:{port}"))
+    assert isinstance(error, DriverError)
+    assert f"no ROS master answers at http://127.0.0.1:{port} (ConnectionRefusedError" in str(error)
+    assert "--master URI" in str(error)
+
+
+def test_a_master_that_accepts_but_never_answers_is_given_up_on():
+    with socket.socket() as silent:
+        silent.bind(("127.0.0.1", 0))
+        silent.listen(1)  # the kernel accepts the connection; nothing ever answers it
+        uri = f"http://127.0.0.1:{silent.getsockname()[1]}"
+        error = _in_thread(lambda: check_master(uri, timeout=0.3))
+    assert isinstance(error, DriverError)
+    assert f"no ROS master answers at {uri} (TimeoutError" in str(error)
+
+
+def test_no_master_uri_at_all_says_how_to_name_one(monkeypatch):
+    monkeypatch.delenv("ROS_MASTER_URI", raising=False)
+    with pytest.raises(DriverError, match="ROS_MASTER_URI is not set: start a master"):
+        check_master()
+
+
+class SilentDriver(LateSubscriberDriver):
+    """Test double of a driver whose joint-state topic never publishes."""
+
+    def joint_state(self) -> None:
+        self.asked += 1
+        return None
+
+
+def test_a_joint_state_topic_that_never_publishes_ends_the_connection_with_its_name():
+    config = load_robot_config("panda_franka_ros")
+    driver = SilentDriver([], late_for=0)
+    error = _in_thread(lambda: DriverBackend(driver, config, Transform.identity()))
+    assert isinstance(error, DriverError)
+    assert "no joint states on /joint_states within 2 s" in str(error)
+    assert driver.asked > 1  # it waited for one before giving up
