@@ -10,7 +10,8 @@ setup:
 demo: setup
 	$(VENV)/bin/roboscript demo --out out/demo
 
-# The tests need Open3D (perception), torch and transformers (detectors, tested on tiny models they build), and the
+# The tests need Open3D (perception), torch and transformers (detectors, tested on tiny models they build),
+# librealsense (its recorder and playback stand in for a camera), franky-sim (the FR3's model), and the
 # slow ones llama.cpp (compiled on first install, about 5 minutes on 2 cores) and a small GGUF model.
 # llama.cpp is built for AVX2, not for the machine it is built on: its AMX kernels crash with a segmentation fault on
 # some Xeons (Sapphire Rapids, seen in a VM here), and a wheel built for one CPU can be reused from pip's cache on another.
@@ -22,7 +23,7 @@ LLAMA_PIN = $(shell grep -o 'llama-cpp-python==[0-9.]*' pyproject.toml | head -1
 
 test-deps:
 	CMAKE_ARGS="$(LLAMA_CMAKE_ARGS)" $(PY) -m pip install -q --no-cache-dir "$(LLAMA_PIN)"
-	$(PY) -m pip install -q -e ".[dev,perception,detectors,slowtests,ray,report,record]"
+	$(PY) -m pip install -q -e ".[dev,perception,detectors,slowtests,ray,report,record,realsense,franky]"
 
 test: test-deps
 	$(VENV)/bin/ruff check src tests benchmarks

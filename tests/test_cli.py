@@ -64,3 +64,10 @@ def test_bad_world_file_fails_with_its_message(tmp_path, capsys):
     assert main(["render", str(bad), "--out", str(tmp_path / "o")]) == 2
     err = capsys.readouterr().err
     assert "bad.yaml" in err and "objects[0] 'a'" in err and "unknown object type 'teapot'" in err
+
+
+def test_the_commands_offer_every_robot_there_is():
+    from roboscript.cli import ROBOT_NAMES
+    from roboscript.robots import ROBOTS
+
+    assert sorted(ROBOT_NAMES) == sorted(ROBOTS)

@@ -10,7 +10,7 @@ from roboscript.backends.mujoco_backend import MujocoBackend
 from roboscript.sim.world_file import parse_world
 from roboscript.trajectory import JointTrajectory, min_jerk_through
 
-ROBOTS = ("panda", "ur5e")
+ROBOTS = ("panda", "ur5e", "fr3")
 TABLE = 0.82
 
 

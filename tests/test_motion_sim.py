@@ -10,7 +10,7 @@ from roboscript.geometry import Transform, matrix_to_quat
 from roboscript.planning.ground_truth_scene import ground_truth_motion
 from roboscript.sim.world_file import parse_world
 
-ROBOTS = ("panda", "ur5e")
+ROBOTS = ("panda", "ur5e", "fr3")
 
 
 @pytest.mark.parametrize("robot", ROBOTS)

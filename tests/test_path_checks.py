@@ -12,7 +12,7 @@ from roboscript.planning.path_checks import arm_travel, first_blocked
 from roboscript.planning.planner import densify
 from roboscript.sim.world_file import parse_world
 
-ROBOTS = ("panda", "ur5e")
+ROBOTS = ("panda", "ur5e", "fr3")
 
 
 def _holding_a_box(robot: str):

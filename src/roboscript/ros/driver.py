@@ -17,6 +17,7 @@ import xmlrpc.client
 import numpy as np
 
 from roboscript.drivers.base import (
+    CameraSource,
     Driver,
     DriverError,
     GoalStatus,
@@ -25,6 +26,7 @@ from roboscript.drivers.base import (
     TrackingSample,
     TrajectoryGoal,
 )
+from roboscript.drivers.realsense import RealSenseCameras
 from roboscript.geometry import Transform
 from roboscript.robot_config import RobotConfig
 from roboscript.robot_io import CameraFrame
@@ -150,7 +152,8 @@ class RosDriver(Driver):
         self._tf = tf2_ros.Buffer()
         self._tf_listener = tf2_ros.TransformListener(self._tf)
         self._images: dict[tuple[str, str], collections.deque] = {}
-        for camera in config.cameras:
+        self._direct: CameraSource | None = None
+        for camera in (c for c in config.cameras if c.over_ros):
             topics = {"rgb": (camera.rgb, Image), "depth": (camera.depth, Image), "info": (camera.info, CameraInfo)}
             if camera.segmentation:
                 topics["segmentation"] = (camera.segmentation, Image)
@@ -160,6 +163,11 @@ class RosDriver(Driver):
         self._labels: dict[int, str] = {}
         labels_topic = config.segmentation_labels or LABELS_TOPIC
         self._subscribers.append(rospy.Subscriber(labels_topic, String, self._on_labels, queue_size=1))
+        try:
+            self._direct = _direct_cameras(config)
+        except BaseException:
+            self.close()
+            raise
 
     @staticmethod
     def _wait_for(client, name: str, timeout: float, connecting: bool = False) -> None:
@@ -267,6 +275,9 @@ class RosDriver(Driver):
         return [c.name for c in self.config.cameras]
 
     def camera_frame(self, camera: str, timeout: float, not_before: float) -> CameraFrame:
+        if self._direct is not None and camera in self._direct.names():
+            # read apart from ROS, stamped on this host's monotonic clock rather than ROS time
+            return self._direct.frame(camera, timeout, time.monotonic() - (self.now() - not_before))
         config = next(c for c in self.config.cameras if c.name == camera)
         parts = ["rgb", "depth", "info"] + (["segmentation"] if config.segmentation else [])
         deadline = time.monotonic() + timeout
@@ -331,6 +342,17 @@ class RosDriver(Driver):
         for subscriber in self._subscribers:
             subscriber.unregister()
         self._subscribers.clear()
+        if self._direct is not None:
+            self._direct.close()
+            self._direct = None
+
+
+def _direct_cameras(config: RobotConfig) -> CameraSource | None:
+    """The configuration's cameras read without ROS (RealSense cameras through librealsense), if it has any."""
+    direct = [c for c in config.cameras if not c.over_ros]
+    if not direct:
+        return None
+    return RealSenseCameras(direct)
 
 
 def _newest_complete(kept: dict[str, list], not_before: float) -> dict | None:

@@ -56,7 +56,7 @@ def logged_topics(config: RobotConfig) -> tuple[list[str], list[str]]:
     if config.segmentation_labels:
         every.append(config.segmentation_labels)
     throttled = []
-    for camera in config.cameras:
+    for camera in (c for c in config.cameras if c.over_ros):
         throttled += [camera.rgb, camera.depth, camera.info] + ([camera.segmentation] if camera.segmentation else [])
     return every, throttled
 

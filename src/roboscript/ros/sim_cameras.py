@@ -34,7 +34,7 @@ class CameraPublisher(threading.Thread):
         self._stamp = 0.0
         self._specs = {c.name: c for c in backend.sim_world.spec.cameras}
         self._publishers = {}
-        for camera in config.cameras:
+        for camera in (c for c in config.cameras if c.over_ros):
             if camera.name not in self._specs:
                 continue  # the configuration names a camera this world lacks: it is simply not served
             self._publishers[camera.name] = (

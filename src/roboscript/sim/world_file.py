@@ -30,6 +30,7 @@ from roboscript.datafile import DataFileError, Reader, read_data_file
 from roboscript.errors import did_you_mean
 from roboscript.names import TABLE, kind_of
 from roboscript.objects import ObjectType, object_types
+from roboscript.robots import ROBOTS
 from roboscript.sim.cameras import CameraSpec, default_camera_rig
 from roboscript.sim.furniture import CabinetRow, CabinetSpec, TableSpec
 
@@ -37,7 +38,7 @@ TABLE_NAME = TABLE
 ROBOT_BASE_XY = (-0.45, 0.0)
 ROBOT_BASE_RADIUS = 0.12
 OVERLAP_MARGIN = 0.004
-VALID_ROBOTS = ("panda", "ur5e")
+VALID_ROBOTS = tuple(ROBOTS)
 
 
 class WorldFileError(DataFileError):
