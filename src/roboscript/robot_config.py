@@ -20,6 +20,7 @@ from roboscript.geometry import Transform
 from roboscript.robots import ROBOTS, RobotDescription, get_robot
 
 GRIPPER_KINDS = ("gripper_command", "franka")
+DRIVERS = ("ros", "franky")  # how the arm is reached: ROS 1 topics and actions, or libfranka through franky
 # The packaged configuration of each arm: what ros-sim serves by default, and what a ROS trial connects with.
 DEFAULT_CONFIGS = {"panda": "panda_franka_ros", "ur5e": "ur5e_ur_robot_driver"}
 DEFAULT_SPEED_SCALE = 0.25  # of the arm's limits: what a real arm runs at unless its configuration says otherwise
@@ -83,6 +84,16 @@ class CameraConfig:
 
 
 @dataclass(frozen=True)
+class FrankySettings:
+    """A Franka arm driven through libfranka (franky): the robot's control address, whether libfranka insists on a
+    real-time kernel, and where the arm's base stands in the world frame (libfranka knows nothing of the world)."""
+
+    host: str
+    realtime: bool
+    base_pose: Transform
+
+
+@dataclass(frozen=True)
 class Workspace:
     """The box every link of the arm must stay inside, and the table's top, which the TCP must stay above."""
 
@@ -114,6 +125,8 @@ class RobotConfig:
     state_timeout: float  # seconds without a joint state after which the robot is stopped
     server_timeout: float  # seconds to wait for an action server, a result after the trajectory's end
     source: str = ""
+    driver: str = "ros"
+    franky: FrankySettings | None = None
 
     def driver_joint(self, model_joint: str) -> str:
         return self.joint_names.get(model_joint, model_joint)
@@ -146,8 +159,14 @@ def load_robot_config(reference: str | Path) -> RobotConfig:
 
 def parse_robot_config(data, source: str = "<config>") -> RobotConfig:
     """Validates parsed YAML into a :class:`RobotConfig`; errors name the field and what would be valid."""
-    fields = {"name", "robot", "joints", "ros", "gripper", "cameras", "safety", "description"}
+    fields = {"name", "robot", "joints", "driver", "ros", "franky", "gripper", "cameras", "safety", "description"}
     top = Reader(source, "configuration", data, fields, RobotConfigError)
+    driver = top.string("driver", "ros")
+    if driver not in DRIVERS:
+        top.fail(f"unknown driver {driver!r}; drivers: {', '.join(DRIVERS)}")
+    elsewhere = {"ros": "franky", "franky": "ros"}[driver]
+    if elsewhere in top.data:
+        top.fail(f"field {elsewhere!r} is for driver {elsewhere}, and this configuration's driver is {driver}")
     robot_name = top.string("robot")
     if robot_name not in ROBOTS:
         top.fail(f"unknown robot {robot_name!r}; robots: {', '.join(sorted(ROBOTS))}")
@@ -159,19 +178,20 @@ def parse_robot_config(data, source: str = "<config>") -> RobotConfig:
     unknown = sorted(set(joints) - known)
     if unknown:
         top.fail(f"joints: {unknown[0]!r} is no joint of the {robot_name}; its joints: {', '.join(sorted(known))}")
-    ros = Reader(
-        source,
-        "ros",
-        top.required("ros"),
-        {"joint_states", "trajectory_action", "world_frame", "base_frame", "segmentation_labels"},
-        RobotConfigError,
+    franky = (
+        _franky(Reader(source, "franky", top.required("franky"), _FRANKY_FIELDS, RobotConfigError))
+        if (driver == "franky")
+        else None
     )
-    gripper = _gripper(
-        Reader(source, "gripper", top.required("gripper"), set(_GRIPPER_FIELDS), RobotConfigError), robot
-    )
+    ros_fields = {"joint_states", "trajectory_action", "world_frame", "base_frame", "segmentation_labels"}
+    ros = Reader(source, "ros", top.required("ros") if franky is None else {}, ros_fields, RobotConfigError)
+    gripper_data = top.required("gripper") if franky is None else top.data.get("gripper", {"kind": "franka"})
+    gripper = _gripper(Reader(source, "gripper", gripper_data, set(_GRIPPER_FIELDS), RobotConfigError), robot, driver)
     cameras = top.data.get("cameras", [])
     if not isinstance(cameras, list):
         top.fail(f"field 'cameras' must be a list, got {cameras!r}")
+    if franky is not None and any(not (isinstance(c, dict) and "realsense" in c) for c in cameras):
+        top.fail("a robot driven through franky reads its cameras directly: each camera needs a 'realsense' entry")
     safety = Reader(source, "safety", top.data.get("safety", {}), set(_SAFETY_FIELDS), RobotConfigError)
     speed_scale = safety.number("speed_scale", DEFAULT_SPEED_SCALE)
     if not 0 < speed_scale <= 1:
@@ -191,12 +211,12 @@ def parse_robot_config(data, source: str = "<config>") -> RobotConfig:
         name=top.string("name", Path(source).stem),
         robot=robot,
         joint_names=dict(joints),
-        joint_states=ros.string("joint_states", "/joint_states"),
-        trajectory_action=ros.string("trajectory_action"),
+        joint_states=ros.string("joint_states", "/joint_states") if franky is None else f"libfranka at {franky.host}",
+        trajectory_action=ros.string("trajectory_action") if franky is None else f"libfranka at {franky.host}",
         gripper=gripper,
         cameras=tuple(_camera(source, i, c) for i, c in enumerate(cameras)),
         world_frame=ros.string("world_frame", "world"),
-        base_frame=ros.string("base_frame"),
+        base_frame=ros.string("base_frame") if franky is None else "",
         segmentation_labels=segmentation_labels,
         speed_scale=speed_scale,
         workspace=Workspace(lower, upper, safety.number("table_height")),
@@ -204,6 +224,30 @@ def parse_robot_config(data, source: str = "<config>") -> RobotConfig:
         state_timeout=timeouts["state_timeout"],
         server_timeout=timeouts["server_timeout"],
         source=source,
+        driver=driver,
+        franky=franky,
+    )
+
+
+_FRANKY_FIELDS = {"host", "realtime", "base_position", "base_quaternion"}
+
+
+def _franky(reader: Reader) -> FrankySettings:
+    realtime = reader.data.get("realtime", "enforce")
+    if realtime not in ("enforce", "ignore"):
+        reader.fail(
+            f"realtime must be 'enforce' (libfranka's default: a real-time kernel) or 'ignore' (franky-sim, or a "
+            f"machine without one), got {realtime!r}"
+        )
+    quaternion = np.array(reader.vector("base_quaternion", (4,), (1.0, 0.0, 0.0, 0.0)))
+    if not 0.9 < np.linalg.norm(quaternion) < 1.1:
+        reader.fail(f"base_quaternion {tuple(quaternion)} (w, x, y, z) must have length 1")
+    return FrankySettings(
+        host=reader.string("host"),
+        realtime=realtime == "enforce",
+        base_pose=Transform.from_mujoco(
+            np.array(reader.vector("base_position", (3,))), quaternion / np.linalg.norm(quaternion)
+        ),
     )
 
 
@@ -229,16 +273,23 @@ _SAFETY_FIELDS = {
 }
 
 
-def _gripper(reader: Reader, robot: RobotDescription) -> GripperConfig:
+def _gripper(reader: Reader, robot: RobotDescription, driver: str = "ros") -> GripperConfig:
     kind = reader.string("kind")
     if kind not in GRIPPER_KINDS:
         reader.fail(f"unknown gripper kind {kind!r}; kinds: {', '.join(GRIPPER_KINDS)}")
-    width_joints = reader.required("width_joints")
+    if driver == "franky" and kind != "franka":
+        reader.fail(f"a robot driven through franky has the Franka hand: kind 'franka', got {kind!r}")
+    # libfranka reads the hand's width itself; the driver reports it as the model's finger joints
+    width_joints = (
+        reader.required("width_joints")
+        if driver == "ros"
+        else reader.data.get("width_joints", list(robot.gripper.joints))
+    )
     if not isinstance(width_joints, list) or not width_joints or not all(isinstance(j, str) for j in width_joints):
         reader.fail(f"width_joints must be a list of joint names, got {width_joints!r}")
     return GripperConfig(
         kind=kind,
-        action=reader.string("action"),
+        action=reader.string("action") if driver == "ros" else "",
         # franka_gripper speaks metres of opening: open is the hand's full width
         open_position=reader.number("open_position", robot.gripper.max_width if kind == "franka" else None),
         closed_position=reader.number("closed_position", 0.0 if kind == "franka" else None),

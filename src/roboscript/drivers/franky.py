@@ -1,0 +1,218 @@
+"""A Franka arm and hand driven through libfranka with franky (the ``franky`` extra), without ROS.
+
+A planned joint trajectory goes to the arm as one franky ``JointWaypointMotion`` through its samples, each with
+the planned velocity and no less than the planned time since the last, so libfranka's own trajectory generator
+keeps to the plan's path and pace. Joint states are libfranka's, read when asked; a state counts as received when
+the robot's clock last moved. The robot's own errors (reflexes, limits) end a motion as ``aborted`` with what
+libfranka said, and the driver asks libfranka to recover from them so that the next motion can run. Cameras come
+from a :class:`~roboscript.drivers.base.CameraSource`: the configuration's RealSense cameras unless one is given.
+"""
+
+from __future__ import annotations
+
+import logging
+import threading
+import time
+
+import numpy as np
+
+from roboscript.drivers.base import (
+    CameraSource,
+    Driver,
+    DriverError,
+    GoalStatus,
+    GripperResult,
+    JointStateReading,
+    TrackingSample,
+    TrajectoryGoal,
+)
+from roboscript.drivers.realsense import RealSenseCameras
+from roboscript.robot_config import RobotConfig
+from roboscript.robot_io import CameraFrame
+from roboscript.trajectory import JointTrajectory
+
+log = logging.getLogger(__name__)
+
+WAYPOINT_SPACING = 0.05  # seconds of the plan between waypoints sent (the plan's own samples are denser)
+GOAL_TOLERANCE = 0.005  # radians from the motion's last set-point within which the arm counts as arrived
+SETTLE_TIME = 1.0  # robot seconds a finished motion is given to come within GOAL_TOLERANCE (a FollowJointTrajectory's
+# goal time tolerance): the simulator's arm lags its set-point by up to 0.02 rad as a motion ends
+GRASP_TOLERANCE = 0.08  # metres either side of the commanded width within which libfranka's grasp succeeds: any
+
+
+def _franky():
+    try:
+        import franky
+    except ImportError as error:
+        raise DriverError("a Franka through libfranka needs franky: pip install 'roboscript[franky]'") from error
+    return franky
+
+
+class _Motion(TrajectoryGoal):
+    """A motion sent to the arm: done when libfranka says so, aborted with its exception."""
+
+    def __init__(self, driver: FrankyDriver):
+        self._driver = driver
+        self._final: GoalStatus | None = None
+        self._ended_at: float | None = None  # robot time libfranka said the motion ended
+
+    def tracking(self) -> TrackingSample | None:
+        state = self._driver.robot_state()
+        return TrackingSample(np.array(state.q_d), np.array(state.q))
+
+    def status(self) -> GoalStatus:
+        if self._final is None:  # libfranka reports an ending once: keep it
+            status = self._driver.motion_status()
+            if not status.done:
+                return status
+            self._final, self._ended_at = status, self._driver.now()
+        if self._final.state == "succeeded" and not self._settled():
+            return GoalStatus("active")
+        return self._final
+
+    def _settled(self) -> bool:
+        state = self._driver.robot_state()
+        lag = float(np.max(np.abs(np.array(state.q) - np.array(state.q_d))))
+        return lag <= GOAL_TOLERANCE or self._driver.now() - self._ended_at >= SETTLE_TIME
+
+    def cancel(self) -> None:
+        self._driver.stop_motion()
+
+
+class FrankyDriver(Driver):
+    """The Franka arm and hand at ``config.franky.host``; ``cameras`` default to the configuration's RealSense ones."""
+
+    def __init__(self, config: RobotConfig, cameras: CameraSource | None = None):
+        if config.franky is None:
+            raise DriverError(
+                f"robot configuration {config.name!r} has no 'franky' section (its driver is {config.driver})"
+            )
+        franky = _franky()
+        self.config, self._franky = config, franky
+        settings = config.franky
+        realtime = franky.RealtimeConfig.Enforce if settings.realtime else franky.RealtimeConfig.Ignore
+        try:
+            self._robot = franky.Robot(settings.host, realtime_config=realtime)
+            self._gripper = franky.Gripper(settings.host)
+        except franky.Exception as error:
+            raise DriverError(
+                f"no Franka answers at {settings.host} ({type(error).__name__}: {error}): is the arm's control "
+                "interface (FCI) enabled in Desk, and is this its address? (franky-sim: is it running?)"
+            ) from None
+        self._lock = threading.Lock()
+        self._clock: tuple[float, float] | None = None  # (robot time, monotonic time when it last moved)
+        self._width = float(self._gripper.width)
+        self._names = list(config.robot.arm_joints)
+        self._cameras = cameras if cameras is not None else RealSenseCameras(config.cameras)
+
+    # --- state ---
+
+    def robot_state(self):
+        with self._lock:
+            return self._robot.state
+
+    def joint_state(self) -> JointStateReading | None:
+        state = self.robot_state()
+        robot_time = float(state.time.to_sec())
+        now = time.monotonic()
+        if self._clock is None or robot_time != self._clock[0]:
+            self._clock = (robot_time, now)
+        positions = {self.config.driver_joint(j): float(q) for j, q in zip(self._names, state.q, strict=True)}
+        for joint in self.config.gripper.width_joints:
+            positions[joint] = self._width / len(self.config.gripper.width_joints)
+        return JointStateReading(positions, robot_time, self._clock[1])
+
+    def now(self) -> float:
+        """The robot's clock (libfranka's, in seconds): a simulated arm's runs slower than the wall's under load,
+        and the backend times motions by it."""
+        return float(self.robot_state().time.to_sec())
+
+    # --- motion ---
+
+    def send_trajectory(self, joint_names: list[str], trajectory: JointTrajectory) -> TrajectoryGoal:
+        franky = self._franky
+        order = [joint_names.index(self.config.driver_joint(j)) for j in self._names]
+        waypoints, last = [], 0.0
+        for index in _waypoint_indices(trajectory.times, WAYPOINT_SPACING):
+            t = float(trajectory.times[index])
+            target = franky.JointState(
+                np.asarray(trajectory.positions[index])[order], np.asarray(trajectory.velocities[index])[order]
+            )
+            waypoints.append(franky.JointWaypoint(target, minimum_time=franky.Duration(int(1000 * (t - last)))))
+            last = t
+        try:
+            with self._lock:
+                self._robot.move(franky.JointWaypointMotion(waypoints), asynchronous=True)
+        except (franky.Exception, RuntimeError) as error:
+            raise DriverError(f"libfranka refused the motion: {type(error).__name__}: {error}") from None
+        return _Motion(self)
+
+    def motion_status(self) -> GoalStatus:
+        """Where the last motion stands (``active`` while it runs); recovers from the robot's errors once reported."""
+        franky = self._franky
+        try:
+            with self._lock:
+                finished = self._robot.poll_motion()  # true once the motion has ended; raises what ended it
+        except (franky.Exception, RuntimeError) as error:  # libfranka's, and its trajectory generator's
+            detail = f"{type(error).__name__}: {error}"
+            recovered = self._recover()
+            return GoalStatus("aborted", detail + ("" if recovered else "; libfranka could not recover from it"))
+        return GoalStatus("succeeded") if finished else GoalStatus("active")
+
+    def stop_motion(self) -> None:
+        try:
+            with self._lock:
+                self._robot.stop()
+        except self._franky.Exception as error:
+            log.warning("stopping the arm: %s", error)
+
+    def _recover(self) -> bool:
+        try:
+            with self._lock:
+                return bool(self._robot.recover_from_errors())
+        except self._franky.Exception as error:
+            log.warning("recovering from the robot's errors: %s", error)
+            return False
+
+    def command_gripper(self, position: float, closing: bool, timeout: float) -> GripperResult:
+        gripper = self.config.gripper
+        try:
+            if closing:
+                future = self._gripper.grasp_async(
+                    position, gripper.speed, gripper.max_effort, GRASP_TOLERANCE, GRASP_TOLERANCE
+                )
+            else:
+                future = self._gripper.move_async(position, gripper.speed)
+            if not future.wait(timeout):
+                self._gripper.stop()
+                raise DriverError(f"the Franka hand did not finish within {timeout:.1f} s; it was stopped")
+            reached = bool(future.get())
+            self._width = float(self._gripper.width)
+        except self._franky.Exception as error:
+            raise DriverError(f"the Franka hand failed: {type(error).__name__}: {error}") from None
+        # libfranka's "grasped" only says the width ended within the tolerances of the one commanded (here: closed),
+        # so whether the fingers stopped on something is left to the backend, from the width
+        return GripperResult(self._width, stalled=None, reached=reached)
+
+    # --- cameras ---
+
+    def camera_names(self) -> list[str]:
+        return self._cameras.names()
+
+    def camera_frame(self, camera: str, timeout: float, not_before: float) -> CameraFrame:
+        # the cameras stamp frames on this host's monotonic clock, not the robot's
+        return self._cameras.frame(camera, timeout, time.monotonic() - (self.now() - not_before))
+
+    def close(self) -> None:
+        self.stop_motion()
+        self._cameras.close()
+
+
+def _waypoint_indices(times: np.ndarray, spacing: float) -> list[int]:
+    """Samples of the plan at least ``spacing`` seconds apart, from the first after the start to the last."""
+    chosen, last = [], float(times[0])
+    for index in range(1, len(times)):
+        if times[index] - last >= spacing or index == len(times) - 1:
+            chosen.append(index)
+            last = float(times[index])
+    return chosen

@@ -1,0 +1,32 @@
+"""A franky-sim server for one FR3 (run as ``python -m roboscript.frankysim.server``): it serves libfranka's network
+protocol on a free loopback address, prints ``serving HOST`` once it does, and runs its physics in real time until
+its standard input closes or it is killed."""
+
+from __future__ import annotations
+
+import argparse
+import sys
+import threading
+
+
+def main(argv: list[str] | None = None) -> int:
+    parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    parser.add_argument("--base", type=float, nargs=3, default=(0.0, 0.0, 0.0), help="the arm's base in the world")
+    parser.add_argument("--joints", type=float, nargs=7, default=None, help="where the arm starts (radians)")
+    args = parser.parse_args(argv)
+    from franky_sim import DEFAULT_INITIAL_JOINT_POS, SimulationServer
+    from franky_sim.mujoco_simulator import MujocoSimulator
+
+    with MujocoSimulator(enable_visualization=False) as sim:
+        robot = sim.add_robot(initial_q=args.joints or DEFAULT_INITIAL_JOINT_POS, position=tuple(args.base))
+        with SimulationServer(sim) as server:
+            server.run_async()
+            print(f"serving {robot.hostname}", flush=True)
+            closed = threading.Event()
+            threading.Thread(target=lambda: (sys.stdin.read(), closed.set()), daemon=True).start()
+            closed.wait()
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

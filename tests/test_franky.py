@@ -1,0 +1,75 @@
+"""A Franka through libfranka: the franky driver against franky-sim, which serves libfranka's network protocol on
+loopback with an FR3 in MuJoCo, as a lab's arm serves it on its network. Both ends are the real third-party code:
+franky (with libfranka inside) on this side, franky-sim on the other."""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+
+pytest.importorskip("franky", reason="the franky extra is not installed (make test installs it)")
+pytest.importorskip("franky_sim", reason="the franky extra is not installed (make test installs it)")
+
+import yaml
+
+from roboscript.backends.franky import franky_backend
+from roboscript.drivers.base import DriverError
+from roboscript.frankysim.launch import FrankySim
+from roboscript.robot_config import config_path, parse_robot_config
+from roboscript.robots import get_robot
+from roboscript.trajectory import min_jerk_through
+
+BASE = (-0.45, 0.0, 0.82)
+
+
+def _config(host: str):
+    data = yaml.safe_load(config_path("fr3_franky").read_text())
+    data["franky"].update(host=host, realtime="ignore")
+    return parse_robot_config(data, "fr3_franky (franky-sim)")
+
+
+@pytest.fixture(scope="module")
+def arm():
+    home = get_robot("fr3").home
+    with FrankySim(base=BASE, joints=home) as sim:
+        backend = franky_backend(_config(sim.host))
+        yield backend
+        backend.close()
+
+
+def _move(backend, delta) -> np.ndarray:
+    start = backend.joint_positions()
+    robot = backend.robot
+    trajectory = min_jerk_through(
+        np.array([start, start + delta]), np.array(robot.max_velocity), np.array(robot.max_acceleration), 0.25
+    )
+    backend.execute_trajectory(trajectory)
+    return start + delta
+
+
+def test_the_arm_reads_as_libfranka_reports_it_where_the_configuration_puts_its_base(arm):
+    assert np.allclose(arm.joint_positions(), get_robot("fr3").home, atol=0.02)
+    assert np.allclose(arm.base_pose().position, BASE)
+    states = arm.joint_states()
+    assert set(get_robot("fr3").arm_joints) <= set(states)
+
+
+def test_a_planned_trajectory_runs_through_libfranka_and_ends_where_it_was_planned_to(arm):
+    delta = np.zeros(7)
+    delta[0], delta[3] = 0.25, -0.15
+    target = _move(arm, delta)
+    assert np.allclose(arm.joint_positions(), target, atol=0.01)
+    target = _move(arm, -delta)
+    assert np.allclose(arm.joint_positions(), target, atol=0.01)
+
+
+def test_the_hand_closes_on_nothing_and_opens_again(arm):
+    closed = arm.set_gripper(1.0)
+    assert closed.width < 0.01 and not closed.blocked
+    opened = arm.set_gripper(0.0)
+    assert opened.width > 0.075
+
+
+def test_no_franka_at_the_address_is_a_clear_error():
+    with pytest.raises(DriverError, match=r"no Franka answers at 127\.0\.0\.254"):
+        franky_backend(_config("127.0.0.254"))
