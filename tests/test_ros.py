@@ -22,6 +22,7 @@ from pathlib import Path
 
 import numpy as np
 import pytest
+import yaml
 
 pytest.importorskip("rospy", reason="ROS 1 is not installed here (scripts/setup.sh installs it on Debian)")
 
@@ -32,6 +33,7 @@ from roboscript.backends.ros import ros_backend
 from roboscript.bench.tasks import get_task
 from roboscript.drivers.base import DriverError
 from roboscript.perception.modes import perception_mode
+from roboscript.robot_config import config_path, parse_robot_config
 from roboscript.ros.driver import _advertised
 from roboscript.ros.launch import SimProcess, start_master, start_sim
 from roboscript.ros.sim_server import DISTURB_TOPIC
@@ -350,3 +352,35 @@ def test_a_new_master_never_joins_one_already_on_its_port(ros_master, monkeypatc
     finally:
         process.terminate()
         process.wait(timeout=10)
+
+
+def test_a_realsense_camera_beside_the_ros_topics_is_read_through_librealsense(panda, tmp_path):
+    """A configuration may name a camera read directly (a wrist camera on USB, say) beside those on ROS topics."""
+    pytest.importorskip("pyrealsense2", reason="the realsense extra is not installed (make test installs it)")
+    from realsense_recordings import record_d400  # the optional extra's: imported only where it is there
+
+    backend, _ = panda
+    seen = backend.capture("camera_left")  # over ROS
+    recording = tmp_path / "wrist.db3"
+    record_d400(recording, "A1", [(seen, seen.depth, seen.intrinsics)])  # what the wrist camera will show
+    data = yaml.safe_load(config_path("panda_franka_ros").read_text())
+    data["cameras"].append(
+        {
+            "name": "camera_wrist",
+            "realsense": {
+                "serial": "A1",
+                "recording": str(recording),
+                "position": [0, 0, 1.5],
+                "quaternion": [0, 1, 0, 0],
+            },
+        }
+    )
+    both = ros_backend(parse_robot_config(data, "panda_franka_ros + a RealSense"))
+    try:
+        assert both.camera_names() == ["camera_left", "camera_right", "camera_top", "camera_wrist"]
+        wrist = both.capture("camera_wrist")
+        assert np.array_equal(wrist.rgb, seen.rgb) and wrist.segmentation is None
+        assert np.allclose(wrist.extrinsics.position, [0, 0, 1.5])
+        assert both.capture("camera_top").segmentation is not None  # the ROS cameras are still read over ROS
+    finally:
+        both.close()
