@@ -6,6 +6,8 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
+pytest.importorskip("franky_sim", reason="the franky extra is not installed (make test installs it)")
+
 from roboscript.backends.mujoco_backend import MujocoBackend
 from roboscript.bench.tasks import get_task
 from roboscript.bench.trial import TrialSpec, run_trial
@@ -44,3 +46,29 @@ def test_the_papers_reference_programs_pass_on_the_fr3(task_id):
     task = get_task(task_id)
     record = run_trial(TrialSpec(task.id, "fr3", 0, 0, task.reference_program()))
     assert record.success, (record.error, record.checks)
+
+
+def test_roboscript_assets_calls_the_fr3_optional_when_its_extra_is_absent_and_a_fault_when_it_fails(
+    monkeypatch, capsys
+):
+    from roboscript.cli import main
+
+    real = assets._package_dir
+    monkeypatch.setattr(assets, "_package_dir", lambda package: None if package == "franky_sim" else real(package))
+    assert main(["assets"]) == 0  # setup.sh runs it under `set -e` without the extra
+    assert (
+        "franka_fr3_hand          not installed (optional: pip install 'roboscript[franky]')" in capsys.readouterr().out
+    )
+    monkeypatch.setattr(assets, "_OFFLINE_SHA256", {**assets._OFFLINE_SHA256, ("franky_sim", FR3.directory): "0" * 64})
+    monkeypatch.setattr(assets, "_package_dir", real)
+    assert main(["assets"]) == 1  # there, but not the file it should be
+    assert "franka_fr3_hand          NOT FOUND" in capsys.readouterr().err
+
+
+def test_trial_workers_warm_up_without_the_fr3s_model(monkeypatch):
+    """The benchmark's workers compile every arm before forking trials; an arm not installed is left out."""
+    from roboscript.bench.warm import warm_robot_meshes
+
+    real = assets._package_dir
+    monkeypatch.setattr(assets, "_package_dir", lambda package: None if package == "franky_sim" else real(package))
+    warm_robot_meshes()

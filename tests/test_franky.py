@@ -4,6 +4,8 @@ franky (with libfranka inside) on this side, franky-sim on the other."""
 
 from __future__ import annotations
 
+import time
+
 import numpy as np
 import pytest
 
@@ -73,3 +75,25 @@ def test_the_hand_closes_on_nothing_and_opens_again(arm):
 def test_no_franka_at_the_address_is_a_clear_error():
     with pytest.raises(DriverError, match=r"no Franka answers at 127\.0\.0\.254"):
         franky_backend(_config("127.0.0.254"))
+
+
+def test_a_cancelled_motion_ends_as_cancelled_and_the_next_one_runs(arm):
+    start = arm.joint_positions()
+    robot = arm.robot
+    long = min_jerk_through(
+        np.array([start, start + np.array([-0.6, 0, 0, 0, 0, 0, 0])]),
+        np.array(robot.max_velocity),
+        np.array(robot.max_acceleration),
+        0.1,
+    )
+    goal = arm.driver.send_trajectory(list(robot.arm_joints), long)
+    goal.cancel()
+    status = goal.status()
+    for _ in range(200):  # libfranka reports the preempted motion within a few of its cycles
+        if status.done:
+            break
+        time.sleep(0.01)
+        status = goal.status()
+    assert status.state == "cancelled" and "preempted" in status.detail
+    target = _move(arm, np.array([0.1, 0, 0, 0, 0, 0, 0]))
+    assert np.allclose(arm.joint_positions(), target, atol=0.01)

@@ -14,7 +14,8 @@ from roboscript.backends.driven import DriverBackend
 from roboscript.drivers.base import Driver, DriverError, JointStateReading
 from roboscript.geometry import Transform
 from roboscript.robot_config import load_robot_config
-from roboscript.ros.driver import _newest_complete, check_master
+from roboscript.ros.driver import _newest_complete
+from roboscript.ros.master import check_master
 from roboscript.ros.run_log import logged_namespace
 
 
@@ -169,3 +170,41 @@ def test_a_joint_state_topic_that_never_publishes_ends_the_connection_with_its_n
     assert isinstance(error, DriverError)
     assert "no joint states on /joint_states within 2 s" in str(error)
     assert driver.asked > 1  # it waited for one before giving up
+
+
+def _serve_once(reply: bytes) -> tuple[socket.socket, str]:
+    """A loopback listener that answers its first connection with ``reply`` (test double of a service that is not a
+    ROS master)."""
+    server = socket.socket()
+    server.bind(("127.0.0.1", 0))
+    server.listen(1)
+
+    def answer():
+        connection, _ = server.accept()
+        with connection:
+            connection.recv(65536)
+            connection.sendall(reply)
+
+    threading.Thread(target=answer, daemon=True).start()
+    return server, f"http://127.0.0.1:{server.getsockname()[1]}"
+
+
+def test_a_service_that_does_not_speak_http_is_no_master():
+    server, uri = _serve_once(b"SSH-2.0-OpenSSH_9.2\r\n")
+    with server:
+        error = _in_thread(lambda: check_master(uri))
+    assert isinstance(error, DriverError) and f"no ROS master answers at {uri}" in str(error)
+
+
+def test_an_xml_rpc_server_that_is_not_a_master_is_named_as_such():
+    body = (
+        b"<?xml version='1.0'?><methodResponse><params><param><value><string>hello</string></value></param>"
+        b"</params></methodResponse>"
+    )
+    reply = b"HTTP/1.1 200 OK\r\nContent-Type: text/xml\r\nContent-Length: %d\r\n\r\n%s" % (len(body), body)
+    server, uri = _serve_once(reply)
+    with server:
+        error = _in_thread(lambda: check_master(uri))
+    assert isinstance(error, DriverError) and "answered, but not as a ROS master does (getPid returned hello)" in str(
+        error
+    )

@@ -42,7 +42,7 @@ def cmd_objects(args: argparse.Namespace) -> int:
 
 
 def cmd_assets(args: argparse.Namespace) -> int:
-    from roboscript.robots.assets import KNOWN_MODELS, AssetNotFoundError, resolve_model
+    from roboscript.robots.assets import KNOWN_MODELS, AssetNotFoundError, optional_and_absent, resolve_model
 
     status = 0
     for name in KNOWN_MODELS:
@@ -50,9 +50,8 @@ def cmd_assets(args: argparse.Namespace) -> int:
             found = resolve_model(name)
             print(f"{name:24s} {found.source}: {found.xml_path}")
         except AssetNotFoundError as exc:
-            extra = KNOWN_MODELS[name].extra
-            if extra:  # an optional arm: its absence is no failure of the installation
-                print(f"{name:24s} not installed (optional: pip install 'roboscript[{extra}]')")
+            if optional_and_absent(KNOWN_MODELS[name]):
+                print(f"{name:24s} not installed (optional: pip install 'roboscript[{KNOWN_MODELS[name].extra}]')")
                 continue
             print(f"{name:24s} NOT FOUND\n{exc}", file=sys.stderr)
             status = 1
@@ -76,11 +75,11 @@ def cmd_render(args: argparse.Namespace) -> int:
 
 
 def cmd_ros_sim(args: argparse.Namespace) -> int:
-    from roboscript.robot_config import DEFAULT_CONFIGS, load_robot_config
+    from roboscript.robot_config import load_robot_config, ros_config_for
     from roboscript.sim.world_catalog import load_world
 
     robot = args.robot or load_world(args.world).robot
-    config = load_robot_config(args.robot_config or DEFAULT_CONFIGS[robot])
+    config = load_robot_config(args.robot_config or ros_config_for(robot))
     if config.robot.name != robot:
         raise ValueError(f"robot configuration {config.name} is for the {config.robot.name}, not the {robot}")
     if not os.environ.get("ROS_MASTER_URI"):

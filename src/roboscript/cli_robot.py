@@ -75,7 +75,7 @@ def confirmation(args: argparse.Namespace) -> Callable[[str], bool]:
 
 def run_on_running_robot(args: argparse.Namespace, program: str, scene_ref: str) -> int:
     """Runs ``program`` on the robot at ``--master`` in the scene ``scene_ref`` describes; prints what happened."""
-    from roboscript.robot_config import DEFAULT_CONFIGS, load_robot_config
+    from roboscript.robot_config import load_robot_config, ros_config_for
     from roboscript.robot_run import RobotRunPlan, run_on_robot
     from roboscript.sim.world_catalog import load_world
 
@@ -84,7 +84,7 @@ def run_on_running_robot(args: argparse.Namespace, program: str, scene_ref: str)
     if not uri:
         raise UsageError("--master env: ROS_MASTER_URI is not set")
     os.environ["ROS_MASTER_URI"] = uri
-    config = load_robot_config(args.robot_config or DEFAULT_CONFIGS[args.robot])
+    config = load_robot_config(args.robot_config or ros_config_for(args.robot))
     out = Path(args.log_dir or Path("out/robot") / time.strftime("%Y%m%d-%H%M%S"))
     plan = RobotRunPlan(
         config,

@@ -19,7 +19,7 @@ def _names(text: str) -> list[str]:
 def _robots(text: str) -> list[str]:
     from roboscript.robots import ROBOTS
 
-    names = sorted(ROBOTS) if text == "both" else _names(text)
+    names = ["panda", "ur5e"] if text == "both" else _names(text)
     for name in names:
         if name not in ROBOTS:
             raise argparse.ArgumentTypeError(f"unknown robot {name!r}; robots: {', '.join(sorted(ROBOTS))} (or both)")
@@ -115,7 +115,9 @@ def add_study_commands(sub) -> None:
     study.add_argument(
         "--grasp", type=_names, default=None, help="comma-separated grasp tools: adaptive, central, horizontal"
     )
-    study.add_argument("--robot", type=_robots, default=["panda"], help="panda, ur5e, both, or a comma list")
+    study.add_argument(
+        "--robot", type=_robots, default=["panda"], help="panda, ur5e, fr3, both (panda and ur5e), or a comma list"
+    )
     study.add_argument("--trials", type=int, default=10, help="trials per cell (template x object x grasp tool)")
     study.add_argument("--seed", type=int, default=0, help="trial i uses seed + i for the world's randomisation")
     study.add_argument("--timeout", type=float, default=300.0, help="time limit of one program, wall seconds")

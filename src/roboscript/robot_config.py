@@ -1,10 +1,11 @@
 """Robot configuration files: how a real (or served) robot is reached and kept safe.
 
-A YAML file names the robot's description (``panda``, ``ur5e``), the driver's joint names for the model's joints,
-where joint states, trajectories, the gripper and the cameras are found (ROS topics and action servers; a camera may
-instead be a RealSense read through librealsense, by serial number, with its calibrated pose), the frames,
-and the safety limits: a speed scale, the workspace box every trajectory must stay in, and the table's height no
-TCP may go below. Packaged examples live in ``robot_configs/`` (``roboscript robot-configs`` lists them).
+A YAML file names the robot's description (``panda``, ``ur5e``, ``fr3``) and its driver: ``ros`` (the default: the
+driver's joint names for the model's joints, where joint states, trajectories and the gripper are found as ROS topics
+and action servers, the frames) or ``franky`` (libfranka's address, and where the base stands). Then the cameras
+(:mod:`roboscript.camera_config`) and the safety limits: a speed scale, the workspace box every trajectory must stay
+in, and the table's height no TCP may go below. Packaged examples live in ``robot_configs/`` (``roboscript
+robot-configs`` lists them).
 """
 
 from __future__ import annotations
@@ -15,12 +16,18 @@ from pathlib import Path
 
 import numpy as np
 
+from roboscript.camera_config import CameraConfig, parse_cameras
 from roboscript.datafile import DataFileError, Reader, names_a_file, read_data_file
+from roboscript.errors import UsageError
 from roboscript.geometry import Transform
 from roboscript.robots import ROBOTS, RobotDescription, get_robot
 
 GRIPPER_KINDS = ("gripper_command", "franka")
-DRIVERS = ("ros", "franky")  # how the arm is reached: ROS 1 topics and actions, or libfranka through franky
+DRIVERS = ("ros", "franky")
+FRANKA_ROBOTS = (
+    "fr3",
+    "panda",
+)  # the arms libfranka drives  # how the arm is reached: ROS 1 topics and actions, or libfranka through franky
 # The packaged configuration of each arm: what ros-sim serves by default, and what a ROS trial connects with.
 DEFAULT_CONFIGS = {"panda": "panda_franka_ros", "ur5e": "ur5e_ur_robot_driver"}
 DEFAULT_SPEED_SCALE = 0.25  # of the arm's limits: what a real arm runs at unless its configuration says otherwise
@@ -50,37 +57,6 @@ class GripperConfig:
     width_joints: tuple[str, ...]
     width_scale: float
     width_offset: float
-
-
-@dataclass(frozen=True)
-class RealSenseSettings:
-    """A RealSense camera read through librealsense: the device's serial number (or a recording of it, played back
-    instead of the live camera), the colour and depth streams' size and rate, and the colour camera's pose in the
-    world frame from the lab's calibration (OpenCV convention: x right, y down, z forward)."""
-
-    serial: str
-    pose: Transform
-    width: int = 640
-    height: int = 480
-    fps: int = 30
-    recording: str | None = None
-
-
-@dataclass(frozen=True)
-class CameraConfig:
-    """One RGB-D camera. Over ROS: its image, depth and calibration topics, and an optional labelled segmentation
-    topic (as a segmentation node publishes it). A RealSense read directly: ``realsense`` (the topics stay empty)."""
-
-    name: str
-    rgb: str = ""
-    depth: str = ""
-    info: str = ""
-    segmentation: str | None = None
-    realsense: RealSenseSettings | None = None
-
-    @property
-    def over_ros(self) -> bool:
-        return self.realsense is None
 
 
 @dataclass(frozen=True)
@@ -133,6 +109,17 @@ class RobotConfig:
 
     def arm_driver_joints(self) -> list[str]:
         return [self.driver_joint(j) for j in self.robot.arm_joints]
+
+
+def ros_config_for(robot: str) -> str:
+    """The packaged ROS configuration of ``robot``; a :class:`UsageError` that says what to pass where there is
+    none (the FR3 is packaged for libfranka only)."""
+    if robot not in DEFAULT_CONFIGS:
+        raise UsageError(
+            f"no packaged ROS configuration for the {robot}: name one with --robot-config FILE (packaged ROS ones: "
+            f"{', '.join(f'{r}: {c}' for r, c in DEFAULT_CONFIGS.items())})"
+        )
+    return DEFAULT_CONFIGS[robot]
 
 
 def config_names() -> list[str]:
@@ -188,10 +175,16 @@ def parse_robot_config(data, source: str = "<config>") -> RobotConfig:
     gripper_data = top.required("gripper") if franky is None else top.data.get("gripper", {"kind": "franka"})
     gripper = _gripper(Reader(source, "gripper", gripper_data, set(_GRIPPER_FIELDS), RobotConfigError), robot, driver)
     cameras = top.data.get("cameras", [])
-    if not isinstance(cameras, list):
-        top.fail(f"field 'cameras' must be a list, got {cameras!r}")
-    if franky is not None and any(not (isinstance(c, dict) and "realsense" in c) for c in cameras):
-        top.fail("a robot driven through franky reads its cameras directly: each camera needs a 'realsense' entry")
+    if franky is not None and robot_name not in FRANKA_ROBOTS:
+        top.fail(
+            f"driver franky drives a Franka arm; robot must be one of {', '.join(FRANKA_ROBOTS)}, got {robot_name!r}"
+        )
+    for index, camera in enumerate(cameras if isinstance(cameras, list) else []):
+        if franky is not None and not (isinstance(camera, dict) and "realsense" in camera):
+            top.fail(
+                f"cameras[{index}]: a robot driven through franky reads its cameras directly, so each camera needs a "
+                "'realsense' entry (serial, position, quaternion)"
+            )
     safety = Reader(source, "safety", top.data.get("safety", {}), set(_SAFETY_FIELDS), RobotConfigError)
     speed_scale = safety.number("speed_scale", DEFAULT_SPEED_SCALE)
     if not 0 < speed_scale <= 1:
@@ -214,7 +207,7 @@ def parse_robot_config(data, source: str = "<config>") -> RobotConfig:
         joint_states=ros.string("joint_states", "/joint_states") if franky is None else f"libfranka at {franky.host}",
         trajectory_action=ros.string("trajectory_action") if franky is None else f"libfranka at {franky.host}",
         gripper=gripper,
-        cameras=tuple(_camera(source, i, c) for i, c in enumerate(cameras)),
+        cameras=parse_cameras(source, cameras, RobotConfigError),
         world_frame=ros.string("world_frame", "world"),
         base_frame=ros.string("base_frame") if franky is None else "",
         segmentation_labels=segmentation_labels,
@@ -289,7 +282,7 @@ def _gripper(reader: Reader, robot: RobotDescription, driver: str = "ros") -> Gr
         reader.fail(f"width_joints must be a list of joint names, got {width_joints!r}")
     return GripperConfig(
         kind=kind,
-        action=reader.string("action") if driver == "ros" else "",
+        action=reader.string("action") if driver == "ros" else _no_action(reader),
         # franka_gripper speaks metres of opening: open is the hand's full width
         open_position=reader.number("open_position", robot.gripper.max_width if kind == "franka" else None),
         closed_position=reader.number("closed_position", 0.0 if kind == "franka" else None),
@@ -301,58 +294,7 @@ def _gripper(reader: Reader, robot: RobotDescription, driver: str = "ros") -> Gr
     )
 
 
-_REALSENSE_FIELDS = {"serial", "width", "height", "fps", "recording", "position", "quaternion"}
-REALSENSE_SIZES = ((424, 240), (480, 270), (640, 360), (640, 480), (848, 480), (1280, 720))  # colour and depth both
-REALSENSE_RATES = (6, 15, 30, 60)
-
-
-def _camera(source: str, index: int, data) -> CameraConfig:
-    entry = f"cameras[{index}]"
-    if isinstance(data, dict) and "realsense" in data:
-        reader = Reader(source, entry, data, {"name", "realsense"}, RobotConfigError)
-        return CameraConfig(name=reader.string("name"), realsense=_realsense(source, f"{entry}.realsense", data))
-    reader = Reader(source, entry, data, {"name", "rgb", "depth", "info", "segmentation"}, RobotConfigError)
-    segmentation = reader.data.get("segmentation")
-    return CameraConfig(
-        name=reader.string("name"),
-        rgb=reader.string("rgb"),
-        depth=reader.string("depth"),
-        info=reader.string("info"),
-        segmentation=reader.string("segmentation") if segmentation is not None else None,
-    )
-
-
-def _realsense(source: str, entry: str, data: dict) -> RealSenseSettings:
-    reader = Reader(source, entry, data["realsense"], _REALSENSE_FIELDS, RobotConfigError)
-    serial = reader.required("serial")
-    if isinstance(serial, int) and not isinstance(serial, bool):
-        serial = str(serial)  # YAML reads an unquoted serial number as an integer
-    if not isinstance(serial, str) or not serial.strip():
-        reader.fail(
-            f"field 'serial' must be the camera's serial number (rs-enumerate-devices shows it), got {serial!r}"
-        )
-    size = (int(reader.number("width", 640)), int(reader.number("height", 480)))
-    if size not in REALSENSE_SIZES:
-        sizes = ", ".join(f"{w}x{h}" for w, h in REALSENSE_SIZES)
-        reader.fail(f"{size[0]}x{size[1]} is no size both RealSense streams have; sizes: {sizes}")
-    fps = int(reader.number("fps", 30))
-    if fps not in REALSENSE_RATES:
-        reader.fail(f"fps {fps} is no RealSense rate; rates: {', '.join(map(str, REALSENSE_RATES))}")
-    quaternion = np.array(reader.vector("quaternion", (4,)))
-    if not 0.9 < np.linalg.norm(quaternion) < 1.1:
-        reader.fail(
-            f"quaternion {tuple(quaternion)} (w, x, y, z) must have length 1, got {np.linalg.norm(quaternion):.3f}"
-        )
-    recording = reader.data.get("recording")
-    if recording is not None:
-        recording = reader.string("recording")
-        if not Path(recording).is_absolute() and Path(source).is_file():
-            recording = str(Path(source).parent / recording)  # relative to the configuration's file
-    return RealSenseSettings(
-        serial=serial,
-        pose=Transform.from_mujoco(np.array(reader.vector("position", (3,))), quaternion / np.linalg.norm(quaternion)),
-        width=size[0],
-        height=size[1],
-        fps=fps,
-        recording=recording,
-    )
+def _no_action(reader: Reader) -> str:
+    if "action" in reader.data:
+        reader.fail("field 'action' names a ROS action; libfranka drives the Franka hand itself (leave it out)")
+    return ""

@@ -7,7 +7,7 @@ from collections.abc import Callable
 from pathlib import Path
 
 from roboscript.backends.driven import DriverBackend
-from roboscript.robot_config import RobotConfig, load_robot_config
+from roboscript.robot_config import RobotConfig, RobotConfigError, load_robot_config
 
 TF_CONNECT_TIMEOUT = 10.0  # seconds for the robot's base frame to appear in TF when the backend connects
 
@@ -23,6 +23,8 @@ def ros_backend(
     from roboscript.ros.driver import RosDriver
 
     config = config if isinstance(config, RobotConfig) else load_robot_config(config)
+    if config.driver != "ros":
+        raise RobotConfigError(config.source or config.name, "driver", f"is {config.driver}, not ros")
     driver = RosDriver(config, node_name)
     try:
         # TF's listener has only just started: it first connects to every publisher of /tf and /tf_static, which

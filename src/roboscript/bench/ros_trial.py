@@ -17,7 +17,7 @@ from roboscript.bench.tasks import Task
 from roboscript.codegen.sandbox import ExecutionResult
 from roboscript.perception.modes import SEGMENTATION, PerceptionMode, perception_mode
 from roboscript.processes import at_process_exit
-from roboscript.robot_config import DEFAULT_CONFIGS
+from roboscript.robot_config import ros_config_for
 
 REAL_TIME_FACTOR = 2.0
 _MASTER: tuple | None = None  # (process, uri, home): one per process, as this process's ROS node is bound to it
@@ -89,7 +89,7 @@ class RosTrialWorld:
                 task=self.task.id if spec.world is None else None,
                 suite=spec.suite,
             )
-            self.backend = ros_backend(spec.robot_config or DEFAULT_CONFIGS[spec.robot])
+            self.backend = ros_backend(spec.robot_config or ros_config_for(spec.robot))
             mode = ros_perception(spec.perception)
             tools = build_tools(self.backend, mode, seed=spec.seed, scene=load_world(self.task.world))
             self.namespace = tools.namespace()

@@ -34,10 +34,12 @@ from roboscript.trajectory import JointTrajectory
 log = logging.getLogger(__name__)
 
 WAYPOINT_SPACING = 0.05  # seconds of the plan between waypoints sent (the plan's own samples are denser)
-GOAL_TOLERANCE = 0.005  # radians from the motion's last set-point within which the arm counts as arrived
+GOAL_TOLERANCE = 0.005  # radians from the plan's last positions within which the arm counts as arrived
 SETTLE_TIME = 1.0  # robot seconds a finished motion is given to come within GOAL_TOLERANCE (a FollowJointTrajectory's
 # goal time tolerance): the simulator's arm lags its set-point by up to 0.02 rad as a motion ends
-GRASP_TOLERANCE = 0.08  # metres either side of the commanded width within which libfranka's grasp succeeds: any
+# metres either side of the commanded width within which libfranka's grasp "succeeds": wide, so that closing on
+# anything or nothing is not an error (whether something is held is told from the width)
+GRASP_TOLERANCE = 0.08
 
 
 def _franky():
@@ -51,8 +53,8 @@ def _franky():
 class _Motion(TrajectoryGoal):
     """A motion sent to the arm: done when libfranka says so, aborted with its exception."""
 
-    def __init__(self, driver: FrankyDriver):
-        self._driver = driver
+    def __init__(self, driver: FrankyDriver, last: np.ndarray):
+        self._driver, self._last = driver, last  # the plan's last positions, in libfranka's joint order
         self._final: GoalStatus | None = None
         self._ended_at: float | None = None  # robot time libfranka said the motion ended
 
@@ -71,9 +73,9 @@ class _Motion(TrajectoryGoal):
         return self._final
 
     def _settled(self) -> bool:
-        state = self._driver.robot_state()
-        lag = float(np.max(np.abs(np.array(state.q) - np.array(state.q_d))))
-        return lag <= GOAL_TOLERANCE or self._driver.now() - self._ended_at >= SETTLE_TIME
+        # against the plan's end: once a motion has ended, libfranka's set-point is wherever the arm is
+        off = float(np.max(np.abs(np.array(self._driver.robot_state().q) - self._last)))
+        return off <= GOAL_TOLERANCE or self._driver.now() - self._ended_at >= SETTLE_TIME
 
     def cancel(self) -> None:
         self._driver.stop_motion()
@@ -94,12 +96,18 @@ class FrankyDriver(Driver):
         try:
             self._robot = franky.Robot(settings.host, realtime_config=realtime)
             self._gripper = franky.Gripper(settings.host)
-        except franky.Exception as error:
+        except franky.RealtimeException as error:
+            raise DriverError(
+                f"libfranka needs a real-time kernel here ({error}): run on one, or set realtime: ignore in "
+                f"{config.source or config.name} (at your own risk on a real arm)"
+            ) from None
+        except (franky.Exception, franky.GripperException) as error:
             raise DriverError(
                 f"no Franka answers at {settings.host} ({type(error).__name__}: {error}): is the arm's control "
                 "interface (FCI) enabled in Desk, and is this its address? (franky-sim: is it running?)"
             ) from None
         self._lock = threading.Lock()
+        self._stopping = False  # a stop was asked for: the motion's end is a cancellation, not a fault
         self._clock: tuple[float, float] | None = None  # (robot time, monotonic time when it last moved)
         self._width = float(self._gripper.width)
         self._names = list(config.robot.arm_joints)
@@ -108,6 +116,7 @@ class FrankyDriver(Driver):
     # --- state ---
 
     def robot_state(self):
+        """libfranka's latest robot state (``franky.RobotState``)."""
         with self._lock:
             return self._robot.state
 
@@ -145,7 +154,7 @@ class FrankyDriver(Driver):
                 self._robot.move(franky.JointWaypointMotion(waypoints), asynchronous=True)
         except (franky.Exception, RuntimeError) as error:
             raise DriverError(f"libfranka refused the motion: {type(error).__name__}: {error}") from None
-        return _Motion(self)
+        return _Motion(self, np.asarray(trajectory.positions[-1])[order])
 
     def motion_status(self) -> GoalStatus:
         """Where the last motion stands (``active`` while it runs); recovers from the robot's errors once reported."""
@@ -156,10 +165,16 @@ class FrankyDriver(Driver):
         except (franky.Exception, RuntimeError) as error:  # libfranka's, and its trajectory generator's
             detail = f"{type(error).__name__}: {error}"
             recovered = self._recover()
-            return GoalStatus("aborted", detail + ("" if recovered else "; libfranka could not recover from it"))
+            state = "cancelled" if self._stopping else "aborted"  # a stop ends the motion with libfranka's error
+            self._stopping = False
+            return GoalStatus(state, detail + ("" if recovered else "; libfranka could not recover from it"))
+        if finished:
+            self._stopping = False
         return GoalStatus("succeeded") if finished else GoalStatus("active")
 
     def stop_motion(self) -> None:
+        """Stops the running motion, if any (the arm holds where it is)."""
+        self._stopping = True
         try:
             with self._lock:
                 self._robot.stop()
@@ -188,7 +203,7 @@ class FrankyDriver(Driver):
                 raise DriverError(f"the Franka hand did not finish within {timeout:.1f} s; it was stopped")
             reached = bool(future.get())
             self._width = float(self._gripper.width)
-        except self._franky.Exception as error:
+        except (self._franky.Exception, self._franky.GripperException) as error:
             raise DriverError(f"the Franka hand failed: {type(error).__name__}: {error}") from None
         # libfranka's "grasped" only says the width ended within the tolerances of the one commanded (here: closed),
         # so whether the fingers stopped on something is left to the backend, from the width
@@ -204,8 +219,10 @@ class FrankyDriver(Driver):
         return self._cameras.frame(camera, timeout, time.monotonic() - (self.now() - not_before))
 
     def close(self) -> None:
-        self.stop_motion()
-        self._cameras.close()
+        try:
+            self.stop_motion()
+        finally:
+            self._cameras.close()
 
 
 def _waypoint_indices(times: np.ndarray, spacing: float) -> list[int]:

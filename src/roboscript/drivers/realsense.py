@@ -9,14 +9,15 @@ A camera is a live device found by its serial number, or a recording of one (a `
 from __future__ import annotations
 
 import contextlib
+import datetime
 import logging
 import time
 from collections.abc import Sequence
 
 import numpy as np
 
+from roboscript.camera_config import CameraConfig, RealSenseSettings
 from roboscript.drivers.base import CameraSource, DriverError
-from roboscript.robot_config import CameraConfig, RealSenseSettings
 from roboscript.robot_io import CameraFrame
 
 log = logging.getLogger(__name__)
@@ -54,18 +55,30 @@ class RealSenseCamera:
         except RuntimeError as error:
             where = f"the recording {settings.recording}" if settings.recording else f"serial {settings.serial}"
             raise DriverError(f"camera {name!r}: librealsense could not start {where}: {error}") from None
+        try:
+            self._intrinsics = self._check(profile)
+        except BaseException:
+            self._pipeline.stop()
+            raise
+        self._align = rs.align(rs.stream.color)
+
+    def _check(self, profile) -> np.ndarray:
+        """Checks the started device against the configuration; returns the colour stream's intrinsics."""
+        rs, settings = self._rs, self.settings
         device = profile.get_device()
         if settings.recording:
-            device.as_playback().set_real_time(False)  # every recorded frame, however slowly they are asked for
+            # Every recorded frame, however slowly asked for; the pipeline began playing in real time as it started,
+            # and may have dropped a frame already, so play from the beginning again.
+            playback = device.as_playback()
+            playback.set_real_time(False)
+            playback.seek(datetime.timedelta(0))
         serial = device.get_info(rs.camera_info.serial_number)
         if serial != settings.serial:
-            self._pipeline.stop()
             raise DriverError(
-                f"camera {name!r} is configured as serial {settings.serial}, but {settings.recording or 'the device'} "
-                f"is serial {serial}"
+                f"camera {self.name!r} is configured as serial {settings.serial}, but "
+                f"{settings.recording or 'the device'} is serial {serial}"
             )
-        self._align = rs.align(rs.stream.color)
-        self._intrinsics = _matrix(profile.get_stream(rs.stream.color).as_video_stream_profile().get_intrinsics())
+        return _matrix(profile.get_stream(rs.stream.color).as_video_stream_profile().get_intrinsics())
 
     def frame(self, timeout: float, not_before: float) -> CameraFrame:
         """The first frame captured at ``not_before`` (``time.monotonic`` seconds) or later, within ``timeout``
@@ -75,7 +88,8 @@ class RealSenseCamera:
         while True:
             left = deadline - time.monotonic()
             ok, frames = self._pipeline.try_wait_for_frames(max(1, int(left * 1000)))
-            if ok and _captured(frames, rs) >= not_before:
+            # a recording's stamps are of when it was recorded: its frames count as taken now, in order
+            if ok and (self.settings.recording or _captured(frames, rs) >= not_before):
                 break
             if time.monotonic() >= deadline or (not ok and self.settings.recording):
                 ended = " (the recording has ended)" if self.settings.recording and not ok else ""

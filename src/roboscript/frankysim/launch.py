@@ -3,6 +3,7 @@ stops it."""
 
 from __future__ import annotations
 
+import collections
 import subprocess
 import sys
 import threading
@@ -25,28 +26,34 @@ class FrankySim:
         if joints is not None:
             command += ["--joints", *map(str, joints)]
         self._process = subprocess.Popen(
-            command, stdin=subprocess.PIPE, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True
+            command, stdin=subprocess.PIPE, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True
         )
+        # Its output is read for as long as it runs: a full pipe would block the server's 1 kHz loop.
+        self._output: collections.deque[str] = collections.deque(maxlen=50)
+        self._serving = threading.Event()
+        self._host = ""
+        threading.Thread(target=self._read_output, daemon=True).start()
         self.host = self._wait_for_host()
 
+    def _read_output(self) -> None:
+        for line in self._process.stdout:
+            self._output.append(line.rstrip())
+            if line.startswith("serving "):
+                self._host = line.split()[1]
+                self._serving.set()
+
     def _wait_for_host(self) -> str:
-        lines: list[str] = []
-        reader = threading.Thread(target=lambda: lines.append(self._process.stdout.readline()), daemon=True)
-        reader.start()
-        reader.join(START_TIMEOUT)
-        line = lines[0].strip() if lines else ""
-        if not line.startswith("serving "):
+        if not self._serving.wait(START_TIMEOUT):
             self.stop()
-            error = self._process.stderr.read()[-2000:] if self._process.stderr else ""
-            raise FrankySimError(
-                f"franky-sim did not start within {START_TIMEOUT:.0f} s: {line or error or 'no output'}"
-            )
-        return line.split()[1]
+            said = "\n".join(list(self._output)[-10:]) or "no output"
+            raise FrankySimError(f"franky-sim did not start within {START_TIMEOUT:.0f} s: {said}")
+        return self._host
 
     def stop(self) -> None:
+        """Ends the server (closing its standard input is its signal), killing it if it does not end in 10 s."""
         if self._process.poll() is None:
             try:
-                self._process.stdin.close()  # the server's signal to end
+                self._process.stdin.close()
                 self._process.wait(timeout=10)
             except (OSError, subprocess.TimeoutExpired):
                 self._process.kill()

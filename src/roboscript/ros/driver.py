@@ -9,10 +9,8 @@ from __future__ import annotations
 
 import collections
 import json
-import os
 import threading
 import time
-import xmlrpc.client
 
 import numpy as np
 
@@ -30,13 +28,13 @@ from roboscript.drivers.realsense import RealSenseCameras
 from roboscript.geometry import Transform
 from roboscript.robot_config import RobotConfig
 from roboscript.robot_io import CameraFrame
+from roboscript.ros.master import check_master
 from roboscript.ros.messages import action_types
 from roboscript.trajectory import JointTrajectory
 
 _NODE_LOCK = threading.Lock()
 _NODE_STARTED = False
 LABELS_TOPIC = "/roboscript/segmentation_labels"
-MASTER_TIMEOUT = 1.5  # seconds for the ROS master to answer before a run gives up on it
 CONNECT_TIMEOUT = 10.0  # seconds to connect to an action server the master knows of (a busy machine is slow)
 FRAME_HISTORY = 4  # messages kept a camera topic: enough to find a complete frame when one topic lags the others
 LABELS_WAIT = 10.0  # seconds to wait for the latched labels: a busy machine delays a new subscriber's first message
@@ -56,40 +54,9 @@ _STATES = {  # actionlib's GoalStatus codes
 }
 
 
-class _TimedTransport(xmlrpc.client.Transport):
-    def __init__(self, timeout: float):
-        super().__init__()
-        self._timeout = timeout
-
-    def make_connection(self, host):
-        connection = super().make_connection(host)
-        connection.timeout = self._timeout
-        return connection
-
-
-def check_master(uri: str | None = None, timeout: float = MASTER_TIMEOUT) -> None:
-    """Raises :class:`DriverError` unless the ROS master at ``uri`` (default ``ROS_MASTER_URI``) answers within
-    ``timeout`` seconds. rospy itself retries an absent master for ever ("Will keep trying")."""
-    uri = uri or os.environ.get("ROS_MASTER_URI")
-    if not uri:
-        raise DriverError("ROS_MASTER_URI is not set: start a master (rosmaster --core -p 11311) and export its URI")
-    started = time.monotonic()
-    try:
-        proxy = xmlrpc.client.ServerProxy(uri, transport=_TimedTransport(timeout))
-        code, _, _ = proxy.getPid("/roboscript_probe")
-    except (OSError, xmlrpc.client.Error, ValueError) as error:
-        raise DriverError(
-            f"no ROS master answers at {uri} ({type(error).__name__}: {error}, after "
-            f"{time.monotonic() - started:.1f} s): start one (rosmaster --core -p PORT, or `roboscript ros-sim`), "
-            "or name the running one with --master URI"
-        ) from None
-    if code != 1:
-        raise DriverError(f"{uri} answered, but not as a ROS master does (getPid returned code {code})")
-
-
 def start_node(name: str = "roboscript") -> None:
     """Starts this process's ROS node once (``ROS_MASTER_URI`` names the master); Ctrl-C stays Python's. Raises
-    :class:`DriverError` within :data:`MASTER_TIMEOUT` if no master answers."""
+    :class:`DriverError` within :data:`roboscript.ros.master.MASTER_TIMEOUT` if no master answers."""
     global _NODE_STARTED
     import rospy
 

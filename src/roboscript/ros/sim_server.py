@@ -24,6 +24,7 @@ import numpy as np
 
 from roboscript.backends.mujoco_backend import MujocoBackend
 from roboscript.robot_config import RobotConfig
+from roboscript.ros.master import check_master
 from roboscript.ros.messages import action_types
 from roboscript.ros.sim_cameras import OPTICAL_FRAME, CameraPublisher
 from roboscript.sim.cameras import camera_pose_opencv
@@ -415,6 +416,7 @@ def serve(
     """Runs ``roboscript ros-sim``: the world served as a ROS robot until ROS shuts down or the process is killed."""
     import rospy
 
+    check_master()  # rospy would wait for an absent master for ever
     rospy.set_param("/use_sim_time", True)  # before any node of ours reads it: clients follow /clock
     rospy.init_node(node_name, disable_signals=False)
     with MujocoBackend(world, robot=robot, seed=seed, randomize=randomize) as backend:
