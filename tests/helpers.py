@@ -6,11 +6,26 @@ tests can compute joint waypoints without depending on it.
 
 from __future__ import annotations
 
+import importlib.util
+
 import mujoco
 import numpy as np
+import pytest
 
 from roboscript.geometry import matrix_to_quat
 from roboscript.sim.world import SimWorld
+
+# Every arm; the FR3's model comes with the franky extra, and its cases are skipped where that is not installed.
+ARMS = (
+    "panda",
+    "ur5e",
+    pytest.param(
+        "fr3",
+        marks=pytest.mark.skipif(
+            importlib.util.find_spec("franky_sim") is None, reason="the FR3's model comes with the franky extra"
+        ),
+    ),
+)
 
 DOWN = np.array([[1.0, 0.0, 0.0], [0.0, -1.0, 0.0], [0.0, 0.0, -1.0]])  # TCP z pointing at the table
 DOWN_QUAT = matrix_to_quat(DOWN)

@@ -4,13 +4,13 @@ import mujoco
 import numpy as np
 import pytest
 
-from helpers import tcp_ik
+from helpers import ARMS, tcp_ik
 from roboscript.backends import BackendError
 from roboscript.backends.mujoco_backend import MujocoBackend
 from roboscript.sim.world_file import parse_world
 from roboscript.trajectory import JointTrajectory, min_jerk_through
 
-ROBOTS = ("panda", "ur5e", "fr3")
+ROBOTS = ARMS
 TABLE = 0.82
 
 

@@ -3,6 +3,7 @@
 import numpy as np
 import pytest
 
+from helpers import ARMS
 from helpers import DOWN_QUAT as DOWN
 from roboscript.assembly import build_tools
 from roboscript.backends.mujoco_backend import MujocoBackend
@@ -10,7 +11,7 @@ from roboscript.geometry import Transform, matrix_to_quat
 from roboscript.planning.ground_truth_scene import ground_truth_motion
 from roboscript.sim.world_file import parse_world
 
-ROBOTS = ("panda", "ur5e", "fr3")
+ROBOTS = ARMS
 
 
 @pytest.mark.parametrize("robot", ROBOTS)

@@ -4,6 +4,7 @@ search finds, and they are far fewer than the lever-arm bound asks for."""
 import numpy as np
 import pytest
 
+from helpers import ARMS
 from helpers import DOWN_QUAT as DOWN
 from roboscript.backends.mujoco_backend import MujocoBackend
 from roboscript.geometry import Transform, quat_to_matrix
@@ -12,7 +13,7 @@ from roboscript.planning.path_checks import arm_travel, first_blocked
 from roboscript.planning.planner import densify
 from roboscript.sim.world_file import parse_world
 
-ROBOTS = ("panda", "ur5e", "fr3")
+ROBOTS = ARMS
 
 
 def _holding_a_box(robot: str):

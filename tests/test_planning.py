@@ -6,6 +6,7 @@ import sys
 import numpy as np
 import pytest
 
+from helpers import ARMS
 from helpers import DOWN_QUAT as DOWN
 from roboscript.backends.mujoco_backend import MujocoBackend
 from roboscript.geometry import Transform, rotation_angle_between
@@ -37,7 +38,7 @@ from roboscript.planning.planner import (
 from roboscript.planning.roadmap import roadmap_path
 from roboscript.sim.world_file import parse_world
 
-ROBOTS = ("panda", "ur5e", "fr3")
+ROBOTS = ARMS
 TABLE = 0.82
 
 
