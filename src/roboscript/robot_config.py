@@ -4,8 +4,8 @@ A YAML file names the robot's description (``panda``, ``ur5e``, ``fr3``) and its
 driver's joint names for the model's joints, where joint states, trajectories and the gripper are found as ROS topics
 and action servers, the frames) or ``franky`` (libfranka's address, and where the base stands). Then the cameras
 (:mod:`roboscript.camera_config`) and the safety limits: a speed scale, the workspace box every trajectory must stay
-in, and the table's height no TCP may go below. Packaged examples live in ``robot_configs/`` (``roboscript
-robot-configs`` lists them).
+in, and the table's height no TCP may go below. Packaged examples live in ``robot_configs/`` (:func:`config_names`
+lists them).
 """
 
 from __future__ import annotations
