@@ -97,3 +97,18 @@ def test_a_cancelled_motion_ends_as_cancelled_and_the_next_one_runs(arm):
     assert status.state == "cancelled" and "preempted" in status.detail
     target = _move(arm, np.array([0.1, 0, 0, 0, 0, 0, 0]))
     assert np.allclose(arm.joint_positions(), target, atol=0.01)
+
+
+def test_in_a_benchmark_world_franky_sim_runs_the_worlds_fr3_among_its_table_and_objects():
+    """The world built as the MuJoCo backend builds it, the arm where the world stands it, driven by franky-sim's
+    torques: it holds its home, follows a plan, and its hand closes on nothing and opens."""
+    with FrankySim(world="world_2_pick_and_place") as sim:
+        backend = franky_backend(_config(sim.host))
+        try:
+            assert np.allclose(backend.joint_positions(), get_robot("fr3").home, atol=0.01)
+            target = _move(backend, np.array([0.3, 0.2, 0.0, -0.2, 0.0, 0.0, 0.0]))
+            assert np.allclose(backend.joint_positions(), target, atol=0.01)
+            closed = backend.set_gripper(1.0)
+            assert not closed.blocked and backend.set_gripper(0.0).width > 0.075
+        finally:
+            backend.close()

@@ -40,6 +40,7 @@ SETTLE_TIME = 1.0  # robot seconds a finished motion is given to come within GOA
 # metres either side of the commanded width within which libfranka's grasp "succeeds": wide, so that closing on
 # anything or nothing is not an error (whether something is held is told from the width)
 GRASP_TOLERANCE = 0.08
+HAND_EMPTY = 0.004  # metres: a hand closed on nothing stops within this (franky-sim's at 1.6 to 2.3 mm)
 
 
 def _franky():
@@ -205,9 +206,9 @@ class FrankyDriver(Driver):
             self._width = float(self._gripper.width)
         except (self._franky.Exception, self._franky.GripperException) as error:
             raise DriverError(f"the Franka hand failed: {type(error).__name__}: {error}") from None
-        # libfranka's "grasped" only says the width ended within the tolerances of the one commanded (here: closed),
-        # so whether the fingers stopped on something is left to the backend, from the width
-        return GripperResult(self._width, stalled=None, reached=reached)
+        # libfranka's "grasped" only says the width ended within the tolerances of the one commanded (here: closed);
+        # whether the fingers stopped on something is told from the width
+        return GripperResult(self._width, stalled=closing and self._width > HAND_EMPTY, reached=reached)
 
     # --- cameras ---
 

@@ -21,10 +21,20 @@ class FrankySimError(FailureError, RuntimeError):
 class FrankySim:
     """A running franky-sim server; ``host`` is the loopback address it serves libfranka's protocol on."""
 
-    def __init__(self, base: Sequence[float] = (0.0, 0.0, 0.0), joints: Sequence[float] | None = None):
+    def __init__(
+        self,
+        base: Sequence[float] = (0.0, 0.0, 0.0),
+        joints: Sequence[float] | None = None,
+        world: str | None = None,
+    ):
+        """An FR3 alone with its base at ``base``, or in ``world`` (a world's name or file: its scene, with the arm
+        where the world stands it); ``joints``: where the arm starts (default: franky-sim's, or the FR3's home in a
+        world)."""
         command = [sys.executable, "-m", "roboscript.frankysim.server", "--base", *map(str, base)]
         if joints is not None:
             command += ["--joints", *map(str, joints)]
+        if world is not None:
+            command += ["--world", world]
         self._process = subprocess.Popen(
             command, stdin=subprocess.PIPE, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True
         )

@@ -8,17 +8,29 @@ import argparse
 import sys
 import threading
 
+from roboscript.sim.world_catalog import load_world
+
 
 def main(argv: list[str] | None = None) -> int:
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     parser.add_argument("--base", type=float, nargs=3, default=(0.0, 0.0, 0.0), help="the arm's base in the world")
     parser.add_argument("--joints", type=float, nargs=7, default=None, help="where the arm starts (radians)")
+    parser.add_argument(
+        "--world", default=None, help="a world (packaged name or file): its scene, the arm where it stands"
+    )
     args = parser.parse_args(argv)
     from franky_sim import DEFAULT_INITIAL_JOINT_POS, SimulationServer
     from franky_sim.mujoco_simulator import MujocoSimulator
 
-    with MujocoSimulator(enable_visualization=False) as sim:
-        robot = sim.add_robot(initial_q=args.joints or DEFAULT_INITIAL_JOINT_POS, position=tuple(args.base))
+    if args.world is not None:
+        from roboscript.frankysim.world import WorldSimulator  # franky-sim's: the optional extra
+
+        simulator = WorldSimulator(load_world(args.world))
+    else:
+        simulator = MujocoSimulator(enable_visualization=False)
+    with simulator as sim:
+        start = args.joints or (None if args.world else DEFAULT_INITIAL_JOINT_POS)  # a world's arm starts at home
+        robot = sim.add_robot(initial_q=start, position=tuple(args.base))
         with SimulationServer(sim) as server:
             server.run_async()
             print(f"serving {robot.hostname}", flush=True)
