@@ -112,3 +112,31 @@ def test_in_a_benchmark_world_franky_sim_runs_the_worlds_fr3_among_its_table_and
             assert not closed.blocked and backend.set_gripper(0.0).width > 0.075
         finally:
             backend.close()
+
+
+def test_a_mirror_of_franky_sims_world_sees_and_checks_what_franky_sim_runs():
+    """The cameras and the checks of a trial through libfranka read franky-sim's world through a mirror built on
+    this side and set to franky-sim's state: after a motion the mirror's arm is where libfranka says it is."""
+    from roboscript.frankysim.mirror import MirrorCameras, WorldMirror
+    from roboscript.sim.world_catalog import load_world
+
+    world = load_world("world_2_pick_and_place")
+    with FrankySim(world="world_2_pick_and_place") as sim:
+        mirror = WorldMirror(sim, world)
+        cameras = MirrorCameras(mirror)
+        backend = franky_backend(_config(sim.host), cameras=cameras)
+        try:
+            assert backend.camera_names() == ["camera_left", "camera_right", "camera_top"]
+            target = _move(backend, np.array([0.4, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0]))
+            frame = backend.capture("camera_top")
+            arm = mirror.world.robot.qpos
+            # read one after the other while the arm still settles (within 5 mrad of the plan: the goal tolerance)
+            assert np.allclose(mirror.world.data.qpos[arm], backend.joint_positions(), atol=5e-3)
+            assert np.allclose(mirror.world.data.qpos[arm], target, atol=0.01)
+            assert frame.rgb.shape == (480, 640, 3) and frame.segmentation is None
+            assert (frame.depth > 0).mean() > 0.9  # the table fills the top camera's view
+            apple = mirror.ground_truth.pose("apple").position
+            assert 0.8 < apple[2] < 0.9  # still on the table (0.82 m) after the world came up under franky-sim
+        finally:
+            backend.close()
+            cameras.close()

@@ -4,10 +4,14 @@ stops it."""
 from __future__ import annotations
 
 import collections
+import json
+import queue
 import subprocess
 import sys
 import threading
 from collections.abc import Sequence
+
+import numpy as np
 
 from roboscript.errors import FailureError
 
@@ -42,11 +46,16 @@ class FrankySim:
         self._output: collections.deque[str] = collections.deque(maxlen=50)
         self._serving = threading.Event()
         self._host = ""
+        self._states: queue.Queue[str] = queue.Queue()
+        self._asking = threading.Lock()
         threading.Thread(target=self._read_output, daemon=True).start()
         self.host = self._wait_for_host()
 
     def _read_output(self) -> None:
         for line in self._process.stdout:
+            if line.startswith("state "):
+                self._states.put(line[len("state ") :])
+                continue
             self._output.append(line.rstrip())
             if line.startswith("serving "):
                 self._host = line.split()[1]
@@ -58,6 +67,19 @@ class FrankySim:
             said = "\n".join(list(self._output)[-10:]) or "no output"
             raise FrankySimError(f"franky-sim did not start within {START_TIMEOUT:.0f} s: {said}")
         return self._host
+
+    def state(self, timeout: float = 10.0) -> tuple[np.ndarray, np.ndarray]:
+        """The served world's joint positions and velocities now (started with a ``world`` only)."""
+        with self._asking:
+            try:
+                self._process.stdin.write("state\n")
+                self._process.stdin.flush()
+                answer = self._states.get(timeout=timeout)
+            except (OSError, queue.Empty):
+                said = "\n".join(list(self._output)[-5:])
+                raise FrankySimError(f"franky-sim gave no state within {timeout:.0f} s (did it end? {said})") from None
+        qpos, qvel = json.loads(answer)
+        return np.array(qpos), np.array(qvel)
 
     def stop(self) -> None:
         """Ends the server (closing its standard input is its signal), killing it if it does not end in 10 s."""

@@ -1,12 +1,14 @@
 """A franky-sim server for one FR3 (run as ``python -m roboscript.frankysim.server``): it serves libfranka's network
 protocol on a free loopback address, prints ``serving HOST`` once it does, and runs its physics in real time until
-its standard input closes or it is killed."""
+its standard input closes or it is killed. In a world (``--world``), a line ``state`` on its standard input is
+answered with a line ``state JSON``: the world's joint positions and velocities, for a mirror of it (cameras, checks)
+on the other side."""
 
 from __future__ import annotations
 
 import argparse
+import json
 import sys
-import threading
 
 from roboscript.sim.world_catalog import load_world
 
@@ -34,9 +36,10 @@ def main(argv: list[str] | None = None) -> int:
         with SimulationServer(sim) as server:
             server.run_async()
             print(f"serving {robot.hostname}", flush=True)
-            closed = threading.Event()
-            threading.Thread(target=lambda: (sys.stdin.read(), closed.set()), daemon=True).start()
-            closed.wait()
+            for line in sys.stdin:  # until the launcher closes it
+                if line.strip() == "state" and args.world is not None:
+                    qpos, qvel = sim.state()
+                    print("state " + json.dumps([qpos.tolist(), qvel.tolist()]), flush=True)
     return 0
 
 
