@@ -140,3 +140,16 @@ def test_a_mirror_of_franky_sims_world_sees_and_checks_what_franky_sim_runs():
         finally:
             backend.close()
             cameras.close()
+
+
+def test_the_papers_simple_0_runs_through_libfranka_seeing_only_the_cameras():
+    """The end-to-end proof: the reference program of "place the apple into the footed bowl" through franky and
+    libfranka's protocol to franky-sim, with full perception (nothing of the simulator's state reaches the tools),
+    and the task's check read from franky-sim's world on this side."""
+    from roboscript.bench.tasks import get_task
+    from roboscript.frankysim.trial import run_through_franky
+
+    task = get_task("simple_0")
+    trial = run_through_franky(task, task.reference_program(), "full")
+    assert trial.result.error is None, trial.result.output[-2000:]
+    assert trial.success, trial.checks

@@ -30,15 +30,16 @@ class FrankySim:
         base: Sequence[float] = (0.0, 0.0, 0.0),
         joints: Sequence[float] | None = None,
         world: str | None = None,
+        seed: int | None = None,
     ):
         """An FR3 alone with its base at ``base``, or in ``world`` (a world's name or file: its scene, with the arm
         where the world stands it); ``joints``: where the arm starts (default: franky-sim's, or the FR3's home in a
-        world)."""
+        world); ``seed``: the world laid out as a benchmark trial of that seed lays it out."""
         command = [sys.executable, "-m", "roboscript.frankysim.server", "--base", *map(str, base)]
         if joints is not None:
             command += ["--joints", *map(str, joints)]
         if world is not None:
-            command += ["--world", world]
+            command += ["--world", world] + (["--seed", str(seed)] if seed is not None else [])
         self._process = subprocess.Popen(
             command, stdin=subprocess.PIPE, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True
         )

@@ -20,6 +20,7 @@ def main(argv: list[str] | None = None) -> int:
     parser.add_argument(
         "--world", default=None, help="a world (packaged name or file): its scene, the arm where it stands"
     )
+    parser.add_argument("--seed", type=int, default=None, help="with --world: lay it out as a trial of this seed does")
     args = parser.parse_args(argv)
     from franky_sim import DEFAULT_INITIAL_JOINT_POS, SimulationServer
     from franky_sim.mujoco_simulator import MujocoSimulator
@@ -27,7 +28,8 @@ def main(argv: list[str] | None = None) -> int:
     if args.world is not None:
         from roboscript.frankysim.world import WorldSimulator  # franky-sim's: the optional extra
 
-        simulator = WorldSimulator(load_world(args.world))
+        world = load_world(args.world)
+        simulator = WorldSimulator(world if args.seed is None else world.randomized(args.seed))
     else:
         simulator = MujocoSimulator(enable_visualization=False)
     with simulator as sim:
