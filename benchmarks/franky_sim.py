@@ -75,16 +75,12 @@ def main() -> None:
                     done.append(row)
                     with out.open("a") as stream:
                         stream.write(json.dumps(row) + "\n")
-                    print(
-                        f"{task_id} {label} {backend} seed {seed}: {'ok' if row['success'] else row['error'] or 'checks failed'} ({row['wall']:.0f} s)",
-                        flush=True,
-                    )
+                    said = "ok" if row["success"] else row["error"] or "checks failed"
+                    print(f"{task_id} {label} {backend} seed {seed}: {said} ({row['wall']:.0f} s)", flush=True)
     table: dict[tuple[str, str], dict[str, list]] = defaultdict(lambda: defaultdict(list))
     for row in done:
         table[(row["task"], row["program"])][row["backend"]].append(row)
-    print(
-        "\n| task | program | franky-sim (libfranka) | MuJoCo backend | wall per trial, franky-sim / MuJoCo (median s) |"
-    )
+    print("\n| task | program | through franky-sim | on the MuJoCo backend | median wall, franky-sim / MuJoCo (s) |")
     print("|---|---|---|---|---|")
     for (task_id, label), by_backend in sorted(table.items()):
         cells = []
