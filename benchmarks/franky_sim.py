@@ -3,7 +3,7 @@ and another simulator's arm make, with the FR3 and full perception on both sides
 
 Per task (default simple_0 and moderate_2) it runs the task's reference program and a program written from the
 prompt alone (``tests/data/prompt_corpus/concise/paper/<task>.py``), for seeds 0..N-1: through franky-sim
-(:func:`roboscript.frankysim.trial.run_through_franky`, the FR3 at speed scale 0.1) and on the MuJoCo backend
+(``backend="franky"``: :mod:`roboscript.bench.franky_trial`, the FR3 at speed scale 0.1) and on the MuJoCo backend
 (the same seed's layout, the FR3, the default speed scale). Results go to ``--out`` (a JSONL file) as they come;
 a rerun skips what is there. Prints whole-task success per task, program and backend, and the wall time per trial
 (medians). Figures, never assertions; franky-sim runs in real time, so each of its trials takes a minute or more.
@@ -22,7 +22,6 @@ from pathlib import Path
 
 from roboscript.bench.tasks import get_task
 from roboscript.bench.trial import TrialSpec, run_trial
-from roboscript.frankysim.trial import run_through_franky
 
 CORPUS = Path(__file__).resolve().parents[1] / "tests" / "data" / "prompt_corpus" / "concise" / "paper"
 
@@ -36,14 +35,10 @@ def programs(task_id: str) -> dict[str, str]:
 
 
 def run_one(task_id: str, label: str, program: str, backend: str, seed: int) -> dict:
-    task = get_task(task_id)
     started = time.monotonic()
-    if backend == "franky-sim":
-        trial = run_through_franky(task, program, "full", seed=seed)
-        success, error = trial.success, trial.result.error
-    else:
-        record = run_trial(TrialSpec(task_id, "fr3", seed, seed, program, perception="full"))
-        success, error = record.success, record.error
+    kind = "franky" if backend == "franky-sim" else "mujoco"
+    record = run_trial(TrialSpec(task_id, "fr3", seed, seed, program, perception="full", backend=kind))
+    success, error = record.success, record.error
     return {
         "task": task_id,
         "program": label,

@@ -4,6 +4,9 @@ franky (with libfranka inside) on this side, franky-sim on the other."""
 
 from __future__ import annotations
 
+import json
+import subprocess
+import sys
 import time
 
 import numpy as np
@@ -15,6 +18,7 @@ pytest.importorskip("franky_sim", reason="the franky extra is not installed (mak
 import yaml
 
 from roboscript.backends.franky import franky_backend
+from roboscript.bench.tasks import get_task
 from roboscript.drivers.base import DriverError
 from roboscript.frankysim.launch import FrankySim
 from roboscript.robot_config import config_path, parse_robot_config
@@ -142,14 +146,26 @@ def test_a_mirror_of_franky_sims_world_sees_and_checks_what_franky_sim_runs():
             cameras.close()
 
 
-def test_the_papers_simple_0_runs_through_libfranka_seeing_only_the_cameras():
+def test_the_papers_simple_0_runs_through_libfranka_seeing_only_the_cameras(tmp_path):
     """The end-to-end proof: the reference program of "place the apple into the footed bowl" through franky and
     libfranka's protocol to franky-sim, with full perception (nothing of the simulator's state reaches the tools),
     and the task's check read from franky-sim's world on this side."""
-    from roboscript.bench.tasks import get_task
-    from roboscript.frankysim.trial import run_through_franky
-
-    task = get_task("simple_0")
-    trial = run_through_franky(task, task.reference_program(), "full")
-    assert trial.result.error is None, trial.result.output[-2000:]
-    assert trial.success, trial.checks
+    program = tmp_path / "simple_0.py"
+    program.write_text(get_task("simple_0").reference_program())
+    command = [
+        sys.executable,
+        "-m",
+        "roboscript.cli",
+        "exec",
+        str(program),
+        "--task",
+        "simple_0",
+        "--backend",
+        "franky",
+    ]
+    run = subprocess.run(
+        [*command, "--robot", "fr3", "--trials", "1", "--json"], capture_output=True, text=True, timeout=900
+    )
+    assert run.returncode == 0, run.stderr[-2000:]
+    result = json.loads(run.stdout)
+    assert result["whole_task_success"] == 1.0, run.stdout[-3000:]

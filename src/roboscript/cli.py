@@ -381,14 +381,15 @@ def _add_perception_option(parser: argparse.ArgumentParser) -> None:
         type=_perception_mode,
         default=None,
         metavar="MODE",
-        help=modes + "; default: gt, or full with --backend ros",
+        help=modes + "; default: gt, or full with --backend ros or franky",
     )
     parser.add_argument(
         "--backend",
-        choices=["mujoco", "ros"],
+        choices=["mujoco", "ros", "franky"],
         default="mujoco",
         help="mujoco: the simulation in-process; ros: the world served by `roboscript ros-sim` on a master of the "
-        "trial's own, the tools on the ROS backend, perception from the cameras and the segmentation topic",
+        "trial's own, the tools on the ROS backend, perception from the cameras and the segmentation topic; franky: "
+        "the world served by franky-sim, its FR3 (--robot fr3) driven through libfranka, perception from the cameras",
     )
     parser.add_argument(
         "--robot-config",
@@ -419,8 +420,9 @@ def _resolve_perception(args: argparse.Namespace) -> None:
     A missing detector fails here, before any world is built."""
     from roboscript.perception.modes import DETECTOR_ENV, SEGMENTATION, perception_mode
 
-    on_robot = getattr(args, "backend", "mujoco") == "ros"
-    mode = args.perception or ("full" if on_robot else "gt")
+    backend = getattr(args, "backend", "mujoco")
+    on_robot = backend == "ros"
+    mode = args.perception or ("full" if backend in ("ros", "franky") else "gt")
     # A robot served by ros-sim (or with a segmentation node) grounds phrases in its segmentation topic by default.
     detector = args.detector or os.environ.get(DETECTOR_ENV) or (SEGMENTATION if on_robot else None)
     args.perception = perception_mode(mode, detector)

@@ -21,7 +21,7 @@ from roboscript.perception.modes import GROUND_TRUTH, PerceptionMode, perception
 from roboscript.phases import PhaseClock, phase
 
 MAX_OUTPUT = 4000  # characters of a program's printed output kept in its record
-BACKENDS = ("mujoco", "ros")
+BACKENDS = ("mujoco", "ros", "franky")
 
 
 @dataclass(frozen=True)
@@ -49,7 +49,9 @@ class TrialSpec:
     perception: PerceptionMode | str = GROUND_TRUTH
     suite: str = DEFAULT_SUITE  # the suite ``task`` is of: a packaged suite's name or a suite file's path
     program_source: str | None = None  # where a stored program came from (a file, an entry of one)
-    backend: str = "mujoco"  # mujoco, or ros: the world served by ros-sim, the tools on the ROS backend
+    # mujoco; ros: the world served by ros-sim, the tools on the ROS backend; franky: the world served by franky-sim,
+    # the tools driving its FR3 through libfranka
+    backend: str = "mujoco"
     robot_config: str | None = None  # the ROS backend's robot configuration (default: the arm's packaged one)
     record: str | None = None  # an MCAP file to record the trial into (roboscript.record)
 
@@ -279,6 +281,10 @@ def _trial_world(spec: TrialSpec, task: Task):
         from roboscript.bench.ros_trial import RosTrialWorld
 
         return RosTrialWorld(spec, task)
+    if spec.backend == "franky":
+        from roboscript.bench.franky_trial import FrankyTrialWorld
+
+        return FrankyTrialWorld(spec, task)
     return _TrialWorld(spec, task)
 
 
