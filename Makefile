@@ -26,12 +26,12 @@ test-deps:
 	$(PY) -m pip install -q -e ".[dev,perception,detectors,slowtests,ray,report,record,realsense,franky]"
 
 test: test-deps
-	$(VENV)/bin/ruff check src tests benchmarks
+	$(VENV)/bin/ruff check --no-cache src tests benchmarks
 	$(VENV)/bin/lint-imports
 	$(PY) -m pytest -q
 
 test-fast:
-	$(VENV)/bin/ruff check src tests benchmarks
+	$(VENV)/bin/ruff check --no-cache src tests benchmarks
 	$(VENV)/bin/lint-imports
 	$(PY) -m pytest -q -m "not slow"
 

@@ -8,7 +8,7 @@ prompt alone (``tests/data/prompt_corpus/concise/paper/<task>.py``), for seeds 0
 a rerun skips what is there. Prints whole-task success per task, program and backend, and the wall time per trial
 (medians). Figures, never assertions; franky-sim runs in real time, so each of its trials takes a minute or more.
 
-    python benchmarks/franky_sim.py --trials 5 --out out/franky_sim.jsonl
+    python benchmarks/franky_trials.py --trials 5 --out out/franky_sim.jsonl
 """
 
 from __future__ import annotations
