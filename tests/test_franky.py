@@ -81,6 +81,20 @@ def test_no_franka_at_the_address_is_a_clear_error():
         franky_backend(_config("127.0.0.254"))
 
 
+def test_a_run_from_the_command_line_on_a_franka_that_does_not_answer_names_its_address(tmp_path):
+    data = yaml.safe_load(config_path("fr3_franky").read_text())
+    data["franky"].update(host="127.0.0.254", realtime="ignore")
+    config = tmp_path / "lab.yaml"
+    config.write_text(yaml.safe_dump(data))
+    program = tmp_path / "program.py"
+    program.write_text("open_gripper()\n")
+    command = [sys.executable, "-m", "roboscript.cli", "exec", str(program), "--task", "simple_0"]
+    command += ["--backend", "franky", "--robot-config", str(config), "--yes", "--log-dir", str(tmp_path / "run")]
+    run = subprocess.run(command, capture_output=True, text=True, timeout=300)
+    assert run.returncode not in (0, 1), run.stdout
+    assert "no Franka answers at 127.0.0.254" in run.stderr, run.stderr[-2000:]
+
+
 def test_a_cancelled_motion_ends_as_cancelled_and_the_next_one_runs(arm):
     start = arm.joint_positions()
     robot = arm.robot

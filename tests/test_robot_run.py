@@ -22,8 +22,8 @@ import pytest
 pytest.importorskip("rospy", reason="ROS 1 is not installed here (scripts/setup.sh installs it on Debian)")
 
 from roboscript.bench.tasks import get_task
+from roboscript.replay import read_run_log, replay_on_twin
 from roboscript.ros.launch import start_master, start_sim
-from roboscript.ros.replay import read_run_log, replay_on_twin
 
 WORLD = "world_2_pick_and_place"
 SMALL_MOTIONS = """\
@@ -122,12 +122,3 @@ def test_an_unreachable_master_ends_the_run_with_its_address_instead_of_retrying
     assert run.returncode == 2, run.stderr
     assert "no ROS master answers at http://127.0.0.1:9" in run.stderr
     assert "Will keep trying" not in run.stderr + run.stdout
-
-
-def test_robot_only_options_without_a_robot_say_what_is_missing(tmp_path):
-    program = tmp_path / "small.py"
-    program.write_text(SMALL_MOTIONS)
-    command = [sys.executable, "-m", "roboscript.cli", "exec", str(program), "--task", "simple_0", "--dry-run"]
-    run = subprocess.run(command, capture_output=True, text=True, timeout=300)
-    assert run.returncode == 2
-    assert "--dry-run only apply to a running robot: add --backend ros --master URI" in run.stderr

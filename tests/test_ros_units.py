@@ -16,7 +16,7 @@ from roboscript.geometry import Transform
 from roboscript.robot_config import load_robot_config
 from roboscript.ros.driver import _newest_complete
 from roboscript.ros.master import check_master
-from roboscript.ros.run_log import logged_namespace
+from roboscript.run_log import logged_namespace
 
 
 def _message(stamp: float) -> SimpleNamespace:

@@ -1,5 +1,6 @@
-"""The command line's side of a run on a robot that is already running (``exec`` and ``run`` with ``--master``):
-its options, their checks, the confirmation prompt, and the report."""
+"""The command line's side of a run on a robot that is already running (``exec`` and ``run`` with ``--backend ros
+--master URI``, or ``--backend franky --robot-config FILE``): its options, their checks, the confirmation prompt,
+and the report."""
 
 from __future__ import annotations
 
@@ -10,14 +11,21 @@ import sys
 import time
 from collections.abc import Callable
 from pathlib import Path
+from typing import TYPE_CHECKING
 
 from roboscript.errors import UsageError
+
+if TYPE_CHECKING:
+    from roboscript.robot_config import RobotConfig
 
 ROBOT_ONLY = ("dry_run", "validate_in_sim", "yes", "log_dir")
 
 
 def add_robot_options(parser: argparse.ArgumentParser) -> None:
-    group = parser.add_argument_group("a robot that is already running (a real arm, or a ros-sim you started)")
+    group = parser.add_argument_group(
+        "a robot that is already running (a real arm, or a ros-sim or franky-sim you started): --backend ros --master "
+        "URI, or --backend franky --robot-config FILE (the file's franky.host is the arm's address)"
+    )
     group.add_argument(
         "--master",
         default=None,
@@ -38,18 +46,27 @@ def add_robot_options(parser: argparse.ArgumentParser) -> None:
     )
     group.add_argument("--yes", action="store_true", help="do not ask for confirmation before the first motion")
     group.add_argument(
-        "--log-dir", default=None, help="where the run's log (run.bag) and the twin's files go; default out/robot/TIME"
+        "--log-dir",
+        default=None,
+        help="where the run's log (run.bag on ROS, run.jsonl through franky) and the twin's files go; "
+        "default out/robot/TIME",
     )
 
 
 def robot_requested(args: argparse.Namespace) -> bool:
-    """Whether the command is to drive a running robot; refuses robot-only options without ``--master``."""
-    if getattr(args, "master", None) is None:
+    """Whether the command is to drive a running robot: on ROS, ``--master`` names its master; through franky,
+    ``--robot-config`` names the arm (a franky trial without one starts a franky-sim of its own). Refuses robot-only
+    options otherwise."""
+    franky_arm = args.backend == "franky" and getattr(args, "robot_config", None) is not None
+    if getattr(args, "master", None) is None and not franky_arm:
         given = [f"--{name.replace('_', '-')}" for name in ROBOT_ONLY if getattr(args, name, None)]
         if given:
-            raise UsageError(f"{', '.join(given)} only apply to a running robot: add --backend ros --master URI")
+            raise UsageError(
+                f"{', '.join(given)} only apply to a running robot: add --backend ros --master URI, or "
+                "--backend franky --robot-config FILE"
+            )
         return False
-    if args.backend != "ros":
+    if getattr(args, "master", None) is not None and args.backend != "ros":
         raise UsageError("--master names a ROS master: add --backend ros")
     if args.video:
         raise UsageError("--video records a simulation; on a robot, --dry-run or --validate-in-sim film the twin")
@@ -73,18 +90,35 @@ def confirmation(args: argparse.Namespace) -> Callable[[str], bool]:
     return ask
 
 
-def run_on_running_robot(args: argparse.Namespace, program: str, scene_ref: str) -> int:
-    """Runs ``program`` on the robot at ``--master`` in the scene ``scene_ref`` describes; prints what happened."""
+def running_robot_config(args: argparse.Namespace) -> tuple[RobotConfig, str]:
+    """The running robot's configuration, and where it is (a ROS master's URI, a Franka's address); refuses a
+    configuration whose driver is not the ``--backend`` asked for."""
     from roboscript.robot_config import load_robot_config, ros_config_for
-    from roboscript.robot_run import RobotRunPlan, run_on_robot
-    from roboscript.sim.world_catalog import load_world
 
-    confirm = confirmation(args)
+    config = load_robot_config(args.robot_config or ros_config_for(args.robot))
+    if config.driver != args.backend:
+        raise UsageError(
+            f"the robot configuration {config.source or config.name} drives its arm through {config.driver} "
+            f"(driver: {config.driver}), not {args.backend}: use --backend {config.driver}, or a configuration with "
+            f"driver: {args.backend}"
+        )
+    if config.franky is not None:
+        return config, config.franky.host
     uri = os.environ.get("ROS_MASTER_URI") if args.master == "env" else args.master
     if not uri:
         raise UsageError("--master env: ROS_MASTER_URI is not set")
     os.environ["ROS_MASTER_URI"] = uri
-    config = load_robot_config(args.robot_config or ros_config_for(args.robot))
+    return config, uri
+
+
+def run_on_running_robot(args: argparse.Namespace, program: str, scene_ref: str) -> int:
+    """Runs ``program`` on the running robot the options name, in the scene ``scene_ref`` describes; prints what
+    happened."""
+    from roboscript.robot_run import RobotRunPlan, log_path, run_on_robot
+    from roboscript.sim.world_catalog import load_world
+
+    confirm = confirmation(args)
+    config, where = running_robot_config(args)
     out = Path(args.log_dir or Path("out/robot") / time.strftime("%Y%m%d-%H%M%S"))
     plan = RobotRunPlan(
         config,
@@ -97,7 +131,7 @@ def run_on_running_robot(args: argparse.Namespace, program: str, scene_ref: str)
         seed=args.seed,
     )
     progress = (lambda line: None) if args.json else (lambda line: print(line, flush=True))
-    progress(f"robot: {config.name} on {uri}; log: {out / 'run.bag'}")
+    progress(f"robot: {config.name} at {where}; log: {log_path(plan)}")
     result = run_on_robot(program, plan, confirm, progress)
     if args.json:
         print(json.dumps(result.to_dict()))
@@ -114,7 +148,7 @@ def run_on_running_robot(args: argparse.Namespace, program: str, scene_ref: str)
 
 def add_replay_command(sub) -> None:
     replay = sub.add_parser("replay", help="replay a robot run's log (run.bag) on the simulated twin")
-    replay.add_argument("log", help="a run's log, as `exec`/`run --master` write it")
+    replay.add_argument("log", help="a run's log (run.bag or run.jsonl), as `exec` or `run` on a robot write it")
     replay.add_argument("--world", required=True, help="the twin's world: the scene's description (name or file)")
     replay.add_argument("--robot-config", default=None, help="default: the one the log names")
     replay.add_argument("--seed", type=int, default=0, help="with --randomize: the world's randomisation")
@@ -126,7 +160,7 @@ def add_replay_command(sub) -> None:
 
 
 def cmd_replay(args: argparse.Namespace) -> int:
-    from roboscript.ros.replay import read_run_log, replay_on_twin, replay_report
+    from roboscript.replay import read_run_log, replay_on_twin, replay_report
 
     record = read_run_log(args.log, args.robot_config)
     steps = replay_on_twin(record, args.world, seed=args.seed, randomize=args.randomize, video=args.video)

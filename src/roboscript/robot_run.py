@@ -1,9 +1,11 @@
-"""A program on a robot that is already running (a real arm, or a `roboscript ros-sim` someone started): sim-first,
-logged, and confirmed before the first motion.
+"""A program on a robot that is already running (a real arm; a `roboscript ros-sim` or a franky-sim someone started):
+sim-first, logged, and confirmed before the first motion.
 
 The run, in order:
 
-1. connect to the robot the configuration describes and start its log (:mod:`roboscript.ros.run_log`);
+1. connect to the robot the configuration describes, through its driver (ROS, or libfranka with franky), and start
+   its log: a rosbag ``run.bag`` on ROS (:mod:`roboscript.ros.run_log`), a JSON-lines ``run.jsonl`` through franky
+   (:mod:`roboscript.run_log`); ``roboscript replay`` reads both;
 2. build the tools on it, perception from its cameras, the scene's description naming what to look for;
 3. with ``dry_run`` or ``validate_in_sim``: look, build the twin of the scene as perceived (:mod:`roboscript.twin`),
    the twin's arm where the robot's is, and run the program on the twin, writing the trajectories it planned and a
@@ -16,17 +18,20 @@ from __future__ import annotations
 
 import json
 import time
-from collections.abc import Callable
+from collections.abc import Callable, Iterator
+from contextlib import contextmanager
 from dataclasses import dataclass, field
 from pathlib import Path
 
+from roboscript.backends.base import Backend
+from roboscript.backends.logged import LoggedBackend
 from roboscript.backends.mujoco_backend import MujocoBackend
 from roboscript.codegen.outcomes import Outcome
 from roboscript.codegen.sandbox import ExecutionResult, Limits
 from roboscript.perception.modes import GROUND_TRUTH, PerceptionMode
 from roboscript.robot_config import RobotConfig
+from roboscript.run_log import JsonRunLog, RunLog, logged_namespace
 from roboscript.sim.world_file import WorldSpec
-from roboscript.trajectory import JointTrajectory
 from roboscript.twin import Twin, perceived_twin
 
 TWIN_TOPIC = "/roboscript/twin"
@@ -103,23 +108,44 @@ class RobotRunResult:
         }
 
 
+def log_path(plan: RobotRunPlan) -> Path:
+    """Where a run's log goes: ``run.bag`` on ROS, ``run.jsonl`` through a driver of the project's own."""
+    return plan.out / ("run.bag" if plan.config.driver == "ros" else "run.jsonl")
+
+
+@contextmanager
+def connected(plan: RobotRunPlan) -> Iterator[tuple[Backend, RunLog]]:
+    """The robot ``plan`` names, through its configuration's driver, and the run's log, open until the block ends
+    (on ROS, the master is the one ``ROS_MASTER_URI`` names)."""
+    path = log_path(plan)
+    if plan.config.driver == "franky":
+        from roboscript.backends.franky import franky_backend
+
+        with franky_backend(plan.config) as robot, JsonRunLog(path) as log:
+            yield LoggedBackend(robot, log.backend_event), log
+        return
+    from roboscript.backends.ros import ros_backend
+    from roboscript.ros.run_log import RosRunLog
+
+    with ros_backend(plan.config) as robot, RosRunLog(plan.config, path) as log:
+        yield robot, log  # the bag records the commands as the robot's action servers hear them
+
+
 def run_on_robot(
     program: str,
     plan: RobotRunPlan,
     confirm: Callable[[str], bool],
     progress: Callable[[str], None] = print,
 ) -> RobotRunResult:
-    """Runs ``program`` on the robot ``plan`` describes (the ROS master is the one ``ROS_MASTER_URI`` names).
+    """Runs ``program`` on the robot ``plan`` describes.
 
     ``confirm(question)`` is asked once, before anything is sent to the robot; answering no ends the run."""
     from roboscript.assembly import build_tools
-    from roboscript.backends.ros import ros_backend
     from roboscript.bench.trial import check_and_execute
-    from roboscript.ros.run_log import RosRunLog, logged_namespace
 
     plan.out.mkdir(parents=True, exist_ok=True)
-    outcome = RobotRunResult(program, plan.out / "run.bag")
-    with ros_backend(plan.config) as robot, RosRunLog(plan.config, outcome.log) as log:
+    outcome = RobotRunResult(program, log_path(plan))
+    with connected(plan) as (robot, log):
         log.run(
             {
                 "robot_config": plan.config.source or plan.config.name,
@@ -162,31 +188,6 @@ def run_on_robot(
             log.outcome(outcome.to_dict())
 
 
-class _PlanningTwin(MujocoBackend):
-    """The twin's backend, keeping every command it is sent: the plan a dry run writes."""
-
-    def __init__(self, *args, **kwargs):
-        super().__init__(*args, **kwargs)
-        self.commands: list[dict] = []
-
-    def execute_trajectory(self, trajectory: JointTrajectory):
-        self.commands.append(
-            {
-                "kind": "trajectory",
-                "start_time": self.time(),
-                "joint_names": list(self.robot.arm_joints),
-                "times": trajectory.times.tolist(),
-                "positions": trajectory.positions.tolist(),
-                "velocities": trajectory.velocities.tolist(),
-            }
-        )
-        return super().execute_trajectory(trajectory)
-
-    def set_gripper(self, closed: float):
-        self.commands.append({"kind": "gripper", "start_time": self.time(), "closed": float(closed)})
-        return super().set_gripper(closed)
-
-
 def run_on_twin(
     program: str, twin: Twin, start, plan: RobotRunPlan, progress: Callable[[str], None] = print
 ) -> TwinRun:
@@ -197,7 +198,7 @@ def run_on_twin(
 
     folder = plan.out / "twin"
     folder.mkdir(parents=True, exist_ok=True)
-    backend = _PlanningTwin(twin.world, plan.config.robot.name, start=start)
+    backend = LoggedBackend(MujocoBackend(twin.world, plan.config.robot.name, start=start))
     recorder, files = None, []
     try:
         if plan.video:

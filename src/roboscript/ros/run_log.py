@@ -18,7 +18,8 @@ And, written by the run itself as ``std_msgs/String`` JSON:
 - ``/roboscript/tool_call``: each tool call, its arguments and its answer (or the error it raised);
 - ``/roboscript/outcome``: how the run ended.
 
-:mod:`roboscript.ros.replay` reads such a bag back and replays its goals on the simulated twin.
+:mod:`roboscript.ros.replay` reads such a bag back, :mod:`roboscript.replay` replays its goals on the simulated twin;
+tool calls come from :func:`roboscript.run_log.logged_namespace`.
 """
 
 from __future__ import annotations
@@ -163,27 +164,6 @@ def _compression() -> str:
         return rosbag.Compression.LZ4
     except ImportError:
         return rosbag.Compression.NONE
-
-
-def logged_namespace(namespace: dict, log: RosRunLog) -> dict:
-    """``namespace`` with each tool wrapped so that its calls and answers go into ``log``."""
-
-    def logged(name: str, tool: Callable) -> Callable:
-        def call(*args, **kwargs):
-            try:
-                answer = tool(*args, **kwargs)
-            except BaseException as exc:
-                log.tool_call(name, args, kwargs, error=f"{type(exc).__name__}: {exc}")
-                raise
-            log.tool_call(name, args, kwargs, answer=answer)
-            return answer
-
-        call.__name__ = getattr(tool, "__name__", name)
-        call.__doc__ = getattr(tool, "__doc__", None)
-        call.__wrapped__ = tool
-        return call
-
-    return {k: logged(k, v) if callable(v) and not isinstance(v, type) else v for k, v in namespace.items()}
 
 
 def _jsonable(value: object) -> object:

@@ -1,0 +1,92 @@
+"""A run's JSON-lines log (what a run through a driver of the project's own leaves) and its replay on the twin: the
+commands a backend was sent, where its arm went, the tool calls, written as they happen and read back."""
+
+from __future__ import annotations
+
+import json
+
+import numpy as np
+import pytest
+
+from roboscript.backends.logged import LoggedBackend
+from roboscript.backends.mujoco_backend import MujocoBackend
+from roboscript.replay import read_run_log, replay_on_twin, replay_report
+from roboscript.run_log import JsonRunLog, logged_namespace, read_json_log
+from roboscript.trajectory import min_jerk_through
+
+WORLD = "world_2_pick_and_place"
+
+
+def _move(backend, delta) -> None:
+    start = backend.joint_positions()
+    robot = backend.robot
+    backend.execute_trajectory(
+        min_jerk_through(
+            np.array([start, start + delta]), np.array(robot.max_velocity), np.array(robot.max_acceleration), 0.5
+        )
+    )
+
+
+@pytest.fixture
+def logged_run(tmp_path):
+    """A short run on the simulated Panda, logged: two motions and a gripper command, two tool calls."""
+    path = tmp_path / "run.jsonl"
+    with MujocoBackend(WORLD, robot="panda") as robot, JsonRunLog(path) as log:
+        backend = LoggedBackend(robot, log.backend_event)
+        log.run({"robot_config": "panda_franka_ros", "scene": WORLD, "program": "..."})
+        tools = logged_namespace({"move": lambda d: _move(backend, np.array(d)), "fail": lambda: 1 / 0}, log)
+        tools["move"]([0.3, 0, 0, -0.2, 0, 0, 0])
+        backend.set_gripper(1.0)
+        with pytest.raises(ZeroDivisionError):
+            tools["fail"]()
+        _move(backend, np.array([-0.3, 0, 0, 0.2, 0, 0, 0]))
+        log.outcome({"outcome": "ok"})
+        ends = backend.joint_positions()
+    return path, ends
+
+
+def test_the_log_holds_each_command_where_the_arm_went_and_each_tool_call(logged_run):
+    path, ends = logged_run
+    record = read_json_log(path)
+    assert [c.kind for c in record.commands] == ["trajectory", "gripper", "trajectory"]
+    assert record.commands[1].closed == 1.0
+    assert len(record.states) == 4  # before the first command and after each
+    assert np.allclose(record.states[-1], ends)
+    assert record.commands[0].trajectory.positions.shape[1] == 7
+    assert [c["tool"] for c in record.tool_calls] == ["move", "fail"]
+    assert "ZeroDivisionError" in record.tool_calls[1]["error"]
+    assert record.outcome == {"outcome": "ok"} and record.config.robot.name == "panda"
+    assert list(record.state_times) == sorted(record.state_times)
+
+
+def test_the_logged_commands_replay_on_the_twin_to_where_the_arm_went(logged_run):
+    path, _ = logged_run
+    record = read_run_log(path)
+    steps = replay_on_twin(record, WORLD)
+    assert len(steps) == 3 and all(s.twin_error is None for s in steps)
+    assert max(s.deviation for s in steps) < 0.01
+    assert "3 commands, 2 tool calls" in replay_report(record, steps)
+
+
+def test_a_log_cut_short_mid_line_reads_up_to_its_last_whole_event(logged_run):
+    path, _ = logged_run
+    text = path.read_text()
+    path.write_text(text[: text.rindex('{"t"') + 12])  # killed while writing the outcome
+    record = read_json_log(path)
+    assert record.outcome is None and len(record.commands) == 3
+
+
+def test_a_damaged_log_names_the_line_and_a_log_of_another_kind_is_refused(tmp_path, logged_run):
+    path, _ = logged_run
+    lines = path.read_text().splitlines()
+    lines[2] = "garbage"
+    damaged = tmp_path / "damaged.jsonl"
+    damaged.write_text("\n".join(lines) + "\n")
+    with pytest.raises(ValueError, match=r"damaged\.jsonl:3: not a JSON event"):
+        read_json_log(damaged)
+    with pytest.raises(ValueError, match=r"run\.bag \(a ROS run\) or run\.jsonl"):
+        read_run_log(tmp_path / "run.txt")
+    no_run = tmp_path / "no_run.jsonl"
+    no_run.write_text(json.dumps({"t": 0, "kind": "state", "joint_names": [], "positions": []}) + "\n")
+    with pytest.raises(ValueError, match="no 'run' event"):
+        read_json_log(no_run)
