@@ -21,7 +21,7 @@ from roboscript.backends.franky import franky_backend
 from roboscript.bench.tasks import get_task
 from roboscript.drivers.base import DriverError
 from roboscript.frankysim.launch import FrankySim
-from roboscript.robot_config import config_path, parse_robot_config
+from roboscript.robot_config import config_path, franky_at, load_robot_config
 from roboscript.robots import get_robot
 from roboscript.trajectory import min_jerk_through
 
@@ -29,9 +29,7 @@ BASE = (-0.45, 0.0, 0.82)
 
 
 def _config(host: str):
-    data = yaml.safe_load(config_path("fr3_franky").read_text())
-    data["franky"].update(host=host, realtime="ignore")
-    return parse_robot_config(data, "fr3_franky (franky-sim)")
+    return franky_at(load_robot_config("fr3_franky"), host, realtime=False)
 
 
 @pytest.fixture(scope="module")
@@ -54,6 +52,7 @@ def _move(backend, delta) -> np.ndarray:
 
 
 def test_the_arm_reads_as_libfranka_reports_it_where_the_configuration_puts_its_base(arm):
+    assert arm.config.trajectory_action == arm.config.joint_states == f"libfranka at {arm.config.franky.host}"
     assert np.allclose(arm.joint_positions(), get_robot("fr3").home, atol=0.02)
     assert np.allclose(arm.base_pose().position, BASE)
     states = arm.joint_states()

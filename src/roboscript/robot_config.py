@@ -10,7 +10,7 @@ lists them).
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from importlib import resources
 from pathlib import Path
 
@@ -109,6 +109,16 @@ class RobotConfig:
 
     def arm_driver_joints(self) -> list[str]:
         return [self.driver_joint(j) for j in self.robot.arm_joints]
+
+
+def franky_at(config: RobotConfig, host: str, realtime: bool | None = None) -> RobotConfig:
+    """``config`` (driven through franky) pointed at the arm at ``host``; ``realtime``: whether libfranka insists on
+    a real-time kernel (default: as configured). Every message that names the arm's address names the new one."""
+    if config.franky is None:
+        raise RobotConfigError(config.source or config.name, "driver", f"is {config.driver}, not franky")
+    settings = replace(config.franky, host=host, realtime=config.franky.realtime if realtime is None else realtime)
+    where = f"libfranka at {host}"
+    return replace(config, franky=settings, joint_states=where, trajectory_action=where)
 
 
 def ros_config_for(robot: str) -> str:

@@ -14,7 +14,7 @@ from roboscript.bench.tasks import Task
 from roboscript.codegen.sandbox import ExecutionResult
 from roboscript.errors import UsageError
 from roboscript.perception.modes import PerceptionMode
-from roboscript.robot_config import RobotConfig, load_robot_config
+from roboscript.robot_config import RobotConfig, franky_at, load_robot_config
 
 # franky-sim's arm lags its set-point by up to 0.04 rad at this speed scale and 0.1 rad at the default 0.25 (a real
 # FR3 by a thousandth of that): slower motions keep the TCP within the tools' 2 cm of the plan.
@@ -24,9 +24,8 @@ SETTLE = 1.0  # seconds of franky-sim's world after the program, before the chec
 
 def franky_sim_config(host: str, speed_scale: float = FRANKY_SIM_SPEED_SCALE) -> RobotConfig:
     """The packaged FR3 configuration pointed at a franky-sim at ``host`` (no real-time kernel needed)."""
-    config = load_robot_config("fr3_franky")
-    settings = dataclasses.replace(config.franky, host=host, realtime=False)
-    return dataclasses.replace(config, franky=settings, speed_scale=speed_scale, joint_states=f"libfranka at {host}")
+    config = franky_at(load_robot_config("fr3_franky"), host, realtime=False)
+    return dataclasses.replace(config, speed_scale=speed_scale)
 
 
 def franky_perception(mode: PerceptionMode) -> PerceptionMode:

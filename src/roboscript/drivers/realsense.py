@@ -61,6 +61,7 @@ class RealSenseCamera:
             self._pipeline.stop()
             raise
         self._align = rs.align(rs.stream.color)
+        self._streaming = False  # until the first frame: a camera just started may take START_TIMEOUT to send one
 
     def _check(self, profile) -> np.ndarray:
         """Checks the started device against the configuration; returns the colour stream's intrinsics."""
@@ -84,6 +85,7 @@ class RealSenseCamera:
         """The first frame captured at ``not_before`` (``time.monotonic`` seconds) or later, within ``timeout``
         seconds; depth in metres aligned to the colour image, 0 where the camera measured nothing."""
         rs = self._rs
+        timeout = timeout if self._streaming else max(timeout, START_TIMEOUT)
         deadline = time.monotonic() + timeout
         while True:
             left = deadline - time.monotonic()
@@ -94,6 +96,7 @@ class RealSenseCamera:
             if time.monotonic() >= deadline or (not ok and self.settings.recording):
                 ended = " (the recording has ended)" if self.settings.recording and not ok else ""
                 raise DriverError(f"no frame from camera {self.name!r} within {timeout:.1f} s{ended}")
+        self._streaming = True
         aligned = self._align.process(frames)
         depth_frame, color_frame = aligned.get_depth_frame(), aligned.get_color_frame()
         if not depth_frame or not color_frame:
@@ -133,7 +136,7 @@ class RealSenseCameras(CameraSource):
     def frame(self, camera: str, timeout: float, not_before: float) -> CameraFrame:
         if camera not in self._cameras:
             raise DriverError(f"no RealSense camera {camera!r}; cameras: {', '.join(self._cameras) or 'none'}")
-        return self._cameras[camera].frame(max(timeout, START_TIMEOUT), not_before)
+        return self._cameras[camera].frame(timeout, not_before)
 
     def close(self) -> None:
         for camera in self._cameras.values():

@@ -27,15 +27,19 @@ class FrankySim:
 
     def __init__(
         self,
-        base: Sequence[float] = (0.0, 0.0, 0.0),
+        base: Sequence[float] | None = None,
         joints: Sequence[float] | None = None,
         world: str | None = None,
         seed: int | None = None,
     ):
-        """An FR3 alone with its base at ``base``, or in ``world`` (a world's name or file: its scene, with the arm
-        where the world stands it); ``joints``: where the arm starts (default: franky-sim's, or the FR3's home in a
-        world); ``seed``: the world laid out as a benchmark trial of that seed lays it out."""
-        command = [sys.executable, "-m", "roboscript.frankysim.server", "--base", *map(str, base)]
+        """An FR3 alone with its base at ``base`` (default: the origin), or in ``world`` (a world's name or file:
+        its scene, with the arm where the world stands it); ``joints``: where the arm starts (default: franky-sim's,
+        or the FR3's home in a world); ``seed``: the world laid out as a benchmark trial of that seed lays it out."""
+        if base is not None and world is not None:
+            raise ValueError("base is for an arm alone: a world stands its arm where its file says")
+        command = [sys.executable, "-m", "roboscript.frankysim.server"]
+        if base is not None:
+            command += ["--base", *map(str, base)]
         if joints is not None:
             command += ["--joints", *map(str, joints)]
         if world is not None:

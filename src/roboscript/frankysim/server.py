@@ -15,13 +15,17 @@ from roboscript.sim.world_catalog import load_world
 
 def main(argv: list[str] | None = None) -> int:
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
-    parser.add_argument("--base", type=float, nargs=3, default=(0.0, 0.0, 0.0), help="the arm's base in the world")
+    parser.add_argument(
+        "--base", type=float, nargs=3, default=None, help="the arm's base (without --world; a world stands its arm)"
+    )
     parser.add_argument("--joints", type=float, nargs=7, default=None, help="where the arm starts (radians)")
     parser.add_argument(
         "--world", default=None, help="a world (packaged name or file): its scene, the arm where it stands"
     )
     parser.add_argument("--seed", type=int, default=None, help="with --world: lay it out as a trial of this seed does")
     args = parser.parse_args(argv)
+    if args.world is not None and args.base is not None:
+        parser.error("--base is for an arm alone: a world stands its arm where its file says")
     from franky_sim import DEFAULT_INITIAL_JOINT_POS, SimulationServer
     from franky_sim.mujoco_simulator import MujocoSimulator
 
@@ -34,7 +38,7 @@ def main(argv: list[str] | None = None) -> int:
         simulator = MujocoSimulator(enable_visualization=False)
     with simulator as sim:
         start = args.joints or (None if args.world else DEFAULT_INITIAL_JOINT_POS)  # a world's arm starts at home
-        robot = sim.add_robot(initial_q=start, position=tuple(args.base))
+        robot = sim.add_robot(initial_q=start, position=tuple(args.base or (0.0, 0.0, 0.0)))
         with SimulationServer(sim) as server:
             server.run_async()
             print(f"serving {robot.hostname}", flush=True)
