@@ -9,6 +9,7 @@ import queue
 import subprocess
 import sys
 import threading
+import time
 from collections.abc import Sequence
 
 import numpy as np
@@ -39,9 +40,9 @@ class FrankySim:
             raise ValueError("base is for an arm alone: a world stands its arm where its file says")
         command = [sys.executable, "-m", "roboscript.frankysim.server"]
         if base is not None:
-            command += ["--base", *map(str, base)]
+            command += ["--base", *map(_number, base)]
         if joints is not None:
-            command += ["--joints", *map(str, joints)]
+            command += ["--joints", *map(_number, joints)]
         if world is not None:
             command += ["--world", world] + (["--seed", str(seed)] if seed is not None else [])
         self._process = subprocess.Popen(
@@ -67,10 +68,19 @@ class FrankySim:
                 self._serving.set()
 
     def _wait_for_host(self) -> str:
-        if not self._serving.wait(START_TIMEOUT):
-            self.stop()
-            said = "\n".join(list(self._output)[-10:]) or "no output"
-            raise FrankySimError(f"franky-sim did not start within {START_TIMEOUT:.0f} s: {said}")
+        deadline = time.monotonic() + START_TIMEOUT
+        while not self._serving.wait(0.2):
+            ended = self._process.poll() is not None
+            if ended or time.monotonic() > deadline:
+                self.stop()
+                time.sleep(0.1)  # the reader takes the last lines
+                said = "\n".join(list(self._output)[-10:]) or "no output"
+                why = (
+                    f"ended (exit status {self._process.returncode})"
+                    if ended
+                    else f"did not start within {START_TIMEOUT:.0f} s"
+                )
+                raise FrankySimError(f"franky-sim {why}: {said}")
         return self._host
 
     def state(self, timeout: float = 10.0) -> tuple[np.ndarray, np.ndarray]:
@@ -101,3 +111,8 @@ class FrankySim:
 
     def __exit__(self, *exc) -> None:
         self.stop()
+
+
+def _number(value: float) -> str:
+    """A number as an argument: fixed-point, since argparse takes ``-1e-05`` for an option, not a negative number."""
+    return f"{float(value):.9f}"
