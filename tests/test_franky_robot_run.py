@@ -40,6 +40,11 @@ close_gripper()
 attach_object('apple')
 move_in_direction([0, 0, 1], 0.1)
 """
+MISSES = """\
+detect_objects(object_list=['apple'])
+open_gripper()
+grasp(parse_central_lift_grasp_pose(object_name='banana', description='center'))
+"""  # there is no banana: it fails on the twin, after a gripper command the arm must never get
 
 
 def _recorded_cameras(folder) -> list[dict]:
@@ -90,12 +95,12 @@ def _roboscript(*args: str, timeout: float = 900) -> subprocess.CompletedProcess
     )
 
 
-def _exec(lab, tmp_path, *flags: str) -> tuple[dict, subprocess.CompletedProcess]:
+def _exec(lab, tmp_path, *flags: str, program: str = PICK) -> tuple[dict, subprocess.CompletedProcess]:
     _, config = lab
-    program = tmp_path / "pick.py"
-    program.write_text(PICK)
+    written = tmp_path / "program.py"
+    written.write_text(program)
     run = _roboscript(
-        "exec", str(program), "--backend", "franky", "--robot-config", str(config), "--world", WORLD,
+        "exec", str(written), "--backend", "franky", "--robot-config", str(config), "--world", WORLD,
         "--log-dir", str(tmp_path / "run"), "--json", *flags,
     )  # fmt: skip
     lines = run.stdout.strip().splitlines()
@@ -122,8 +127,20 @@ def test_a_dry_run_plans_on_the_twin_of_what_the_cameras_see_and_moves_nothing(l
     after, _ = sim.state()
     assert np.allclose(after, before, atol=2e-3)  # nothing was sent: the arm and the apple stand where they stood
     kinds = [json.loads(line)["kind"] for line in (tmp_path / "run" / "run.jsonl").read_text().splitlines()]
-    assert kinds[0] == "state" and "run" in kinds and "note" in kinds and kinds[-1] == "outcome"
-    assert "trajectory" not in kinds and "tool_call" not in kinds
+    assert kinds == ["run", "state", "note", "outcome"]  # the twin's run is noted; nothing reached the arm
+
+
+def test_a_program_that_fails_on_the_twin_is_not_sent(lab, tmp_path):
+    sim, _ = lab
+    before, _ = sim.state()
+    result, run = _exec(lab, tmp_path, "--validate-in-sim", "--yes", program=MISSES)
+    assert run.returncode == 1, run.stderr[-3000:]
+    assert not result["ok"] and not result["sent"] and result["stopped"].startswith("not sent: the program failed")
+    assert result["twin"]["outcome"] != "ok"
+    after, _ = sim.state()
+    assert np.allclose(after, before, atol=2e-3)
+    kinds = [json.loads(line)["kind"] for line in (tmp_path / "run" / "run.jsonl").read_text().splitlines()]
+    assert "trajectory" not in kinds and "gripper" not in kinds and "tool_call" not in kinds
 
 
 def test_a_validated_run_picks_the_apple_through_libfranka_and_its_log_replays_on_the_twin(lab, tmp_path):
@@ -148,4 +165,5 @@ def test_a_validated_run_picks_the_apple_through_libfranka_and_its_log_replays_o
     deviations = [s["deviation"] for s in replayed["steps"] if s["deviation"] is not None]
     assert deviations and max(deviations) < 0.05  # the twin follows where franky-sim's arm went
     home = get_robot("fr3").home
-    assert np.allclose(events[0]["positions"], home, atol=0.02)
+    first = next(e for e in events if e["kind"] == "state")
+    assert events[0]["kind"] == "run" and np.allclose(first["positions"], home, atol=0.02)

@@ -115,8 +115,8 @@ def _perception_from_sensors(backend: Backend, mode: PerceptionMode, seed: int, 
         segments = segment_labels(backend.segmentation_labels(), labels.furniture())
         if not segments:
             raise BackendError(
-                f"{type(backend).__name__} publishes no segmentation labels: configure the segmentation topics and "
-                "the labels' topic, or give a detector (trained, owlv2:DIR or grounding-dino:DIR)"
+                f"the {backend.robot.name}'s cameras publish no segmentation labels: configure the segmentation topics "
+                "and the labels' topic, or give a detector (trained, owlv2:DIR or grounding-dino:DIR)"
             )
         grounder = SegmentationGrounder(segments, seed=seed)
         named = [s.name for s in segments if s.kind == "object"]
@@ -150,7 +150,7 @@ def _check_truth(backend: Backend, mode: PerceptionMode) -> None:
     if mode.needs_ground_truth and backend.ground_truth is None:
         raise BackendError(
             f"perception {mode} takes {', '.join(sorted(mode.from_truth))} from ground truth, which only a simulation "
-            f"has; on {type(backend).__name__} use --perception full"
+            f"has; on a robot ({backend.robot.name}) use --perception full"
         )
 
 

@@ -142,12 +142,15 @@ def run_on_running_robot(args: argparse.Namespace, program: str, scene_ref: str)
             print(result.stopped)
         if result.twin is not None:
             print("twin's files: " + ", ".join(str(f) for f in result.twin.files))
-        print(f"log: {result.log} (replay it: roboscript replay {result.log} --world {scene_ref})")
+        replay = f" (replay it: roboscript replay {result.log} --world {scene_ref})" if result.sent else ""
+        print(f"log: {result.log}{replay}")
     return 0 if result.ok else 1
 
 
 def add_replay_command(sub) -> None:
-    replay = sub.add_parser("replay", help="replay a robot run's log (run.bag) on the simulated twin")
+    replay = sub.add_parser(
+        "replay", help="replay a robot run's log (run.bag on ROS, run.jsonl through franky) on the simulated twin"
+    )
     replay.add_argument("log", help="a run's log (run.bag or run.jsonl), as `exec` or `run` on a robot write it")
     replay.add_argument("--world", required=True, help="the twin's world: the scene's description (name or file)")
     replay.add_argument("--robot-config", default=None, help="default: the one the log names")

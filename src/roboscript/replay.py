@@ -48,6 +48,8 @@ def replay_on_twin(record: RunRecord, world, seed: int = 0, randomize: bool = Fa
     logged robot, started at the first logged joint state; a list of :class:`ReplayStep`."""
     from roboscript.backends.mujoco_backend import MujocoBackend
 
+    if not record.commands:  # a dry run, a run stopped before its first motion: nothing to replay
+        return []
     backend = MujocoBackend(world, record.config.robot.name, seed=seed, randomize=randomize, start=record.states[0])
     recorder = None
     if video:

@@ -28,6 +28,7 @@ from roboscript.backends.logged import LoggedBackend
 from roboscript.backends.mujoco_backend import MujocoBackend
 from roboscript.codegen.outcomes import Outcome
 from roboscript.codegen.sandbox import ExecutionResult, Limits
+from roboscript.errors import UsageError
 from roboscript.perception.modes import GROUND_TRUTH, PerceptionMode
 from roboscript.robot_config import RobotConfig
 from roboscript.run_log import JsonRunLog, RunLog, logged_namespace
@@ -71,17 +72,22 @@ class TwinRun:
 
 @dataclass
 class RobotRunResult:
-    """How a run on the robot went. ``result`` is the robot's run, ``None`` when nothing was sent (a dry run, a
-    failed validation, a refused confirmation: ``stopped`` says which)."""
+    """How a run on the robot went. ``result`` is the robot's run; ``None`` where nothing was sent (a dry run, a
+    failed validation, a refused confirmation: ``stopped`` says which) or the run was cut short (``interrupted``
+    says by what; ``sent`` whether the program had begun on the robot)."""
 
     program: str
     log: Path
     twin: TwinRun | None = None
     result: ExecutionResult | None = None
     stopped: str | None = None
+    sent: bool = False  # the program began to run on the robot
+    interrupted: str | None = None  # what ended the run before it could finish (Ctrl-C, a lost connection)
 
     @property
     def ok(self) -> bool:
+        if self.interrupted is not None:
+            return False
         if self.result is not None:
             return self.result.outcome == Outcome.OK
         return (
@@ -91,10 +97,10 @@ class RobotRunResult:
     def to_dict(self) -> dict:
         return {
             "ok": self.ok,
-            "sent": self.result is not None,
+            "sent": self.sent,
             "stopped": self.stopped,
             "outcome": self.result.outcome.value if self.result else None,
-            "error": self.result.error if self.result else None,
+            "error": self.result.error if self.result else self.interrupted,
             "twin": None
             if self.twin is None
             else {
@@ -114,21 +120,40 @@ def log_path(plan: RobotRunPlan) -> Path:
 
 
 @contextmanager
-def connected(plan: RobotRunPlan) -> Iterator[tuple[Backend, RunLog]]:
-    """The robot ``plan`` names, through its configuration's driver, and the run's log, open until the block ends
-    (on ROS, the master is the one ``ROS_MASTER_URI`` names)."""
+def connected(plan: RobotRunPlan, description: dict) -> Iterator[tuple[Backend, RunLog]]:
+    """The robot ``plan`` names, through its configuration's driver, and the run's log, begun with ``description``
+    and open until the block ends (on ROS, the master is the one ``ROS_MASTER_URI`` names)."""
     path = log_path(plan)
     if plan.config.driver == "franky":
         from roboscript.backends.franky import franky_backend
 
         with franky_backend(plan.config) as robot, JsonRunLog(path) as log:
+            log.run(description)
             yield LoggedBackend(robot, log.backend_event), log
         return
     from roboscript.backends.ros import ros_backend
     from roboscript.ros.run_log import RosRunLog
 
     with ros_backend(plan.config) as robot, RosRunLog(plan.config, path) as log:
+        log.run(description)
         yield robot, log  # the bag records the commands as the robot's action servers hear them
+
+
+def _description(program: str, plan: RobotRunPlan) -> dict:
+    source = plan.config.source
+    return {
+        # a file by its whole path, so that the log replays from anywhere; a packaged configuration by its name
+        "robot_config": str(Path(source).resolve())
+        if source and Path(source).is_file()
+        else source or plan.config.name,
+        "robot": plan.config.robot.name,
+        "scene": plan.scene.source,
+        "perception": str(plan.perception),
+        "dry_run": plan.dry_run,
+        "validate_in_sim": plan.validate_in_sim,
+        "program": program,
+        "started": time.strftime("%Y-%m-%dT%H:%M:%S%z"),
+    }
 
 
 def run_on_robot(
@@ -143,21 +168,11 @@ def run_on_robot(
     from roboscript.assembly import build_tools
     from roboscript.bench.trial import check_and_execute
 
+    if log_path(plan).exists():
+        raise UsageError(f"a run's log is already at {log_path(plan)}: give each run a folder of its own (--log-dir)")
     plan.out.mkdir(parents=True, exist_ok=True)
     outcome = RobotRunResult(program, log_path(plan))
-    with connected(plan) as (robot, log):
-        log.run(
-            {
-                "robot_config": plan.config.source or plan.config.name,
-                "robot": plan.config.robot.name,
-                "scene": plan.scene.source,
-                "perception": str(plan.perception),
-                "dry_run": plan.dry_run,
-                "validate_in_sim": plan.validate_in_sim,
-                "program": program,
-                "started": time.strftime("%Y-%m-%dT%H:%M:%S%z"),
-            }
-        )
+    with connected(plan, _description(program, plan)) as (robot, log):
         tools = build_tools(robot, plan.perception, seed=plan.seed, scene=plan.scene)
         try:
             if plan.dry_run or plan.validate_in_sim:
@@ -180,10 +195,14 @@ def run_on_robot(
                 outcome.stopped = "not sent: the run was not confirmed"
                 return outcome
             progress("running the program on the robot")
+            outcome.sent = True
             outcome.result = check_and_execute(
                 program, logged_namespace(tools.namespace(), log), Limits(plan.timeout).scaled_to_load()
             )
             return outcome
+        except BaseException as exc:  # an interruption, a lost robot: the log says how the run ended, then it goes on
+            outcome.interrupted = f"{type(exc).__name__}: {exc}"
+            raise
         finally:
             log.outcome(outcome.to_dict())
 

@@ -14,6 +14,7 @@ before the first command and after each), ``error`` (a command that raised), ``n
 from __future__ import annotations
 
 import json
+import logging
 import threading
 import time
 from collections.abc import Callable
@@ -25,6 +26,8 @@ import numpy as np
 from roboscript.robot_config import RobotConfig, load_robot_config
 from roboscript.run_record import Command, RunRecord
 from roboscript.trajectory import JointTrajectory
+
+_log = logging.getLogger(__name__)
 
 
 class RunLog(Protocol):
@@ -50,7 +53,8 @@ class JsonRunLog:
 
     def write(self, kind: str, event: dict) -> None:
         """Appends one event of ``kind`` (its other fields: ``event``), stamped with the log's clock."""
-        line = json.dumps({"t": round(time.monotonic() - self._start, 4), "kind": kind, **event}, default=_jsonable)
+        stamped = {"t": round(time.monotonic() - self._start, 4), "kind": kind, **_string_keys(event)}
+        line = json.dumps(stamped, default=_jsonable)
         with self._lock:
             if self._file.closed:
                 return
@@ -89,14 +93,22 @@ class JsonRunLog:
 def logged_namespace(namespace: dict, log: RunLog) -> dict:
     """``namespace`` with each tool wrapped so that its calls and answers go into ``log``."""
 
+    def keep(*call, **outcome) -> None:
+        # the log serves the run, not the other way round: a log that cannot take a call (a full disk) is warned
+        # of, and the program goes on with what the tool did
+        try:
+            log.tool_call(*call, **outcome)
+        except Exception as exc:
+            _log.warning("the run's log did not take a call of %s: %s", call[0], exc)
+
     def logged(name: str, tool: Callable) -> Callable:
         def call(*args, **kwargs):
             try:
                 answer = tool(*args, **kwargs)
             except BaseException as exc:
-                log.tool_call(name, args, kwargs, error=f"{type(exc).__name__}: {exc}")
+                keep(name, args, kwargs, error=f"{type(exc).__name__}: {exc}")
                 raise
-            log.tool_call(name, args, kwargs, answer=answer)
+            keep(name, args, kwargs, answer=answer)
             return answer
 
         call.__name__ = getattr(tool, "__name__", name)
@@ -121,17 +133,15 @@ def read_json_log(path: str | Path, config: RobotConfig | str | Path | None = No
     config = reference if isinstance(reference, RobotConfig) else load_robot_config(reference)
     order = list(config.robot.arm_joints)
     commands = [_command(e, order) for e in events if e["kind"] in ("trajectory", "gripper")]
-    states = [e for e in events if e["kind"] == "state"]
-    if not states:
-        raise ValueError(f"{path} logs no joint state of the arm")
+    states = [e for e in events if e["kind"] == "state"]  # none where the run ended before it reached the arm
     outcomes = [e["outcome"] for e in events if e["kind"] == "outcome"]
     return RunRecord(
         path,
         runs[0],
         config,
         commands,
-        np.array([e["t"] for e in states]),
-        np.array([np.asarray(e["positions"])[_columns(e, order)] for e in states]),
+        np.array([e["t"] for e in states], dtype=float),
+        np.array([np.asarray(e["positions"])[_columns(e, order)] for e in states]).reshape(len(states), len(order)),
         [{k: v for k, v in e.items() if k not in ("t", "kind")} for e in events if e["kind"] == "tool_call"],
         outcomes[-1] if outcomes else None,
     )
@@ -172,6 +182,15 @@ def _command(event: dict, order: list[str]) -> Command:
         "trajectory",
         JointTrajectory(np.array(event["times"]), positions[:, columns], velocities[:, columns]),
     )
+
+
+def _string_keys(value: object) -> object:
+    """``value`` with every mapping's keys as strings (JSON's; a tool's answer may be keyed by numbers)."""
+    if isinstance(value, dict):
+        return {k if isinstance(k, str) else str(_jsonable(k)): _string_keys(v) for k, v in value.items()}
+    if isinstance(value, list | tuple):
+        return [_string_keys(v) for v in value]
+    return value
 
 
 def _jsonable(value: object) -> object:

@@ -30,6 +30,7 @@ START_TOLERANCE = 0.05  # radians a trajectory's first point may be from where t
 CHECK_STEP = 0.05  # seconds between the trajectory samples checked against the workspace
 FIRST_STATE_TIMEOUT = 2.0  # seconds to wait for the first joint state
 EMPTY_GRIP = 0.002  # metres: fingers closed this far hold nothing
+SET_POINT_MOVED = 1e-5  # radians: a controller's set-point that moved less than this has not progressed
 GRIPPER_SETTLE = 0.05  # seconds after a gripper's result: the opening is then read from a joint state after it
 
 
@@ -188,6 +189,9 @@ class DriverBackend(Backend):
         deadline = trajectory.duration + self.config.server_timeout
         joint_errors, tcp_errors = [], []
         seen = None  # the feedback last judged: it comes at the controller's rate, slower than this loop polls
+        # when the controller's set-point last moved: a controller running behind the plan's time (a simulated
+        # arm on a busy machine) is waited for while it keeps moving, not cut off at the plan's end
+        progressed, set_point = started, None
         try:
             while True:
                 status = goal.status()
@@ -198,6 +202,8 @@ class DriverBackend(Backend):
                 sample = goal.tracking()  # the controller's own set-point and measurement, in step with each other
                 if sample is not None and sample is not seen:
                     seen = sample
+                    if set_point is None or np.max(np.abs(sample.desired - set_point)) > SET_POINT_MOVED:
+                        progressed, set_point = self.driver.now(), sample.desired
                     lag = np.abs(sample.actual - sample.desired)
                     joint_errors.append(float(np.max(lag)))
                     tcp_errors.append(self._tcp_distance(sample.actual, sample.desired))
@@ -209,11 +215,14 @@ class DriverBackend(Backend):
                             f"t={elapsed:.2f} s (tolerance {self.config.tracking_tolerance} rad); the goal was "
                             "cancelled and the arm stopped"
                         )
-                if elapsed > deadline:
+                stalled = self.driver.now() - progressed > self.config.server_timeout
+                if elapsed > deadline and (stalled or set_point is None):
                     self._stop(goal)
                     raise BackendError(
                         f"the controller at {self.config.trajectory_action} did not finish a {trajectory.duration:.1f} "
-                        f"s trajectory within {self.config.server_timeout} s of its end; the goal was cancelled"
+                        f"s trajectory within {self.config.server_timeout} s of its end"
+                        + ("" if set_point is None else f" (its set-point still for {self.config.server_timeout} s)")
+                        + "; the goal was cancelled"
                     )
                 self._clock_advanced(self.driver.now())
                 _time.sleep(POLL)

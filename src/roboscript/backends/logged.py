@@ -19,8 +19,10 @@ Entry = dict  # {"kind": "trajectory" | "gripper" | "state", "start_time": backe
 
 
 class LoggedBackend(Backend):
-    """``inner``, with each command it is sent, and the arm's joint positions after it, passed to ``listener`` as
-    JSON-ready entries (also kept in :attr:`commands`). A command that raised is reported with its error."""
+    """``inner``, with each command it is sent, and the arm's joint positions before the first and after each,
+    passed to ``listener`` as JSON-ready entries (the commands also kept in :attr:`commands`). A trajectory is
+    reported as the inner backend sends it: after its own checks (a real arm's speed scale), and as ``refused``, not
+    sent, where they refuse it. A command that raised is followed by an ``error`` entry."""
 
     def __init__(self, inner: Backend, listener: Callable[[Entry], None] | None = None):
         self.inner = inner
@@ -29,7 +31,7 @@ class LoggedBackend(Backend):
         self._report(self._state())
 
     def _report(self, entry: Entry) -> None:
-        if entry["kind"] != "state":
+        if entry["kind"] in ("trajectory", "gripper"):
             self.commands.append(entry)
         if self._listener is not None:
             self._listener(entry)
@@ -58,6 +60,15 @@ class LoggedBackend(Backend):
     # --- what is logged ---
 
     def execute_trajectory(self, trajectory: JointTrajectory) -> ExecutionReport:
+        check = getattr(self.inner, "check_trajectory", None)  # a real arm's: its limits, its speed scale
+        if check is not None:
+            try:
+                trajectory = check(trajectory)  # the same again when sent: it changes a checked one no further
+            except Exception as exc:
+                self._report(
+                    {"kind": "refused", "start_time": self.inner.time(), "error": f"{type(exc).__name__}: {exc}"}
+                )
+                raise
         entry = {
             "kind": "trajectory",
             "start_time": self.inner.time(),

@@ -230,8 +230,9 @@ def waypoint_samples(trajectory: JointTrajectory, spacing: float) -> tuple[list[
     time-parameterised plan ends with a long, slow one), and on some of them the trajectory generator inside franky
     (Ruckig) failed to synchronise the joints ("Motion planner failed with error code -111"), aborting the motion.
     It did so in 4 of 10 trials of simple_0 through franky-sim; the same motions, resampled evenly, ran."""
-    steps = max(1, int(np.ceil(trajectory.duration / spacing - 1e-9)))
-    times = trajectory.times[0] + np.linspace(0.0, trajectory.duration, steps + 1)[1:]
+    span = float(trajectory.times[-1] - trajectory.times[0])
+    steps = max(1, int(np.ceil(span / spacing - 1e-9)))
+    times = trajectory.times[0] + np.linspace(0.0, span, steps + 1)[1:]
     positions, velocities, _ = trajectory.sample_many(times)
     velocities[-1] = 0.0
     stamps = np.round(1000 * (times - trajectory.times[0])).astype(int)

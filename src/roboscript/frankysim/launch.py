@@ -54,7 +54,8 @@ class FrankySim:
         self._host = ""
         self._states: queue.Queue[str] = queue.Queue()
         self._asking = threading.Lock()
-        threading.Thread(target=self._read_output, daemon=True).start()
+        self._reader = threading.Thread(target=self._read_output, daemon=True)
+        self._reader.start()
         self.host = self._wait_for_host()
 
     def _read_output(self) -> None:
@@ -73,7 +74,7 @@ class FrankySim:
             ended = self._process.poll() is not None
             if ended or time.monotonic() > deadline:
                 self.stop()
-                time.sleep(0.1)  # the reader takes the last lines
+                self._reader.join(timeout=2.0)  # until it has read the server's last lines
                 said = "\n".join(list(self._output)[-10:]) or "no output"
                 why = (
                     f"ended (exit status {self._process.returncode})"
