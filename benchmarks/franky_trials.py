@@ -3,7 +3,7 @@ and another simulator's arm make, with the FR3 and full perception on both sides
 
 Per task (default simple_0 and moderate_2) it runs the task's reference program and a program written from the
 prompt alone (``tests/data/prompt_corpus/concise/paper/<task>.py``), for seeds 0..N-1: through franky-sim
-(``backend="franky"``: :mod:`roboscript.bench.franky_trial`, the FR3 at speed scale 0.1) and on the MuJoCo backend
+(``backend="franky"``: :mod:`roboscript.bench.franky_trial`, the FR3 at speed scale 0.05) and on the MuJoCo backend
 (the same seed's layout, the FR3, the default speed scale). Results go to ``--out`` (a JSONL file) as they come;
 a rerun skips what is there. Prints whole-task success per task, program and backend, and the wall time per trial
 (medians). Figures, never assertions; franky-sim runs in real time, so each of its trials takes a minute or more.

@@ -116,6 +116,28 @@ def test_a_cancelled_motion_ends_as_cancelled_and_the_next_one_runs(arm):
     assert np.allclose(arm.joint_positions(), target, atol=0.01)
 
 
+def test_a_reflex_ends_the_motion_as_the_robots_error_and_after_recovery_the_next_motion_runs():
+    """franky-sim trips a joint reflex mid-motion over libfranka's protocol (the robot in Reflex mode, the motion
+    answered ReflexAborted), as a collision would on an FR3: the backend reports it as libfranka said it, the driver
+    recovers, and the next motion runs."""
+    from roboscript.backends.base import BackendError
+
+    home = get_robot("fr3").home
+    with FrankySim(base=BASE, joints=home) as sim:
+        backend = franky_backend(_config(sim.host))
+        try:
+            start = backend.joint_positions()
+            sim.trip_reflex()  # for the next motion: it trips as soon as the motion runs
+            with pytest.raises(BackendError, match=r"aborted the trajectory: .*reflex.*joint_reflex"):
+                _move(backend, np.array([0.4, 0, 0, 0, 0, 0, 0]))
+            stopped = backend.joint_positions()
+            assert np.max(np.abs(stopped - start)) < 0.3  # held where the reflex stopped it, short of the goal
+            target = _move(backend, np.array([0.0, 0, 0, -0.1, 0, 0, 0]))
+            assert np.allclose(backend.joint_positions(), target, atol=0.01)
+        finally:
+            backend.close()
+
+
 def test_in_a_benchmark_world_franky_sim_runs_the_worlds_fr3_among_its_table_and_objects():
     """The world built as the MuJoCo backend builds it, the arm where the world stands it, driven by franky-sim's
     torques: it holds its home, follows a plan, and its hand closes on nothing and opens."""

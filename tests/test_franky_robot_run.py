@@ -24,6 +24,7 @@ import yaml
 
 from realsense_recordings import record_d400
 from roboscript.backends.mujoco_backend import MujocoBackend
+from roboscript.bench.franky_trial import FRANKY_SIM_SPEED_SCALE
 from roboscript.frankysim.launch import FrankySim
 from roboscript.frankysim.mirror import WorldMirror
 from roboscript.robot_config import config_path
@@ -80,7 +81,7 @@ def lab(tmp_path_factory):
     data = yaml.safe_load(config_path("fr3_franky").read_text())
     data["name"] = "lab_fr3"
     data["franky"].update(realtime="ignore")
-    data["safety"]["speed_scale"] = 0.1  # franky-sim's arm lags its set-point less at this speed than at 0.25
+    data["safety"]["speed_scale"] = FRANKY_SIM_SPEED_SCALE  # franky-sim lags less, slower
     data["cameras"] = _recorded_cameras(folder)
     with FrankySim(world=WORLD) as sim:
         data["franky"]["host"] = sim.host

@@ -99,7 +99,7 @@ class RobotConfig:
     workspace: Workspace
     tracking_tolerance: float  # radians any joint may lag its set-point before the goal is cancelled
     state_timeout: float  # seconds without a joint state after which the robot is stopped
-    server_timeout: float  # seconds to wait for an action server, a result after the trajectory's end
+    server_timeout: float  # seconds to wait for an action server; for a result once the set-point stands still
     source: str = ""
     driver: str = "ros"
     franky: FrankySettings | None = None

@@ -97,6 +97,15 @@ class FrankySim:
         qpos, qvel = json.loads(answer)
         return np.array(qpos), np.array(qvel)
 
+    def trip_reflex(self) -> None:
+        """Makes the arm's running motion (or its next) end in a joint reflex, as a collision would on an FR3."""
+        try:
+            self._process.stdin.write("reflex\n")
+            self._process.stdin.flush()
+        except OSError:
+            said = "\n".join(list(self._output)[-5:])
+            raise FrankySimError(f"franky-sim is not running to trip a reflex in ({said})") from None
+
     def stop(self) -> None:
         """Ends the server (closing its standard input is its signal), killing it if it does not end in 10 s."""
         if self._process.poll() is None:

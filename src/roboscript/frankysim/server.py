@@ -2,7 +2,8 @@
 protocol on a free loopback address, prints ``serving HOST`` once it does, and runs its physics in real time until
 its standard input closes or it is killed. In a world (``--world``), a line ``state`` on its standard input is
 answered with a line ``state JSON``: the world's joint positions and velocities, for a mirror of it (cameras, checks)
-on the other side."""
+on the other side. A line ``reflex`` trips a joint reflex during the running motion
+(:mod:`roboscript.frankysim.reflexes`), as a collision would on an FR3."""
 
 from __future__ import annotations
 
@@ -26,8 +27,10 @@ def main(argv: list[str] | None = None) -> int:
     args = parser.parse_args(argv)
     if args.world is not None and args.base is not None:
         parser.error("--base is for an arm alone: a world stands its arm where its file says")
-    from franky_sim import DEFAULT_INITIAL_JOINT_POS, SimulationServer
+    from franky_sim import DEFAULT_INITIAL_JOINT_POS
     from franky_sim.mujoco_simulator import MujocoSimulator
+
+    from roboscript.frankysim.reflexes import ReflexingSimulationServer
 
     if args.world is not None:
         from roboscript.frankysim.world import WorldSimulator  # franky-sim's: the optional extra
@@ -39,13 +42,15 @@ def main(argv: list[str] | None = None) -> int:
     with simulator as sim:
         start = args.joints or (None if args.world else DEFAULT_INITIAL_JOINT_POS)  # a world's arm starts at home
         robot = sim.add_robot(initial_q=start, position=tuple(args.base or (0.0, 0.0, 0.0)))
-        with SimulationServer(sim) as server:
+        with ReflexingSimulationServer(sim) as server:
             server.run_async()
             print(f"serving {robot.hostname}", flush=True)
             for line in sys.stdin:  # until the launcher closes it
                 if line.strip() == "state" and args.world is not None:
                     qpos, qvel = sim.state()
                     print("state " + json.dumps([qpos.tolist(), qvel.tolist()]), flush=True)
+                elif line.strip() == "reflex":
+                    server.trip_reflex()
     return 0
 
 
