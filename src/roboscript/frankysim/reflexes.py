@@ -3,8 +3,8 @@ a joint reflex trips (a collision, a torque limit), so that the libfranka side o
 error state and its recovery over the real protocol.
 
 What the arm does, as libfranka's protocol describes it: the motion is answered ``ReflexAborted``, the arm holds
-where it is, and the state it sends reports the robot in ``Reflex`` mode with ``joint_reflex`` among its current and
-last motion errors, until an automatic error recovery clears them. A request while no motion runs waits for the next
+where it is, and the state it sends reports the robot in ``Reflex`` mode with ``joint_reflex`` among its errors and
+as the reflex's reason (the state's fields on the wire), until an automatic error recovery clears them. A request while no motion runs waits for the next
 one (franky-sim's pinned release keeps these as private attributes; the names below are its).
 """
 
@@ -19,6 +19,7 @@ from franky_sim.simulation_server import SimulationServer
 
 JOINT_REFLEX = 6  # the place of joint_reflex in libfranka's 41 error flags
 ERROR_FLAGS = 41
+STATES_BEFORE_ANSWER = 3  # states (1 ms each) that show the reflex before the motion is answered
 
 
 class ReflexingRobotServer(FrankaRobotServer):
@@ -28,6 +29,7 @@ class ReflexingRobotServer(FrankaRobotServer):
         super().__init__(*args, **kwargs)
         self._requested = threading.Event()
         self.in_reflex = False
+        self._aborting, self._ticks = 0, 0  # the motion a reflex ended, answered after a few states
         self._FrankaServer__command_class_map[RobotCommand.kAutomaticErrorRecovery] = _Recovery
 
     def trip_reflex(self) -> None:
@@ -37,12 +39,19 @@ class ReflexingRobotServer(FrankaRobotServer):
     def _pre_process_commands(self) -> None:
         super()._pre_process_commands()
         motion = self.current_motion_id
-        if motion and self._requested.is_set():
+        if motion and self._requested.is_set() and not self.in_reflex:
             self._requested.clear()
             self.stop_motion(send_preemption_signal=False)
-            self.in_reflex = True
-            BaseCommand.send_response(self._tcp_socket, RobotCommand.kMove, motion, MoveStatus.kReflexAborted)
-            self.reset_current_motion_id()
+            self.in_reflex, self._aborting, self._ticks = True, motion, STATES_BEFORE_ANSWER
+        elif self.in_reflex and self._aborting:
+            # libfranka names the errors from the last state it had when the answer came: states first
+            self._ticks -= 1
+            if self._ticks <= 0:
+                BaseCommand.send_response(
+                    self._tcp_socket, RobotCommand.kMove, self._aborting, MoveStatus.kReflexAborted
+                )
+                self._aborting = 0
+                self.reset_current_motion_id()
 
     @property
     def robot_state(self):
@@ -50,7 +59,7 @@ class ReflexingRobotServer(FrankaRobotServer):
         if not self.in_reflex:
             return state
         errors = tuple(flag == JOINT_REFLEX for flag in range(ERROR_FLAGS))
-        return state.replace(robot_mode=RobotMode.kReflex, current_errors=errors, last_motion_errors=errors)
+        return state.replace(robot_mode=RobotMode.kReflex, errors=errors, reflex_reason=errors)  # as the wire has them
 
 
 class _Recovery(AutomaticErrorRecoveryCommand):
