@@ -37,8 +37,11 @@ def programs(task_id: str) -> dict[str, str]:
 def run_one(task_id: str, label: str, program: str, backend: str, seed: int) -> dict:
     started = time.monotonic()
     kind = "franky" if backend == "franky-sim" else "mujoco"
-    record = run_trial(TrialSpec(task_id, "fr3", seed, seed, program, perception="full", backend=kind))
-    success, error = record.success, record.error
+    try:
+        record = run_trial(TrialSpec(task_id, "fr3", seed, seed, program, perception="full", backend=kind))
+        success, error = record.success, record.error
+    except Exception as exc:  # a trial that could not even be judged (the arm lost) is a failed trial, not the end
+        success, error = False, f"{type(exc).__name__}: {exc}"
     return {
         "task": task_id,
         "program": label,

@@ -117,9 +117,14 @@ class FrankyDriver(Driver):
     # --- state ---
 
     def robot_state(self):
-        """libfranka's latest robot state (``franky.RobotState``)."""
-        with self._lock:
-            return self._robot.state
+        """libfranka's latest robot state (``franky.RobotState``); a DriverError where libfranka has lost the arm."""
+        try:
+            with self._lock:
+                return self._robot.state
+        except self._franky.Exception as error:
+            raise DriverError(
+                f"libfranka lost the arm at {self.config.franky.host}: {type(error).__name__}: {error}"
+            ) from None
 
     def joint_state(self) -> JointStateReading | None:
         state = self.robot_state()

@@ -4,8 +4,9 @@ error state and its recovery over the real protocol.
 
 What the arm does, as libfranka's protocol describes it: the motion is answered ``ReflexAborted``, the arm holds
 where it is, and the state it sends reports the robot in ``Reflex`` mode with ``joint_reflex`` among its errors and
-as the reflex's reason (the state's fields on the wire), until an automatic error recovery clears them. A request while no motion runs waits for the next
-one (franky-sim's pinned release keeps these as private attributes; the names below are its).
+as the reflex's reason (the state's fields on the wire), until an automatic error recovery clears them. A request
+while no motion runs waits for the next one (franky-sim's pinned release keeps these as private attributes; the names
+below are its).
 """
 
 from __future__ import annotations
