@@ -54,7 +54,7 @@ def test_wilson_interval_known_values():
 @pytest.mark.parametrize(
     ("fields", "message"),
     [
-        ({"robots": ["panda", "kuka"]}, "unknown robot 'kuka'; valid robots: panda, ur5e"),
+        ({"robots": ["panda", "kuka"]}, "unknown robot 'kuka'; valid robots: fr3, panda, ur5e"),
         ({"policies": ["gpt4"]}, "unknown policy 'gpt4'"),
         ({"perception": ["gt", "lidar"]}, "lidar"),
         ({"trials": 0}, "'trials' must be a whole number of at least 1"),
