@@ -609,21 +609,14 @@ class PipelinePerception(Perception):
             return None
         return interior_of(obj.points, obj.outline, obj.kind, name)
 
-    def _drawer_inside(self, name: str, retried: bool = False) -> Receptacle | None:
+    def _drawer_inside(self, name: str) -> Receptacle | None:
         """The free inside of a drawer, from its points, its joint, its handle and its cabinet's front; other
         furniture and parts hold nothing."""
         joints = self.parts.joints(name) if kind_of(name) == "drawer" else []
         if not joints or joints[0].type != "prismatic" or joints[0].part != name:
             return None
-        if not retried:
-            self._fresh_look_inside()
-        try:
-            frame = opening_frame(self._estimated(joints[0]))
-        except UnknownObjectError:
-            if retried or not self._may_look_again():
-                raise
-            self._look(list(self._asked))  # the arm that pulled it may have hidden its handle from that look
-            return self._drawer_inside(name, retried=True)
+        self._fresh_look_inside()
+        frame = opening_frame(self._estimated(joints[0]))
         furniture = name.split(".", 1)[0]
         if furniture not in self.parts_seen:
             raise ObjectNotFoundError(
@@ -635,10 +628,6 @@ class PipelinePerception(Perception):
         carcass = carcass_front(seen.points, frame, DRAWER_TRAVEL + 0.05, seen.normals)
         points = self._part(name).points
         inside = drawer_receptacle(name, points, self._part(name).normals, frame, carcass)
-        if inside is None and not retried and self._may_look_again():
-            # The arm, which has just pulled the drawer, may have hidden its inside from that look.
-            self._look(list(self._asked))
-            return self._drawer_inside(name, retried=True)
         if inside is None and -carcass > OPEN_DRAWER:
             # Its front stands out of the carcass, so it is open, though no look showed its bottom.
             return unseen_inside(name, points, frame, carcass)
@@ -665,9 +654,10 @@ class PipelinePerception(Perception):
 
     def _fresh_look_inside(self) -> None:
         """Looks again before an inside is measured if the arm has moved since the last look. The arm that has just
-        pulled a drawer or swung a door stands in front of it. Measured from that look, the inside comes out as
-        much smaller as the arm hid of it (a drawer 13 cm deep instead of 18, on the FR3, which hides more than the
-        Panda)."""
+        pulled a drawer or swung a door stands in front of it. From that look, the handle may be hidden, or the
+        bottom, or part of it: the inside then comes out as much smaller as the arm hid of it (a drawer 13 cm deep
+        instead of 18, on the FR3, which hides more than the Panda). No second look can show more than this one:
+        the arm does not move while an inside is measured."""
         if self._may_look_again():
             self._look(list(self._asked))
 
