@@ -198,12 +198,13 @@ class DriverBackend(Backend):
                 if status.done:
                     break
                 self._fresh_state_or_stop(goal)
-                elapsed = self.driver.now() - started
+                now = self.driver.now()
+                elapsed = now - started
                 sample = goal.tracking()  # the controller's own set-point and measurement, in step with each other
                 if sample is not None and sample is not seen:
                     seen = sample
                     if set_point is None or np.max(np.abs(sample.desired - set_point)) > SET_POINT_MOVED:
-                        progressed, set_point = self.driver.now(), sample.desired
+                        progressed, set_point = now, sample.desired
                     lag = np.abs(sample.actual - sample.desired)
                     joint_errors.append(float(np.max(lag)))
                     tcp_errors.append(self._tcp_distance(sample.actual, sample.desired))
@@ -215,7 +216,7 @@ class DriverBackend(Backend):
                             f"t={elapsed:.2f} s (tolerance {self.config.tracking_tolerance} rad); the goal was "
                             "cancelled and the arm stopped"
                         )
-                stalled = self.driver.now() - progressed > self.config.server_timeout
+                stalled = now - progressed > self.config.server_timeout
                 if elapsed > deadline and (stalled or set_point is None):
                     self._stop(goal)
                     raise BackendError(
