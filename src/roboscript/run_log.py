@@ -53,8 +53,7 @@ class JsonRunLog:
 
     def write(self, kind: str, event: dict) -> None:
         """Appends one event of ``kind`` (its other fields: ``event``), stamped with the log's clock."""
-        stamped = {"t": round(time.monotonic() - self._start, 4), "kind": kind, **_string_keys(event)}
-        line = json.dumps(stamped, default=_jsonable)
+        line = to_json({"t": round(time.monotonic() - self._start, 4), "kind": kind, **event})
         with self._lock:
             if self._file.closed:
                 return
@@ -182,6 +181,12 @@ def _command(event: dict, order: list[str]) -> Command:
         "trajectory",
         JointTrajectory(np.array(event["times"]), positions[:, columns], velocities[:, columns]),
     )
+
+
+def to_json(data: dict) -> str:
+    """``data`` as a run's log writes it: numpy arrays and numbers as JSON's, keys as strings, anything else as its
+    ``repr``."""
+    return json.dumps(_string_keys(data), default=_jsonable)
 
 
 def _string_keys(value: object) -> object:

@@ -24,7 +24,6 @@ tool calls come from :func:`roboscript.run_log.logged_namespace`.
 
 from __future__ import annotations
 
-import json
 import threading
 import time
 import types
@@ -34,6 +33,7 @@ from pathlib import Path
 import numpy as np
 
 from roboscript.robot_config import RobotConfig
+from roboscript.run_log import to_json
 
 RUN_TOPIC = "/roboscript/run"
 TOOL_CALL_TOPIC = "/roboscript/tool_call"
@@ -125,7 +125,7 @@ class RosRunLog:
         """Writes ``data`` as JSON on ``topic`` (a ``std_msgs/String``)."""
         from std_msgs.msg import String
 
-        self._write(topic, String(data=json.dumps(data, default=_jsonable)))
+        self._write(topic, String(data=to_json(data)))
 
     def run(self, description: dict) -> None:
         self.note(RUN_TOPIC, description)
@@ -164,11 +164,3 @@ def _compression() -> str:
         return rosbag.Compression.LZ4
     except ImportError:
         return rosbag.Compression.NONE
-
-
-def _jsonable(value: object) -> object:
-    if isinstance(value, np.ndarray):
-        return value.tolist()
-    if isinstance(value, np.generic):
-        return value.item()
-    return repr(value)
