@@ -1,4 +1,5 @@
-"""Helpers for tests: worlds built from dicts, and a small IK used only to script joint targets in tests.
+"""Helpers for tests: worlds built from dicts, a driver test double, and a small IK used only to script joint
+targets in tests.
 
 The project's own IK belongs to the planning layer; this damped-least-squares solver exists so that foundation
 tests can compute joint waypoints without depending on it.
@@ -7,11 +8,13 @@ tests can compute joint waypoints without depending on it.
 from __future__ import annotations
 
 import importlib.util
+import time
 
 import mujoco
 import numpy as np
 import pytest
 
+from roboscript.drivers.base import Driver
 from roboscript.geometry import matrix_to_quat
 from roboscript.sim.world import SimWorld
 
@@ -26,6 +29,26 @@ ARMS = (
         ),
     ),
 )
+
+class ArmOnlyDriver(Driver):
+    """Test double of a driver with an arm and nothing else: the host's monotonic clock, no cameras, and neither
+    trajectories nor a gripper unless a subclass gives them; subclasses say what the joint states read."""
+
+    def now(self) -> float:
+        return time.monotonic()
+
+    def send_trajectory(self, joint_names, trajectory):
+        raise NotImplementedError
+
+    def command_gripper(self, position, closing, timeout):
+        raise NotImplementedError
+
+    def camera_names(self) -> list[str]:
+        return []
+
+    def camera_frame(self, camera, timeout, not_before):
+        raise NotImplementedError
+
 
 DOWN = np.array([[1.0, 0.0, 0.0], [0.0, -1.0, 0.0], [0.0, 0.0, -1.0]])  # TCP z pointing at the table
 DOWN_QUAT = matrix_to_quat(DOWN)

@@ -5,14 +5,14 @@ than the server timeout once it has stopped moving short of the end."""
 from __future__ import annotations
 
 import dataclasses
-import time
 
 import numpy as np
 import pytest
 
+from helpers import ArmOnlyDriver
 from roboscript.backends.base import BackendError
 from roboscript.backends.driven import DriverBackend
-from roboscript.drivers.base import Driver, GoalStatus, JointStateReading, TrackingSample, TrajectoryGoal
+from roboscript.drivers.base import GoalStatus, JointStateReading, TrackingSample, TrajectoryGoal
 from roboscript.geometry import Transform
 from roboscript.robot_config import load_robot_config
 from roboscript.trajectory import JointTrajectory
@@ -46,16 +46,13 @@ class PacedController(TrajectoryGoal):
         self.stop_at = self.plan_time()
 
 
-class PacedDriver(Driver):
+class PacedDriver(ArmOnlyDriver):
     """Test double of a driver whose controller is a :class:`PacedController`; its arm is wherever the
     controller's set-point is."""
 
     def __init__(self, names: list[str], start: np.ndarray, pace: float, stall_at: float = 1.0):
         self.names, self.start, self.pace, self.stall_at = names, start, pace, stall_at
         self.goal: PacedController | None = None
-
-    def now(self) -> float:
-        return time.monotonic()
 
     def joint_state(self) -> JointStateReading:
         q = self.goal.set_point() if self.goal is not None else self.start
@@ -65,15 +62,6 @@ class PacedDriver(Driver):
     def send_trajectory(self, joint_names, trajectory):
         self.goal = PacedController(self, trajectory, self.pace, self.stall_at)
         return self.goal
-
-    def command_gripper(self, position, closing, timeout):
-        raise NotImplementedError
-
-    def camera_names(self) -> list[str]:
-        return []
-
-    def camera_frame(self, camera, timeout, not_before):
-        raise NotImplementedError
 
 
 def _backend(pace: float, stall_at: float = 1.0) -> tuple[DriverBackend, JointTrajectory]:

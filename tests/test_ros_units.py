@@ -10,8 +10,9 @@ from types import SimpleNamespace
 
 import pytest
 
+from helpers import ArmOnlyDriver
 from roboscript.backends.driven import DriverBackend
-from roboscript.drivers.base import Driver, DriverError, JointStateReading
+from roboscript.drivers.base import DriverError, JointStateReading
 from roboscript.geometry import Transform
 from roboscript.robot_config import load_robot_config
 from roboscript.ros.driver import _newest_complete
@@ -65,7 +66,7 @@ def test_each_tool_call_is_logged_with_its_answer_or_its_error():
     assert namespace["grasp"].__doc__ == "Grasps at pose."
 
 
-class LateSubscriberDriver(Driver):
+class LateSubscriberDriver(ArmOnlyDriver):
     """Test double of a driver whose joint-state subscriber falls behind: its reading is 5 s old until it has been
     asked ``late_for`` times, then fresh."""
 
@@ -76,21 +77,6 @@ class LateSubscriberDriver(Driver):
         self.asked += 1
         received = time.monotonic() - (5.0 if self.asked <= self.late_for else 0.0)
         return JointStateReading(dict.fromkeys(self.names, 0.0), 0.0, received)
-
-    def now(self) -> float:
-        return time.monotonic()
-
-    def send_trajectory(self, joint_names, trajectory):
-        raise NotImplementedError
-
-    def command_gripper(self, position, closing, timeout):
-        raise NotImplementedError
-
-    def camera_names(self) -> list[str]:
-        return []
-
-    def camera_frame(self, camera, timeout, not_before):
-        raise NotImplementedError
 
 
 def test_a_stale_joint_state_is_waited_on_while_the_arm_stands_still_but_not_during_a_motion():
