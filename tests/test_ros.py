@@ -83,12 +83,29 @@ def _ros_processes(tmpdir: Path | None = None) -> set[int]:
 
 
 @pytest.fixture(scope="module")
-def panda(ros_master):
+def _served_panda(ros_master):
+    """The module's served Panda, shared by its tests while it lives; ``panda`` replaces it once a test killed it."""
+    served: dict[str, tuple] = {}
+    yield served
+    if served:
+        backend, sim = served["panda"]
+        backend.close()
+        sim.stop()
+
+
+@pytest.fixture
+def panda(_served_panda):
+    """A served Panda and the backend that drives it. The stale-state test kills its robot; a test after it gets a
+    fresh one, not a backend whose action server is gone, whatever order the tests run in."""
+    if "panda" in _served_panda:
+        backend, sim = _served_panda["panda"]
+        if sim.process.poll() is None:
+            return backend, sim
+        backend.close()
+        sim.stop()
     sim = RosSim("panda")
-    backend = ros_backend("panda_franka_ros")
-    yield backend, sim
-    backend.close()
-    sim.stop()
+    _served_panda["panda"] = (ros_backend("panda_franka_ros"), sim)
+    return _served_panda["panda"]
 
 
 def _back_home(backend) -> None:
