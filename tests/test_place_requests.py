@@ -6,7 +6,7 @@ import logging
 import numpy as np
 import pytest
 
-from roboscript.api.nearby import NEAREST_BOUND, Support, free_spots, ring_candidates
+from roboscript.api.nearby import NEAREST_BOUND, Support, free_spots, keeping_neighbours, ring_candidates
 from roboscript.api.place_requests import PlacementError
 from roboscript.api.spots import Footprint
 from roboscript.assembly import build_tools
@@ -58,6 +58,23 @@ def test_free_spots_keep_clear_of_neighbours_and_on_the_support():
     # Off the edge of the table: no spot beyond it.
     edge = free_spots(np.array([[0.6, 0.0]]), np.array([0.025, 0.025]), 0.0, 0.05, support)
     assert edge == []
+
+
+def test_a_taken_position_beside_a_neighbour_moves_along_it_not_away_from_it():
+    """"14 cm beside the mug", where a strawberry stands: the thing goes beside the strawberry, still as near the
+    mug, rather than beyond the strawberry, which is as near the position but further from the mug."""
+    region = Receptacle("table", Transform.identity(), np.array([-0.5, -0.5, 0.8]), np.array([0.5, 0.5, 1.2]))
+    mug = Footprint(np.array([0.0, 0.0]), 0.0, np.array([0.045, 0.045]))
+    strawberry = Footprint(np.array([0.0, 0.14]), 0.0, np.array([0.02, 0.02]))
+    target, half = np.array([0.0, 0.14]), np.array([0.045, 0.045])  # 4 cm clear of the mug, with the margin
+    support = Support(region, 0.8, (mug, strawberry))
+    spots = free_spots(ring_candidates(target, NEAREST_BOUND, np.array([-0.45, 0.0])), half, 0.0, 0.08, support)
+    assert spots[0].center[1] > 0.2  # nearest first: beyond the strawberry, away from the mug
+    kept = keeping_neighbours(spots, target, half, 0.0, support.obstacles)
+    first = kept[0].center[:2]
+    assert abs(first[0]) >= 0.02 + 0.045  # clear of the strawberry, beside it
+    assert first[1] - 0.045 - 0.045 <= 0.14 - 0.09 + 0.02  # as near the mug as asked, within a ring
+    assert sorted(map(id, kept)) == sorted(map(id, spots))  # reordered, none lost
 
 
 def test_stacking_on_a_box_that_is_no_container():

@@ -429,6 +429,32 @@ def test_a_transfer_lifts_the_held_object_clear_and_carries_it_clear():
     motion.planner.validate(path.waypoints)  # and the whole of it is free with the ordinary padding
 
 
+def test_a_carried_object_stays_upright_where_the_arm_changes_branch():
+    """From one IK branch to another (joints 1 and 3 turned round, as a Panda placing a banana it took with its
+    wrist near a limit), a straight joint path tips the hand 48 degrees; under the transfer's path constraint the
+    held object tilts no more than its tilt at the goal plus TILT_ALLOWANCE anywhere along the path."""
+    import math
+
+    from roboscript.planning.transfer import TILT_ALLOWANCE, UP, upright
+
+    backend, motion = planner_for(objects_world(), "panda")
+    kinematics = motion.kinematics
+    start = np.array([0.15, -0.2, 1.03, -2.67, -2.83, 3.74, -2.12])
+    goal = np.array([-2.85, -0.39, -2.85, -2.49, -0.33, 2.85, 1.36])
+    held_up = kinematics.fk(start).rotation.T @ UP
+
+    def tilt(q: np.ndarray) -> float:
+        return math.acos(float(np.clip((kinematics.fk(q).rotation @ held_up)[2], -1.0, 1.0)))
+
+    limit = tilt(goal) + TILT_ALLOWANCE + math.radians(1)  # the planner checks states 0.08 rad apart
+    assert max(tilt(start + (goal - start) * s) for s in np.linspace(0, 1, 50)) > limit  # the straight way tips
+    keeps_upright = upright(kinematics, start, goal)
+    assert keeps_upright(start) and keeps_upright(goal)
+    path = motion.planner.plan(start, goal, "RRTConnect", 10.0, constraint=keeps_upright)
+    assert max(tilt(q) for q in densify(path.waypoints, motion.scene.lever_arms, 0.005)) <= limit
+    backend.close()
+
+
 def test_a_planner_that_runs_out_of_time_retries_with_twice_the_time_and_the_next_goal(monkeypatch):
     """MotionPlanner.plan's retry schedule, with a test double for the OMPL planner that times out twice (the
     machine's load taken as none, then as twice the CPUs)."""
@@ -443,7 +469,7 @@ def test_a_planner_that_runs_out_of_time_retries_with_twice_the_time_and_the_nex
     calls: list[tuple[float, float]] = []
 
     class TimesOutTwice:
-        def plan(self, start, goal, planner, timeout):
+        def plan(self, start, goal, planner, timeout, constraint=None):
             calls.append((float(goal[0] - start[0]), timeout))
             if len(calls) < 3:
                 raise PlannerTimeoutError(planner, timeout)
@@ -455,7 +481,7 @@ def test_a_planner_that_runs_out_of_time_retries_with_twice_the_time_and_the_nex
     assert calls == [(pytest.approx(0.1), 0.5), (pytest.approx(0.2), 1.0), (pytest.approx(0.1), 2.0)]
 
     class AlwaysTimesOut:
-        def plan(self, start, goal, planner, timeout):
+        def plan(self, start, goal, planner, timeout, constraint=None):
             calls.append((float(goal[0] - start[0]), timeout))
             raise PlannerTimeoutError(planner, timeout)
 
@@ -486,7 +512,7 @@ def test_a_path_that_fails_the_dense_validation_is_planned_again_and_screens_the
     calls: list[float] = []
 
     class GrazesOnce:
-        def plan(self, start, goal, planner, timeout):
+        def plan(self, start, goal, planner, timeout, constraint=None):
             calls.append(timeout)
             if len(calls) < 2:
                 raise PathInCollisionError(942, 1049, [("mug", "cabinet.drawer_1")])

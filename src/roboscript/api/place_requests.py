@@ -14,7 +14,14 @@ import math
 import numpy as np
 
 from roboscript.api import compartments, supports
-from roboscript.api.nearby import NEAREST_BOUND, REPORT_BOUND, distance_moved, free_spots, ring_candidates
+from roboscript.api.nearby import (
+    NEAREST_BOUND,
+    REPORT_BOUND,
+    distance_moved,
+    free_spots,
+    keeping_neighbours,
+    ring_candidates,
+)
 from roboscript.api.spots import MARGIN, Footprint, PlacementSpot, fits, spots_in_receptacle
 from roboscript.errors import FailureError
 from roboscript.geometry import Box3D, Transform
@@ -136,8 +143,10 @@ class PlaceRequests:
             # where things are put aside.
             named = table if receptacle_name == TABLE else self._receptacle(receptacle_name, name)
             candidates = [supports.support_named(self.perception, name, named)]
+        ring = ring_candidates(target[:2], NEAREST_BOUND, self.base_xy)
         for support in candidates:
-            spots = free_spots(ring_candidates(target[:2], NEAREST_BOUND, self.base_xy), half, yaw, height, support)
+            spots = free_spots(ring, half, yaw, height, support)
+            spots = keeping_neighbours(spots, target[:2], half, yaw, support.obstacles)
             spots = _open_side(spots, support.region)
             if spots:
                 return spots

@@ -28,7 +28,7 @@ from roboscript.planning.kinematics import ArmKinematics
 from roboscript.planning.planner import JointPath, JointPlanner, pose_distance, same_pose, seed_sampling, whole_turns
 from roboscript.planning.scene import PlanningScene
 from roboscript.planning.timing import time_parameterize
-from roboscript.planning.transfer import plan_transfer
+from roboscript.planning.transfer import plan_transfer, upright
 from roboscript.robot_io import ExecutionReport
 
 WIDE_APPROACH_SEARCH = {"attempts": 8, "max_attempts": 80, "branches": 8}  # see MotionPlanner.approaches
@@ -169,8 +169,9 @@ class MotionPlanner:
         machine too (``JointPath.attempts`` says how many runs it took). A run whose every path failed the dense
         validation (a narrow passage the planner's coarser checks slipped through) is retried the same way. While
         the gripper holds something, the path is a transfer (:mod:`roboscript.planning.transfer`) where one can be
-        found. Each run's time is scaled by the machine's load (:func:`~roboscript.load.load_factor`), as every
-        wall-clock budget here is."""
+        found; the path keeps what the gripper holds upright (:func:`~roboscript.planning.transfer.upright`) on
+        every run but the last. Each run's time is scaled by the machine's load
+        (:func:`~roboscript.load.load_factor`), as every wall-clock budget here is."""
         name, budget = planner or self.default_planner, self._budget(timeout)
         transfer = bool(self.scene.attached)  # carried clear of everything where that can be done
         for attempt in range(PLANNING_ATTEMPTS):
@@ -183,8 +184,13 @@ class MotionPlanner:
                     pass
                 except PlanningError:  # no room to come clear at one end: an ordinary path, from now on
                     transfer = False
+            # An ordinary path, without the transfer's clearance; still upright while something is held, but for
+            # the last run: a path that tips the hand beats none.
+            upright_here = self.scene.attached and attempt < PLANNING_ATTEMPTS - 1
+            constraint = upright(self.kinematics, start, goal) if upright_here else None
             try:
-                return dataclasses.replace(self.planner.plan(start, goal, name, limit), attempts=attempt + 1)
+                path = self.planner.plan(start, goal, name, limit, constraint=constraint)
+                return dataclasses.replace(path, attempts=attempt + 1)
             except (PlannerTimeoutError, PathInCollisionError) as exc:
                 last = exc
         raise last
@@ -193,9 +199,12 @@ class MotionPlanner:
         """Whether one planner run finds a collision-free path from ``start`` to ``goal`` within ``timeout``
         (default: the planning timeout; scaled by the load, as :meth:`plan`'s): a screen for goals that IK reaches
         but a path cannot (a configuration walled in by the table, or reached only through a passage too narrow for
-        the dense validation), not a verdict, since a busy machine may need the retries of :meth:`plan`."""
+        the dense validation), not a verdict, since a busy machine may need the retries of :meth:`plan`. While the
+        gripper holds something, the path must keep it upright, as a transfer's does: a goal on another IK branch,
+        reached only by turning the arm round and tipping the hand over, does not pass."""
+        constraint = upright(self.kinematics, start, goal) if self.scene.attached else None
         try:
-            self.planner.plan(start, goal, self.default_planner, self._budget(timeout))
+            self.planner.plan(start, goal, self.default_planner, self._budget(timeout), constraint=constraint)
         except (PlannerTimeoutError, PathInCollisionError):
             return False
         return True

@@ -14,6 +14,7 @@ from __future__ import annotations
 
 import itertools
 import time
+from collections.abc import Callable
 from dataclasses import dataclass
 
 import numpy as np
@@ -232,9 +233,12 @@ class JointPlanner:
         timeout: float = 2.0,
         simplify: bool = True,
         optimize: bool = False,
+        constraint: Callable[[np.ndarray], bool] | None = None,
     ) -> JointPath:
         """A validated collision-free path from ``start`` to ``goal``, or to ``goal`` turned a whole turn about a
         joint that can turn more than once (see :func:`whole_turn_equivalents`; ``JointPath.goal`` says which).
+        ``constraint``: a path constraint every configuration along the path must meet besides being free (as
+        MoveIt's path constraints: keeping a held cup upright), checked as often as collisions are.
 
         Optimising planners stop at their first exact solution unless ``optimize`` is set (then they use the
         whole ``timeout``). Raises :class:`StateInCollisionError`, :class:`PlannerTimeoutError` or
@@ -250,7 +254,7 @@ class JointPlanner:
         for attempt in range(3):
             # The planner's motion checks are coarse for speed; a path that fails the dense validation is planned
             # again with checks four times finer (rare: a graze between two coarse checks).
-            waypoints = self._solve(name, start, goal, timeout, simplify, optimize, check_step)
+            waypoints = self._solve(name, start, goal, timeout, simplify, optimize, check_step, constraint)
             checked = time.perf_counter()
             blocked = first_blocked(self.scene, waypoints, self.validation_step)
             validation += time.perf_counter() - checked
@@ -269,6 +273,7 @@ class JointPlanner:
         simplify: bool,
         optimize: bool,
         check_step: float,
+        constraint: Callable[[np.ndarray], bool] | None = None,
     ) -> np.ndarray:
         ob, og, _ = import_ompl()
         dof = self.scene.dof
@@ -286,7 +291,7 @@ class JointPlanner:
         def valid(state) -> bool:
             for j in indices:
                 buffer[j] = state[j]
-            return is_free(buffer)
+            return is_free(buffer) and (constraint is None or constraint(buffer))
 
         setup.setStateValidityChecker(valid)
         info = setup.getSpaceInformation()
