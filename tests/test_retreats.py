@@ -33,3 +33,47 @@ def test_rising_is_backing_out_only_within_20_degrees_of_a_tilted_release():
         # A handle's bar leaves the fingers any way back: within the 60 degrees of any own retreat.
         retreats.pending = Owed(_tilted(39.0), 0.03, "release", of_object=False)
         assert retreats.first(up, shorter=True) is not None
+
+
+def _hand(approach: np.ndarray, closing: np.ndarray) -> np.ndarray:
+    """A hand's rotation from its approach (z) and closing (y) axes."""
+    z = np.asarray(approach, dtype=float) / np.linalg.norm(approach)
+    y = np.asarray(closing, dtype=float) - (np.asarray(closing) @ z) * z
+    y /= np.linalg.norm(y)
+    return np.column_stack([np.cross(y, z), y, z])
+
+
+def test_a_hand_pitched_down_from_the_side_backs_out_level():
+    from roboscript.api.retreats import _backing_out
+
+    pitched = math.radians(29.0)
+    side = np.array([math.cos(pitched), 0.0, -math.sin(pitched)])  # toward +x, 29 degrees down
+    np.testing.assert_allclose(_backing_out(_hand(side, [0.0, 1.0, 0.0])), [-1.0, 0.0, 0.0], atol=1e-9)
+    # From above, steeply down, or with the fingers closing up and down: back along the approach.
+    for approach, closing in (([0, 0, -1], [0, 1, 0]), ([0.5, 0, -0.866], [0, 1, 0]), (side, [0.0, 0.0, 1.0])):
+        rotation = _hand(np.array(approach, dtype=float), np.array(closing, dtype=float))
+        np.testing.assert_allclose(_backing_out(rotation), -rotation[:, 2], atol=1e-9)
+
+
+def test_a_cup_let_go_from_the_side_at_a_plates_near_edge_stays_on_the_plate():
+    # Gripped level below its flared rim, the brown cup was lifted by the rim as the Panda's fingers backed out
+    # along their pitched approach, and carried off the plate (paper task simple_1, seed 4, helpers style).
+    from roboscript.bench.tasks import get_task
+    from roboscript.sim.world_catalog import load_world
+
+    world = load_world(get_task("simple_1").world).randomized(4)
+    with MujocoBackend(world, robot="panda", settle=0.5) as backend:
+        tools, cup = build_tools(backend), "brown_ceramic_cup"
+        tools.detect_objects()
+        tools.open_gripper()
+        tools.grasp(tools.parse_horizontal_grasp_pose(object_name=cup))
+        tools.close_gripper()
+        tools.attach_object(cup)
+        tools.move_in_direction([0, 0, 1], 0.1)
+        tools.move_to_pose(tools.parse_place_pose(object_name=cup, receptacle_name="white_ceramic_plate"))
+        placed = backend.ground_truth.box(cup).center
+        tools.open_gripper()
+        tools.detach_object(cup)
+        tools.move_in_direction([0, 0, 1], 0.1)
+        left = backend.ground_truth.box(cup).center
+        assert abs(left[2] - placed[2]) < 0.02 and np.linalg.norm(left[:2] - placed[:2]) < 0.03

@@ -34,6 +34,8 @@ LEVEL = 0.5  # sine (30 deg) of a backing-out direction's slope below which the 
 OUT_FROM_UNDER = 0.4  # metres a hand let go level backs out at most to have nothing over it
 OUT_STEP = 0.02
 WRIST_LENGTH = 0.08  # metres behind the hand (along the approach) the wrist still counts as the hand
+PITCHED_SIDE = 0.71  # sine (45 deg) of an approach's downward slope below which a side grasp backs out level
+LEVEL_FINGERS = 0.26  # sine (15 deg) of the closing axis's slope below which the fingers close level
 
 
 @dataclass(frozen=True)
@@ -71,8 +73,9 @@ class Retreats:
         self.pending = Owed(UP.copy(), LIFT_AFTER_GRASP, "lift")
 
     def owe_release(self) -> None:
-        """After letting go: back along the approach axis, until the fingertips have cleared what was held."""
-        back = -self.backend.tcp_pose().rotation[:, 2]
+        """After letting go: back along the approach axis (level, for a hand pitched down from the side:
+        :func:`_backing_out`), until the fingertips have cleared what was held."""
+        back = _backing_out(self.backend.tcp_pose().rotation)
         distance = self._out_from_under(back, self._release_distance(back))
         self.pending = Owed(back, distance, "release", of_object=bool(self.held.objects))
 
@@ -169,3 +172,18 @@ class Retreats:
             if len(points):
                 reach = max(reach, float(np.max((points - tcp) @ back)))
         return max(RETREAT_AFTER_RELEASE, reach + self.gripper.tip_length + RELEASE_CLEARANCE)
+
+
+def _backing_out(rotation: np.ndarray) -> np.ndarray:
+    """The direction the hand (turned by ``rotation``; its z axis the approach, its y axis the fingers' closing
+    axis) backs out in after letting go: back along the approach, or level where it came from the side pitched
+    down with its fingers closing level. Backing out along a pitched approach rises too, and fingers that held a
+    cup below its flared rim lift it by the rim and drag it off the plate (a Panda's brown cup, let go at the
+    plate's near edge); drawn out level, the fingers slide out in their own plane and leave it standing."""
+    approach, closing = rotation[:, 2], rotation[:, 1]
+    back = -approach
+    pitched_side = 0.0 < -float(approach[2]) < PITCHED_SIDE and abs(float(closing[2])) < LEVEL_FINGERS
+    if not pitched_side:
+        return back
+    level = np.array([back[0], back[1], 0.0])
+    return level / float(np.linalg.norm(level))
