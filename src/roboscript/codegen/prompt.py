@@ -47,7 +47,8 @@ def tool_reference() -> str:
     pose = "Pose(): a pose with .position.x/.y/.z and .orientation.x/.y/.z/.w (a unit quaternion), all assignable."
     errors = (
         f"Errors a program may catch by name: {', '.join(PROGRAM_ERRORS)}; FailureError is any the robot could not "
-        "do, UsageError any call that was wrong."
+        "do, UsageError any call that was wrong. A program that gives up raises one with a message, e.g. "
+        "raise PlacementError('no free spot on the plate')."
     )
     return "\n\n".join(blocks) + "\n\n# " + pose + "\n# " + errors
 
