@@ -11,6 +11,7 @@ from __future__ import annotations
 import contextlib
 import datetime
 import logging
+import math
 import time
 from collections.abc import Sequence
 
@@ -62,6 +63,9 @@ class RealSenseCamera:
             raise
         self._align = rs.align(rs.stream.color)
         self._streaming = False  # until the first frame: a camera just started may take START_TIMEOUT to send one
+        # A recording's frames are given once each, in order: one queued as the pipeline began playing, before the
+        # seek back to the start, comes again after it (a busy machine's full test run saw three of two frames).
+        self._last_recorded = -math.inf
 
     def _check(self, profile) -> np.ndarray:
         """Checks the started device against the configuration; returns the colour stream's intrinsics."""
@@ -91,7 +95,12 @@ class RealSenseCamera:
             left = deadline - time.monotonic()
             ok, frames = self._pipeline.try_wait_for_frames(max(1, int(left * 1000)))
             # a recording's stamps are of when it was recorded: its frames count as taken now, in order
-            if ok and (self.settings.recording or _captured(frames, rs) >= not_before):
+            if ok and self.settings.recording:
+                if frames.get_timestamp() > self._last_recorded:
+                    self._last_recorded = frames.get_timestamp()
+                    break
+                continue
+            if ok and _captured(frames, rs) >= not_before:
                 break
             if time.monotonic() >= deadline or (not ok and self.settings.recording):
                 ended = " (the recording has ended)" if self.settings.recording and not ok else ""
