@@ -435,7 +435,7 @@ def test_a_carried_object_stays_upright_where_the_arm_changes_branch():
     held object tilts no more than its tilt at the goal plus TILT_ALLOWANCE anywhere along the path."""
     import math
 
-    from roboscript.planning.transfer import TILT_ALLOWANCE, UP, upright
+    from roboscript.planning.transfer import TILT_ALLOWANCE, UP, held_tilt, upright
 
     backend, motion = planner_for(objects_world(), "panda")
     kinematics = motion.kinematics
@@ -444,7 +444,7 @@ def test_a_carried_object_stays_upright_where_the_arm_changes_branch():
     held_up = kinematics.fk(start).rotation.T @ UP
 
     def tilt(q: np.ndarray) -> float:
-        return math.acos(float(np.clip((kinematics.fk(q).rotation @ held_up)[2], -1.0, 1.0)))
+        return held_tilt(kinematics, q, held_up)
 
     limit = tilt(goal) + TILT_ALLOWANCE + math.radians(1)  # the planner checks states 0.08 rad apart
     assert max(tilt(start + (goal - start) * s) for s in np.linspace(0, 1, 50)) > limit  # the straight way tips

@@ -96,8 +96,9 @@ class RealSenseCamera:
             ok, frames = self._pipeline.try_wait_for_frames(max(1, int(left * 1000)))
             # a recording's stamps are of when it was recorded: its frames count as taken now, in order
             if ok and self.settings.recording:
-                if frames.get_timestamp() > self._last_recorded:
-                    self._last_recorded = frames.get_timestamp()
+                stamp = frames.get_timestamp()
+                if stamp > self._last_recorded:
+                    self._last_recorded = stamp
                     break
                 continue
             if ok and _captured(frames, rs) >= not_before:

@@ -35,7 +35,7 @@ def upright(kinematics: ArmKinematics, start: np.ndarray, goal: np.ndarray) -> C
     """A path constraint: the held object's upward direction at ``start`` (the world's up, in the hand's frame)
     tilts from the world's up by no more than its tilt at ``goal`` plus :data:`TILT_ALLOWANCE`."""
     held_up = kinematics.fk(start).rotation.T @ UP
-    limit = math.cos(min(math.pi, _tilt(kinematics, goal, held_up) + TILT_ALLOWANCE))
+    limit = math.cos(min(math.pi, held_tilt(kinematics, goal, held_up) + TILT_ALLOWANCE))
 
     def keeps_upright(q: np.ndarray) -> bool:
         return float((kinematics.fk(q).rotation @ held_up)[2]) >= limit
@@ -43,7 +43,9 @@ def upright(kinematics: ArmKinematics, start: np.ndarray, goal: np.ndarray) -> C
     return keeps_upright
 
 
-def _tilt(kinematics: ArmKinematics, q: np.ndarray, held_up: np.ndarray) -> float:
+def held_tilt(kinematics: ArmKinematics, q: np.ndarray, held_up: np.ndarray) -> float:
+    """How far (radians) the held object's upward direction ``held_up`` (in the hand's frame) tilts from the
+    world's up with the arm at ``q``."""
     return math.acos(float(np.clip((kinematics.fk(q).rotation @ held_up)[2], -1.0, 1.0)))
 
 
