@@ -395,6 +395,25 @@ def test_a_contact_may_be_left_or_brushed_but_not_pushed_into():
     assert not scene.is_valid(touching)
 
 
+def test_a_path_screen_from_within_a_contact_may_leave_it_as_the_motion_will():
+    """A hand that ended within the padding of a box (a held object slipped in the fingers near a link, say):
+    ``connects`` screens the way out as the motion itself will be allowed to make it, and allows nothing after."""
+    world = objects_world({"name": "box", "type": "blue_box", "position": [0.0, 0.0]})
+    backend, motion = planner_for(world, "panda")
+    scene = motion.scene
+    center = backend.ground_truth.box("box").center
+    scene.update(backend.sim_world.data.qpos)
+    clear = motion.ik(Transform(center + np.array([0.0, 0.0, 0.1]), DOWN))
+    solve = motion.kinematics.solve
+    heights = np.arange(0.1, -0.02, -0.002)
+    configurations = [solve(Transform(center + np.array([0.0, 0.0, h]), DOWN), clear).q for h in heights]
+    touching = next(q for q in configurations if not scene.is_valid(q))
+    with pytest.raises(StateInCollisionError):
+        motion.planner.plan(touching, clear, motion.default_planner, 2.0)
+    assert motion.connects(touching, clear)
+    assert not scene.is_valid(touching), "the screen's allowance ends with it"
+
+
 def test_a_transfer_lifts_the_held_object_clear_and_carries_it_clear():
     """A box held as it rests on the table goes straight up until it is 2 cm clear of everything, stays so on the
     planned part of the path, and comes straight down into the goal beside a wall."""

@@ -202,9 +202,10 @@ class MotionPlanner:
         the dense validation), not a verdict, since a busy machine may need the retries of :meth:`plan`. The
         screen asks for no upright path while the gripper holds something (:meth:`plan` does): one run of a planner
         so constrained often misses the narrow way into a drawer, and the place pose screened then rose 5 cm, from
-        where a UR5e's open fingers kept the cup."""
+        where a UR5e's open fingers kept the cup. Contacts the arm starts in may be left, as the motion's will."""
         try:
-            self.planner.plan(start, goal, self.default_planner, self._budget(timeout))
+            with self.scene.leaving_where(start):
+                self.planner.plan(start, goal, self.default_planner, self._budget(timeout))
         except (PlannerTimeoutError, PathInCollisionError):
             return False
         return True

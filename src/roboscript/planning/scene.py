@@ -471,6 +471,25 @@ class PlanningScene:
         for (i, j), floor in floors.items():
             self._leaving[(i, j)] = self._leaving[(j, i)] = floor
 
+    @contextlib.contextmanager
+    def leaving_where(self, q: np.ndarray) -> Iterator[None]:
+        """Within this block, every contact the arm at ``q`` is in may be left but not deepened (as
+        :meth:`allow_leaving` allows): for screens of a motion from where the arm is, which will be allowed the
+        same before it is made (a pear that slipped 3 mm in the hand, lifted beside a UR5e's base, came within the
+        padding of its upper arm, and every place pose's path screen failed at its start)."""
+        saved = dict(self._leaving)
+        self._place(np.asarray(q, dtype=float))
+        mujoco.mj_collision(self.model, self.data)
+        distances = self.data.contact.dist
+        for k, (a, b) in enumerate(self._contact_bodies()):
+            if not self._allowed[a, b] and (a, b) not in saved:
+                floor = min(self._leaving.get((a, b), 0.0), float(distances[k]))
+                self._leaving[(a, b)] = self._leaving[(b, a)] = floor
+        try:
+            yield
+        finally:
+            self._leaving = saved
+
     def leaving_names(self) -> set[tuple[str, str]]:
         """The pairs allowed to be left (:meth:`allow_leaving`) as names, to carry them into a rebuilt scene."""
         return {(self.body_labels[a], self.body_labels[b]) for a, b in self._leaving if a < b}
