@@ -6,9 +6,16 @@ import logging
 import numpy as np
 import pytest
 
-from roboscript.api.nearby import NEAREST_BOUND, Support, free_spots, keeping_neighbours, ring_candidates
+from roboscript.api.nearby import (
+    NEAREST_BOUND,
+    Support,
+    finger_room_turns,
+    free_spots,
+    ranked,
+    ring_candidates,
+)
 from roboscript.api.place_requests import PlacementError
-from roboscript.api.spots import Footprint
+from roboscript.api.spots import Footprint, gap
 from roboscript.assembly import build_tools
 from roboscript.backends.mujoco_backend import MujocoBackend
 from roboscript.geometry import Transform
@@ -61,7 +68,7 @@ def test_free_spots_keep_clear_of_neighbours_and_on_the_support():
 
 
 def test_a_taken_position_beside_a_neighbour_moves_along_it_not_away_from_it():
-    """"14 cm beside the mug", where a strawberry stands: the thing goes beside the strawberry, still as near the
+    """ "14 cm beside the mug", where a strawberry stands: the thing goes beside the strawberry, still as near the
     mug, rather than beyond the strawberry, which is as near the position but further from the mug."""
     region = Receptacle("table", Transform.identity(), np.array([-0.5, -0.5, 0.8]), np.array([0.5, 0.5, 1.2]))
     mug = Footprint(np.array([0.0, 0.0]), 0.0, np.array([0.045, 0.045]))
@@ -70,11 +77,32 @@ def test_a_taken_position_beside_a_neighbour_moves_along_it_not_away_from_it():
     support = Support(region, 0.8, (mug, strawberry))
     spots = free_spots(ring_candidates(target, NEAREST_BOUND, np.array([-0.45, 0.0])), half, 0.0, 0.08, support)
     assert spots[0].center[1] > 0.2  # nearest first: beyond the strawberry, away from the mug
-    kept = keeping_neighbours(spots, target, half, 0.0, support.obstacles)
+    kept = ranked(spots, target, half, 0.0, support.obstacles)
     first = kept[0].center[:2]
     assert abs(first[0]) >= 0.02 + 0.045  # clear of the strawberry, beside it
     assert first[1] - 0.045 - 0.045 <= 0.14 - 0.09 + 0.02  # as near the mug as asked, within a ring
-    assert sorted(map(id, kept)) == sorted(map(id, spots))  # reordered, none lost
+    assert sorted(tuple(s.center) for s in kept) == sorted(tuple(s.center) for s in spots)  # reordered, none lost
+
+
+def test_a_position_moved_off_what_stood_there_leaves_the_fingers_room_to_take_the_thing_again():
+    """A gelatin box asked to go where a medication bottle stands (overlapping it by 2 cm, so taken for a
+    neighbour): it moves along the bottle, but not snug against it across its narrow side, where the fingers close
+    to take it again; the turns kept are those that leave that room."""
+    region = Receptacle("table", Transform.identity(), np.array([-0.5, -0.5, 0.8]), np.array([0.5, 0.5, 1.2]))
+    bottle = Footprint(np.array([0.0, 0.0]), 0.0, np.array([0.022, 0.022]))
+    half = np.array([0.045, 0.036])  # narrow along y: the fingers close along y
+    target = np.array([0.0, 0.022 + 0.036 + 0.007 - 0.02])
+    support = Support(region, 0.8, (bottle,))
+    spots = free_spots(ring_candidates(target, NEAREST_BOUND, np.array([-0.45, 0.0])), half, 0.0, 0.03, support)
+    first = ranked(spots, target, half, 0.0, support.obstacles)[0]
+    assert finger_room_turns(first, half, 0.0, support.obstacles) == first.turns
+    for turn in first.turns:
+        # The open fingers (2 cm square pads, 1 cm out from each long side) come down across the narrow side.
+        closing = np.array([-np.sin(turn), np.cos(turn)])  # the box's own y axis, turned
+        for side in (-1.0, 1.0):
+            pad = Footprint(first.center[:2] + side * closing * (half[1] + 0.01 + 0.01), turn, np.array([0.01, 0.01]))
+            assert gap(pad, bottle) > 0.0, f"a finger comes down on the bottle (turn {turn:.2f})"
+    assert np.linalg.norm(first.center[:2] - target) <= 0.08, "not sent far off for it"
 
 
 def test_stacking_on_a_box_that_is_no_container():

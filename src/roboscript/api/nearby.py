@@ -9,13 +9,14 @@ order of distance until the arm reaches one.
 
 A position is usually chosen by what is near it ("15 cm beside the red mug"), and a position does not say which
 neighbour it was chosen by. So among spots about as near, those that keep the position's near neighbours as near
-come first: the thing moves along its neighbours, not away from them (:func:`keeping_neighbours`).
+come first: the thing moves along its neighbours, not away from them; and a moved spot that leaves the fingers
+room to take the thing again comes before one snug against what stood in the way (:func:`ranked`).
 """
 
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
 import numpy as np
 
@@ -39,6 +40,13 @@ TURNS = (0.0, math.pi / 2, -math.pi / 2, math.pi)
 NEIGHBOUR_GAP = 0.05
 NEIGHBOUR_OVERLAP = 0.03
 NEIGHBOUR_WEIGHT = 2.0
+# A thing moved is often taken again (a swap sets it aside, then fetches it): a moved spot should leave room, on both
+# sides of a line across its footprint that the fingers close along, for the open fingers coming down round it. A
+# gelatin box moved 6 cm against a medication bottle (5 mm between them) could not be grasped again. Spots without
+# that room in any turn are charged FINGER_PENALTY metres; those with it keep only the turns that have it.
+FINGER_ROOM = 0.03
+FINGER_PENALTY = 0.04
+SQUARE_RATIO = 1.1  # a footprint whose sides differ by less than this (a can, a cube) is taken across either side
 
 
 @dataclass(frozen=True)
@@ -102,23 +110,58 @@ def distance_moved(spot: PlacementSpot, target: np.ndarray) -> float:
     return float(np.linalg.norm(spot.center[:2] - np.asarray(target, dtype=float)[:2]))
 
 
-def keeping_neighbours(
+def ranked(
     spots: list[PlacementSpot], target_xy: np.ndarray, half: np.ndarray, yaw: float, obstacles: tuple[Footprint, ...]
 ) -> list[PlacementSpot]:
-    """The spots round ``target_xy`` reordered: by how far each moves the thing plus (twice) how much further it
+    """The spots round ``target_xy`` reordered: by how far each moves the thing, plus (twice) how much further it
     takes it from the target's neighbours (footprints within :data:`NEIGHBOUR_GAP` of the thing's footprint at the
-    target, or overlapping it by at most :data:`NEIGHBOUR_OVERLAP`), in steps of :data:`RING_STEP` so that within
-    a step the ring's order (nearest the middle of the reach first) stands."""
+    target, or overlapping it by at most :data:`NEIGHBOUR_OVERLAP`), plus :data:`FINGER_PENALTY` for a moved spot
+    that leaves no finger room (:func:`finger_room_turns`), in steps of :data:`RING_STEP` so that within a step the
+    ring's order (nearest the middle of the reach first) stands. A moved spot with finger room keeps only the turns
+    that leave it."""
     if not spots:
         return spots
     own_half = np.asarray(half, dtype=float) + MARGIN
     target = np.asarray(target_xy, dtype=float)[None]
-    centers = np.array([s.center[:2] for s in spots])
-    cost = np.linalg.norm(centers - target, axis=1)
-    for obstacle in obstacles:
-        asked = float(gaps(target, yaw, own_half, obstacle)[0])
-        if -NEIGHBOUR_OVERLAP <= asked <= NEIGHBOUR_GAP:
-            cost += NEIGHBOUR_WEIGHT * np.clip(gaps(centers, yaw, own_half, obstacle) - max(asked, 0.0), 0.0, None)
-    steps = np.round(cost / RING_STEP).astype(int)
-    order = np.argsort(steps, kind="stable")
-    return [spots[k] for k in order]
+    asked = [float(gaps(target, yaw, own_half, obstacle)[0]) for obstacle in obstacles]
+    neighbours = [
+        (o, max(a, 0.0)) for o, a in zip(obstacles, asked, strict=True) if -NEIGHBOUR_OVERLAP <= a <= NEIGHBOUR_GAP
+    ]
+    ranked_spots, costs = [], []
+    for spot in spots:
+        moved = float(np.linalg.norm(spot.center[:2] - target[0]))
+        cost = moved
+        if moved > MOVED:  # the position itself stays as the program chose it
+            roomy = finger_room_turns(spot, half, yaw, obstacles)
+            spot = replace(spot, turns=roomy) if roomy else spot
+            cost += 0.0 if roomy else FINGER_PENALTY
+        center = spot.center[None, :2]
+        for neighbour, gap in neighbours:
+            # In the turn that keeps it nearest: a box turned a quarter keeps as near a neighbour with its long side.
+            nearest = min(float(gaps(center, yaw + turn, own_half, neighbour)[0]) for turn in spot.turns)
+            cost += NEIGHBOUR_WEIGHT * max(nearest - gap, 0.0)
+        ranked_spots.append(spot)
+        costs.append(cost)
+    steps = np.round(np.array(costs) / RING_STEP).astype(int)
+    return [ranked_spots[k] for k in np.argsort(steps, kind="stable")]
+
+
+def finger_room_turns(
+    spot: PlacementSpot, half: np.ndarray, yaw: float, obstacles: tuple[Footprint, ...]
+) -> tuple[float, ...]:
+    """The turns of ``spot`` in which the thing (footprint half-extents ``half``, turned ``yaw``) has
+    :data:`FINGER_ROOM` clear on both sides along a side the fingers would close across: the narrower, or either
+    of a footprint about square (:data:`SQUARE_RATIO`)."""
+    half = np.asarray(half, dtype=float)
+    own_half = half + MARGIN
+    across = [k for k in (0, 1) if half[k] <= SQUARE_RATIO * half.min()]
+    center = spot.center[None, :2]
+    roomy = []
+    for turn in spot.turns:
+        for k in across:
+            grown = own_half.copy()
+            grown[k] += FINGER_ROOM
+            if all(gaps(center, yaw + turn, grown, obstacle)[0] >= 0 for obstacle in obstacles):
+                roomy.append(turn)
+                break
+    return tuple(roomy)

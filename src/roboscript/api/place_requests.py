@@ -19,7 +19,7 @@ from roboscript.api.nearby import (
     REPORT_BOUND,
     distance_moved,
     free_spots,
-    keeping_neighbours,
+    ranked,
     ring_candidates,
 )
 from roboscript.api.spots import MARGIN, Footprint, PlacementSpot, fits, spots_in_receptacle
@@ -146,7 +146,7 @@ class PlaceRequests:
         ring = ring_candidates(target[:2], NEAREST_BOUND, self.base_xy)
         for support in candidates:
             spots = free_spots(ring, half, yaw, height, support)
-            spots = keeping_neighbours(spots, target[:2], half, yaw, support.obstacles)
+            spots = ranked(spots, target[:2], half, yaw, support.obstacles)
             spots = _open_side(spots, support.region)
             if spots:
                 return spots
