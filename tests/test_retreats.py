@@ -77,3 +77,35 @@ def test_a_cup_let_go_from_the_side_at_a_plates_near_edge_stays_on_the_plate():
         tools.move_in_direction([0, 0, 1], 0.1)
         left = backend.ground_truth.box(cup).center
         assert abs(left[2] - placed[2]) < 0.02 and np.linalg.norm(left[:2] - placed[:2]) < 0.03
+
+
+def test_a_step_back_from_what_was_let_go_is_made_as_far_as_it_goes(caplog):
+    """After letting go, the owed retreat is made first where the program's step is not one (73 degrees off it):
+    that step, beyond the arm's reach in full, is made as far as it goes with a notice, not refused: the hand has
+    left what it let go. Any other motion out of reach is still an IKError."""
+    import pytest
+
+    from roboscript.planning import IKError
+    from roboscript.sim.world_file import parse_world
+
+    world = parse_world({"name": "one_box", "objects": [{"name": "box", "type": "blue_box", "position": [0.1, 0.0]}]})
+    with MujocoBackend(world, robot="panda", settle=0.5) as backend:
+        tools = build_tools(backend)
+        tools.detect_objects()
+        tools.open_gripper()
+        tools.grasp(tools.parse_central_lift_grasp_pose(object_name="box"))
+        tools.close_gripper()
+        tools.attach_object("box")
+        tools.move_to_pose(tools.parse_place_pose(object_name="box", position=[0.1, 0.15, 0.0]))
+        tools.open_gripper()
+        tools.detach_object("box")
+        start = backend.tcp_pose().position
+        step = np.array([1.0, 0.0, 0.3]) / np.linalg.norm([1.0, 0.0, 0.3])
+        with caplog.at_level("INFO"):
+            tools.move_in_direction(step, 1.2)
+        moved = backend.tcp_pose().position - start
+        assert moved[2] > 0.04, "the owed retreat up was made"
+        assert 0.05 < float(moved @ step) < 1.0, "then the step, part of the way"
+        assert any("backed off" in r.getMessage() and "from what was let go" in r.getMessage() for r in caplog.records)
+        with pytest.raises(IKError):
+            tools.move_in_direction(step, 1.2)  # no longer a step back from anything

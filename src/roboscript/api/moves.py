@@ -96,9 +96,28 @@ class Moves:
                 # motion leaves from here (as move_to_pose's retreat does).
                 notice("move_in_direction: the retreat from what was let go is beyond the arm's reach: stopped here")
                 return
+            if self._backing_further(unit * distance):
+                return
             if not self.retreats.lift_within_reach(unit * distance):
                 raise
         self.contacts.withdraw_cleared(self.held)
+
+    def _backing_further(self, motion: np.ndarray) -> bool:
+        """A program's step back from what it let go, made after the owed retreat (along another line: a hand
+        tilted in a compartment backs out level, the program along its tilted axis), that cannot be made in full
+        (the swung door beside it, the edge of reach) is made as far as it is free, with a notice: the hand has
+        already left what it let go, which is what the step was for. False for any other motion (nothing moved)."""
+        made = self.retreats.just_made
+        length = float(np.linalg.norm(motion))
+        if made is None or made.kind != "release" or length == 0.0 or float(made.direction @ motion) <= 0.0:
+            return False
+        moved = self.motion.retreat(motion, length, least=0.0)
+        notice(
+            f"move_in_direction: backed off {moved:.3f} m of {length:.3f} m from what was let go: the rest is "
+            "blocked or beyond the arm's reach"
+        )
+        self.contacts.withdraw_cleared(self.held)
+        return True
 
     def _pull(self, parts: list[str], unit: np.ndarray, distance: float) -> None:
         """A drawer or door held moves the hand only along its joint: a straight line as far as the arm can

@@ -67,6 +67,7 @@ class Retreats:
         self.contacts, self.held, self.gripper = contacts, held, gripper
         self.leave_where_started = leave_where_started
         self.pending: Owed | None = None
+        self.just_made: Owed | None = None  # the retreat the last :meth:`first` made, if it made one
 
     def owe_lift(self) -> None:
         """After a grasp: off the support, straight up."""
@@ -85,6 +86,7 @@ class Retreats:
         ``shorter``, after a release, of any length (the caller then makes it as long as the owed one,
         :meth:`own`). Returns the retreat not made when ``motion`` is the program's own retreat, else None."""
         pending, self.pending = self.pending, None
+        self.just_made = None
         if pending is None:
             return None
         length = 0.0 if motion is None else float(np.linalg.norm(motion))
@@ -106,6 +108,7 @@ class Retreats:
         self.leave_where_started()
         self.motion.retreat(pending.direction, pending.distance)
         self.contacts.withdraw_cleared(self.held)
+        self.just_made = pending
         return None
 
     def own(self, motion: np.ndarray, owed: Owed) -> bool:
