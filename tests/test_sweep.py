@@ -158,3 +158,16 @@ def test_a_killed_sweep_resumes_with_nothing_lost_or_repeated(tmp_path):
         (f"pick_place.apple.{g}", t) for g in ("central", "adaptive") for t in range(2)
     )  # every trial once
     assert f"(+{len(before)} earlier)" in finished.stderr
+
+
+def test_an_unknown_task_of_a_large_suite_says_how_many_there_are_instead_of_listing_them():
+    from roboscript.bench.tasks import get_task
+
+    with pytest.raises(KeyError) as small:
+        get_task("simple_9", "paper")
+    assert "Tasks: simple_0" in str(small.value)  # eight tasks: listed
+    with pytest.raises(KeyError) as large:
+        get_task("swap.gen_999", "generated")
+    message = str(large.value)
+    assert "did you mean swap.gen_" in message and "roboscript tasks --suite generated" in message
+    assert "onto_plate.gen_000" not in message and len(message) < 300

@@ -19,6 +19,7 @@ from roboscript.sim.world_catalog import load_world
 
 DEFAULT_SUITE = "paper"
 FREE_SUITE = "free"
+LISTED_TASKS = 20  # a suite with more tasks than this is not listed whole in an error
 
 
 def _suite_dir() -> Path:
@@ -59,12 +60,17 @@ def load_suite(suite: str = DEFAULT_SUITE) -> dict[str, Task]:
 
 
 def get_task(task_id: str, suite: str = DEFAULT_SUITE) -> Task:
-    """Task ``task_id`` of ``suite``; ``KeyError`` with the closest ids and every id of the suite."""
+    """Task ``task_id`` of ``suite``; ``KeyError`` with the closest ids, and the suite's ids where they are few
+    (else how many there are and how to list them)."""
     tasks = load_suite(suite)
     if task_id not in tasks:
         close = did_you_mean(task_id, tasks, n=2, cutoff=0.6)
         hint = f"; {close}" if close else ""
-        raise KeyError(f"no task {task_id!r} in suite {suite!r}{hint} Tasks: {', '.join(tasks)}")
+        if len(tasks) <= LISTED_TASKS:
+            listing = f"Tasks: {', '.join(tasks)}"
+        else:
+            listing = f"The suite has {len(tasks)} tasks: `roboscript tasks --suite {suite}` lists them"
+        raise KeyError(f"no task {task_id!r} in suite {suite!r}{hint}. {listing}")
     return tasks[task_id]
 
 
