@@ -238,3 +238,20 @@ def test_the_doc_string_gives_the_distances_the_placement_keeps():
     doc = " ".join(inspect.getdoc(ToolAPI.parse_place_pose).split())
     assert f"at least {ASIDE_AWAY * 100:.0f} cm from where it stood" in doc
     assert f"spot within {NEAREST_BOUND * 100:.0f} cm" in doc
+
+
+def test_a_thing_sent_away_from_where_it_was_taken_is_not_brought_back_when_its_position_is_taken():
+    """A toy car sent 20 cm towards the robot, onto a saucer with no room for it: beside the saucer, but not back
+    towards the place it was taken from (where a swap's next object goes)."""
+    region = Receptacle("table", Transform.identity(), np.array([-0.6, -0.6, 0.8]), np.array([0.6, 0.6, 1.2]))
+    origin = np.array([-0.1, 0.0])  # the middle of the reach (0.5 m from the base) lies beyond it
+    target = origin + np.array([-0.2, 0.0])
+    saucer = Footprint(target, 0.0, np.array([0.08, 0.08]))
+    half = np.array([0.04, 0.055])
+    support = Support(region, 0.8, (saucer,))
+    spots = free_spots(ring_candidates(target, NEAREST_BOUND, np.array([-0.45, 0.0])), half, 0.0, 0.045, support)
+    back = ranked(spots, target, half, 0.0, support.obstacles)[0]
+    assert np.linalg.norm(back.center[:2] - origin) < 0.15, "without the origin, the nearest spot is back towards it"
+    first = ranked(spots, target, half, 0.0, support.obstacles, origin)[0]
+    assert np.linalg.norm(first.center[:2] - origin) >= 0.2 - 0.02
+    assert np.linalg.norm(first.center[:2] - target) <= NEAREST_BOUND

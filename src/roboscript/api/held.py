@@ -13,6 +13,8 @@ from __future__ import annotations
 from collections.abc import Iterator, Sequence
 from typing import TYPE_CHECKING, Protocol
 
+import numpy as np
+
 from roboscript.geometry import Transform
 
 if TYPE_CHECKING:
@@ -38,6 +40,7 @@ class Held:
     def __init__(self, followers: Sequence[HoldFollower] = ()):
         self._names: list[str] = []
         self._objects: dict[str, bool] = {}
+        self._taken_from: dict[str, np.ndarray] = {}  # where the hand took each (x, y of the TCP)
         self.followers = list(followers)
 
     @property
@@ -61,12 +64,18 @@ class Held:
     def __bool__(self) -> bool:
         return bool(self._names)
 
+    def taken_from(self, name: str) -> np.ndarray | None:
+        """Where (x, y) the hand took ``name``, while it holds it; None for what it does not hold."""
+        where = self._taken_from.get(name)
+        return None if where is None else where.copy()
+
     def take(self, name: str, is_object: bool, gripper: Transform) -> None:
         """Holds ``name`` and tells the followers; nothing happens if it is held already."""
         if name in self._names:
             return
         self._names.append(name)
         self._objects[name] = is_object
+        self._taken_from[name] = np.array(gripper.position[:2], dtype=float)
         for follower in self.followers:
             follower.taken(name, is_object, gripper)
 
@@ -76,6 +85,7 @@ class Held:
             raise ValueError(f"{name!r} is not attached; attached: {', '.join(self._names) or 'nothing'}")
         self._names.remove(name)
         is_object = self._objects.pop(name)
+        self._taken_from.pop(name, None)
         for follower in reversed(self.followers):
             follower.let_go(name, is_object, gripper)
 

@@ -46,6 +46,10 @@ NEIGHBOUR_WEIGHT = 2.0
 # that room in any turn are charged FINGER_PENALTY metres; those with it keep only the turns that have it.
 FINGER_ROOM = 0.03
 FINGER_PENALTY = 0.04
+# A thing sent away from where it was taken is not brought back: each centimetre a moved spot is nearer that place
+# than the position asked for counts once more (a toy car sent 20 cm towards the robot, onto a saucer, came back 14
+# cm towards its old place, beside the saucer, where a swap's next object was to go).
+ORIGIN_WEIGHT = 1.0
 SQUARE_RATIO = 1.1  # a footprint whose sides differ by less than this (a can, a cube) is taken across either side
 
 
@@ -111,14 +115,20 @@ def distance_moved(spot: PlacementSpot, target: np.ndarray) -> float:
 
 
 def ranked(
-    spots: list[PlacementSpot], target_xy: np.ndarray, half: np.ndarray, yaw: float, obstacles: tuple[Footprint, ...]
+    spots: list[PlacementSpot],
+    target_xy: np.ndarray,
+    half: np.ndarray,
+    yaw: float,
+    obstacles: tuple[Footprint, ...],
+    origin_xy: np.ndarray | None = None,
 ) -> list[PlacementSpot]:
     """The spots round ``target_xy`` reordered: by how far each moves the thing, plus (twice) how much further it
     takes it from the target's neighbours (footprints within :data:`NEIGHBOUR_GAP` of the thing's footprint at the
     target, or overlapping it by at most :data:`NEIGHBOUR_OVERLAP`), plus :data:`FINGER_PENALTY` for a moved spot
-    that leaves no finger room (:func:`finger_room_turns`), in steps of :data:`RING_STEP` so that within a step the
-    ring's order (nearest the middle of the reach first) stands. A moved spot with finger room keeps only the turns
-    that leave it."""
+    that leaves no finger room (:func:`finger_room_turns`), plus how much nearer a moved spot is than the target
+    to ``origin_xy``, where the thing was taken (:data:`ORIGIN_WEIGHT`), in steps of :data:`RING_STEP` so that
+    within a step the ring's order (nearest the middle of the reach first) stands. A moved spot with finger room
+    keeps only the turns that leave it."""
     if not spots:
         return spots
     own_half = np.asarray(half, dtype=float) + MARGIN
@@ -135,6 +145,9 @@ def ranked(
             roomy = finger_room_turns(spot, half, yaw, obstacles)
             spot = replace(spot, turns=roomy) if roomy else spot
             cost += 0.0 if roomy else FINGER_PENALTY
+            if origin_xy is not None:
+                asked = float(np.linalg.norm(target[0] - origin_xy))
+                cost += ORIGIN_WEIGHT * max(asked - float(np.linalg.norm(spot.center[:2] - origin_xy)), 0.0)
         center = spot.center[None, :2]
         for neighbour, gap in neighbours:
             # In the turn that keeps it nearest: a box turned a quarter keeps as near a neighbour with its long side.

@@ -72,24 +72,29 @@ class PlaceRequests:
         self.base_xy = np.asarray(base_xy, dtype=float)
 
     def spots(
-        self, name: str, receptacle_name: str | None, position: np.ndarray | None, tcp: Transform
+        self,
+        name: str,
+        receptacle_name: str | None,
+        position: np.ndarray | None,
+        tcp: Transform,
+        origin: np.ndarray | None = None,
     ) -> PlaceRequest:
-        """Where the held ``name`` (the hand at ``tcp``) could go: free spots in or on ``receptacle_name``
-        (``'table'``: aside on the table; a door: the compartment behind it), or the nearest free ones to
-        ``position`` (on that receptacle where one is named, else on whatever is under it), nearest first; with
-        the words that say where, for errors."""
+        """Where the held ``name`` (the hand at ``tcp``, having taken it at ``origin`` (x, y), where known) could
+        go: free spots in or on ``receptacle_name`` (``'table'``: aside on the table; a door: the compartment
+        behind it), or the nearest free ones to ``position`` (on that receptacle where one is named, else on
+        whatever is under it), nearest first; with the words that say where, for errors."""
         if position is not None:
             target = np.asarray(position, dtype=float)
             on = "" if receptacle_name is None else f" on {receptacle_name!r}"
             where = f"at {np.round(target, 3).tolist()}{on} or within {NEAREST_BOUND * 100:.0f} cm of it"
-            spots = self._spots_near(name, receptacle_name, target)
+            spots = self._spots_near(name, receptacle_name, target, origin)
             return PlaceRequest(spots, where, target, NEAR_SPACING, PLACE_IK_BUDGET_NEAR)
         others = [o for o in self.perception.objects() if o not in (name, receptacle_name)]
         receptacle = self._receptacle(receptacle_name, name)
         if kind_of(receptacle.name) == "door":
             return self._compartment_request(name, receptacle, others, tcp)
         if receptacle_name == TABLE:
-            spots = self._spots_aside(name, receptacle, others)
+            spots = self._spots_aside(name, receptacle, others, origin)
         elif self.perception.receptacle(receptacle.name) is None:
             spots = self._spots_on_top(name, receptacle)
         else:
@@ -125,9 +130,12 @@ class PlaceRequests:
             )
         return PlaceRequest(spots, f"in {receptacle.name!r}", retreat=compartments.open_side(receptacle))
 
-    def _spots_near(self, name: str, receptacle_name: str | None, target: np.ndarray) -> list[PlacementSpot]:
-        """Free spots for the held ``name`` at ``target`` or round it within :data:`NEAREST_BOUND`, nearest
-        first; a PlacementError that says how far the nearest free one is where there is none."""
+    def _spots_near(
+        self, name: str, receptacle_name: str | None, target: np.ndarray, origin: np.ndarray | None = None
+    ) -> list[PlacementSpot]:
+        """Free spots for the held ``name`` at ``target`` or round it within :data:`NEAREST_BOUND`, best first
+        (:func:`ranked`; ``origin``: where it was taken); a PlacementError that says how far the nearest free one
+        is where there is none."""
         _, yaw, half = self.perception.footprint(name)
         height = self.perception.box(name).size[2]
         table = supports.table_top(self.perception)
@@ -146,7 +154,7 @@ class PlaceRequests:
         ring = ring_candidates(target[:2], NEAREST_BOUND, self.base_xy)
         for support in candidates:
             spots = free_spots(ring, half, yaw, height, support)
-            spots = ranked(spots, target[:2], half, yaw, support.obstacles)
+            spots = ranked(spots, target[:2], half, yaw, support.obstacles, origin)
             spots = _open_side(spots, support.region)
             if spots:
                 return spots
@@ -176,10 +184,13 @@ class PlaceRequests:
         square = math.remainder(frame_yaw - yaw, math.pi / 2)
         return [dataclasses.replace(s, yaw=square) for s in spots]
 
-    def _spots_aside(self, name: str, table: Receptacle, others: list[str]) -> list[PlacementSpot]:
+    def _spots_aside(
+        self, name: str, table: Receptacle, others: list[str], origin: np.ndarray | None = None
+    ) -> list[PlacementSpot]:
         """Spots on the table for putting the held object aside: clear of objects, furniture and whatever the
-        cameras see there, near where it was but not on it."""
+        cameras see there, near where it was taken (``origin``; else where it is now) but not on it."""
         box = self.perception.box(name)
+        where = box.center[:2] if origin is None else np.asarray(origin, dtype=float)
         _, yaw, half = self.perception.footprint(name)
         obstacles = [self._footprint(o) for o in others]
         obstacles += [Footprint.of_box(self.perception.box(n)) for n in self.perception.furniture()]
@@ -189,13 +200,13 @@ class PlaceRequests:
         occupied = self.perception.occupied([name])
         for clearance, reach in ((ASIDE_CLEARANCE, ASIDE_MIN_REACH), (0.0, ASIDE_MIN_REACH), (0.0, 0.0)):
             grown = [Footprint(o.center, o.yaw, o.half + clearance) for o in obstacles]
-            spots = spots_in_receptacle(table, half, yaw, box.size[2], grown, self.base_xy, near_xy=box.center[:2])
+            spots = spots_in_receptacle(table, half, yaw, box.size[2], grown, self.base_xy, near_xy=where)
             radius = float(np.linalg.norm(half)) + MARGIN + clearance
             spots = _clear_of(spots, occupied, radius, table.lower[2])
             spots = [
                 s
                 for s in spots
-                if np.linalg.norm(s.center[:2] - box.center[:2]) > ASIDE_AWAY
+                if np.linalg.norm(s.center[:2] - where) > ASIDE_AWAY
                 and np.linalg.norm(s.center[:2] - self.base_xy) >= reach
             ]
             if spots:

@@ -8,7 +8,7 @@ from __future__ import annotations
 
 import dataclasses
 import math
-from collections.abc import Collection
+from collections.abc import Callable, Collection
 
 import numpy as np
 
@@ -77,10 +77,18 @@ class _Search:
 class Placer:
     """Placement search for the arm whose base stands at ``base_xy``."""
 
-    def __init__(self, perception: Perception, motion: MotionPlanner, base_xy: np.ndarray):
+    def __init__(
+        self,
+        perception: Perception,
+        motion: MotionPlanner,
+        base_xy: np.ndarray,
+        taken_from: Callable[[str], np.ndarray | None] = lambda name: None,
+    ):
+        """``taken_from``: where (x, y) the hand took a held object (:meth:`Held.taken_from`)."""
         self.perception = perception
         self.motion = motion
         self.base_xy = np.asarray(base_xy, dtype=float)
+        self.taken_from = taken_from
         self.requests = PlaceRequests(perception, self.base_xy)
 
     def reachable(self, name: str, tcp: Transform, request: PlaceRequest) -> tuple[Transform, PlacementSpot]:
@@ -131,7 +139,7 @@ class Placer:
         """The gripper pose, from the hand at ``tcp``, that sets the held ``name`` down in or on ``receptacle``, at
         ``target`` or both (:meth:`PlaceRequests.spots`, :meth:`reachable`); a notice says where a position was
         moved to."""
-        request = self.requests.spots(name, receptacle, target, tcp)
+        request = self.requests.spots(name, receptacle, target, tcp, self.taken_from(name))
         pose, spot = self.reachable(name, tcp, request)
         if request.target is not None and distance_moved(spot, request.target) > MOVED:
             notice(

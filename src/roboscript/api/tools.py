@@ -54,7 +54,7 @@ class ToolAPI:
         self.contacts = ContactAllowances(motion, lambda name: grasp_family(perception, name))
         self.held = Held([PlanningFollower(motion, self.contacts), PerceptionFollower(perception)])
         self.touching = Touching(perception, self.contacts, self.held)
-        self.placer = Placer(perception, motion, self.base_xy)
+        self.placer = Placer(perception, motion, self.base_xy, self.held.taken_from)
         self.grasps = GraspChooser(
             perception, motion, self.contacts, self.gripper, self.base_xy, lambda: self.held, DROP, seed
         )
