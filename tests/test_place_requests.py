@@ -255,3 +255,15 @@ def test_a_thing_sent_away_from_where_it_was_taken_is_not_brought_back_when_its_
     first = ranked(spots, target, half, 0.0, support.obstacles, origin)[0]
     assert np.linalg.norm(first.center[:2] - origin) >= 0.2 - 0.02
     assert np.linalg.norm(first.center[:2] - target) <= NEAREST_BOUND
+
+
+def test_a_thing_carried_far_from_where_it_was_taken_is_placed_as_if_the_place_were_unknown():
+    """Only coming back near the old place counts: spots in a drawer 70 cm from where a box was taken keep their
+    order (the front of the drawer, nearer that place, is where things go)."""
+    region = Receptacle("table", Transform.identity(), np.array([-0.6, -0.6, 0.8]), np.array([0.6, 0.6, 1.2]))
+    target, half = np.array([0.0, 0.0]), np.array([0.04, 0.04])
+    support = Support(region, 0.8, (Footprint(target, 0.0, np.array([0.05, 0.05])),))
+    spots = free_spots(ring_candidates(target, NEAREST_BOUND, np.array([-0.45, 0.0])), half, 0.0, 0.05, support)
+    alone = ranked(spots, target, half, 0.0, support.obstacles)
+    far = ranked(spots, target, half, 0.0, support.obstacles, np.array([0.0, -0.7]))
+    assert [tuple(s.center) for s in far] == [tuple(s.center) for s in alone]

@@ -50,6 +50,7 @@ FINGER_PENALTY = 0.04
 # than the position asked for counts once more (a toy car sent 20 cm towards the robot, onto a saucer, came back 14
 # cm towards its old place, beside the saucer, where a swap's next object was to go).
 ORIGIN_WEIGHT = 1.0
+ORIGIN_RADIUS = 0.2  # metres round that place within which a moved spot counts as brought back
 SQUARE_RATIO = 1.1  # a footprint whose sides differ by less than this (a can, a cube) is taken across either side
 
 
@@ -146,7 +147,8 @@ def ranked(
             spot = replace(spot, turns=roomy) if roomy else spot
             cost += 0.0 if roomy else FINGER_PENALTY
             if origin_xy is not None:
-                asked = float(np.linalg.norm(target[0] - origin_xy))
+                # Only coming back near the old place counts: not the front of a drawer the thing was carried to.
+                asked = min(float(np.linalg.norm(target[0] - origin_xy)), ORIGIN_RADIUS)
                 cost += ORIGIN_WEIGHT * max(asked - float(np.linalg.norm(spot.center[:2] - origin_xy)), 0.0)
         center = spot.center[None, :2]
         for neighbour, gap in neighbours:
