@@ -372,19 +372,25 @@ def test_straight_approach_ends_on_the_targets_branch_along_a_line(robot):
         assert np.linalg.norm(offset[:2]) < 1e-3, "every waypoint lies on the vertical line"
 
 
+def _hand_lowered_onto_a_box() -> tuple[MotionPlanner, list[np.ndarray]]:
+    """A Panda over a box and its configurations lowering the open hand from 10 cm above the box's middle to 2 cm
+    into it, in 2 mm steps (IK alone: the scene would refuse those that touch)."""
+    world = objects_world({"name": "box", "type": "blue_box", "position": [0.0, 0.0]})
+    backend, motion = planner_for(world, "panda")
+    center = backend.ground_truth.box("box").center
+    motion.scene.update(backend.sim_world.data.qpos)
+    above = motion.ik(Transform(center + np.array([0.0, 0.0, 0.1]), DOWN))
+    heights = np.arange(0.1, -0.02, -0.002)
+    solve = motion.kinematics.solve
+    return motion, [solve(Transform(center + np.array([0.0, 0.0, h]), DOWN), above).q for h in heights]
+
+
 def test_a_contact_may_be_left_or_brushed_but_not_pushed_into():
     """Fingers round a box they just let go of: the motion may start there and leave, but a configuration that
     sinks the hand deeper into the box stays a collision; forbidding the pair again ends the allowance."""
-    world = objects_world({"name": "box", "type": "blue_box", "position": [0.0, 0.0]})
-    backend, motion = planner_for(world, "panda")
+    motion, configurations = _hand_lowered_onto_a_box()
     scene = motion.scene
-    center = backend.ground_truth.box("box").center
-    scene.update(backend.sim_world.data.qpos)
-    # Lower the open hand over the box until the scene first reports it (within the padding), then 1 cm more.
-    above = motion.ik(Transform(center + np.array([0.0, 0.0, 0.1]), DOWN))
-    heights = np.arange(0.1, -0.02, -0.002)
-    solve = motion.kinematics.solve  # IK alone: the scene would refuse the configurations that touch
-    configurations = [solve(Transform(center + np.array([0.0, 0.0, h]), DOWN), above).q for h in heights]
+    # The first configuration the scene reports (within the padding), and one 1 cm lower.
     first = next(k for k, q in enumerate(configurations) if not scene.is_valid(q))
     touching, deeper, clear = configurations[first], configurations[first + 5], configurations[0]
     assert any(b == "box" for _, b in scene.collisions(touching))
@@ -398,15 +404,9 @@ def test_a_contact_may_be_left_or_brushed_but_not_pushed_into():
 def test_a_path_screen_from_within_a_contact_may_leave_it_as_the_motion_will():
     """A hand that ended within the padding of a box (a held object slipped in the fingers near a link, say):
     ``connects`` screens the way out as the motion itself will be allowed to make it, and allows nothing after."""
-    world = objects_world({"name": "box", "type": "blue_box", "position": [0.0, 0.0]})
-    backend, motion = planner_for(world, "panda")
+    motion, configurations = _hand_lowered_onto_a_box()
     scene = motion.scene
-    center = backend.ground_truth.box("box").center
-    scene.update(backend.sim_world.data.qpos)
-    clear = motion.ik(Transform(center + np.array([0.0, 0.0, 0.1]), DOWN))
-    solve = motion.kinematics.solve
-    heights = np.arange(0.1, -0.02, -0.002)
-    configurations = [solve(Transform(center + np.array([0.0, 0.0, h]), DOWN), clear).q for h in heights]
+    clear = configurations[0]
     touching = next(q for q in configurations if not scene.is_valid(q))
     with pytest.raises(StateInCollisionError):
         motion.planner.plan(touching, clear, motion.default_planner, 2.0)

@@ -138,6 +138,8 @@ def ranked(
     neighbours = [
         (o, max(a, 0.0)) for o, a in zip(obstacles, asked, strict=True) if -NEIGHBOUR_OVERLAP <= a <= NEIGHBOUR_GAP
     ]
+    # Only coming back near the old place counts: not the front of a drawer the thing was carried to.
+    sent = None if origin_xy is None else min(float(np.linalg.norm(target[0] - origin_xy)), ORIGIN_RADIUS)
     ranked_spots, costs = [], []
     for spot in spots:
         moved = float(np.linalg.norm(spot.center[:2] - target[0]))
@@ -146,10 +148,8 @@ def ranked(
             roomy = finger_room_turns(spot, half, yaw, obstacles)
             spot = replace(spot, turns=roomy) if roomy else spot
             cost += 0.0 if roomy else FINGER_PENALTY
-            if origin_xy is not None:
-                # Only coming back near the old place counts: not the front of a drawer the thing was carried to.
-                asked = min(float(np.linalg.norm(target[0] - origin_xy)), ORIGIN_RADIUS)
-                cost += ORIGIN_WEIGHT * max(asked - float(np.linalg.norm(spot.center[:2] - origin_xy)), 0.0)
+            if sent is not None:
+                cost += ORIGIN_WEIGHT * max(sent - float(np.linalg.norm(spot.center[:2] - origin_xy)), 0.0)
         center = spot.center[None, :2]
         for neighbour, gap in neighbours:
             # In the turn that keeps it nearest: a box turned a quarter keeps as near a neighbour with its long side.

@@ -460,13 +460,10 @@ class PlanningScene:
         thing. :meth:`allow` with False ends it."""
         first, second = self._bodies_named(a), self._bodies_named(b)
         floors = {(i, j): 0.0 for i in first for j in second}
-        self._place(np.asarray(q, dtype=float))
-        mujoco.mj_collision(self.model, self.data)
-        distances = self.data.contact.dist
-        for k, (x, y) in enumerate(self._contact_bodies()):
+        for (x, y), floor in self._contact_floors(q).items():
             pair = (x, y) if (x, y) in floors else (y, x)
             if pair in floors:
-                floors[pair] = min(floors[pair], float(distances[k]))
+                floors[pair] = min(floors[pair], floor)
         # Measured anew each time: a contact left shallower than it was may not be pushed back in.
         for (i, j), floor in floors.items():
             self._leaving[(i, j)] = self._leaving[(j, i)] = floor
@@ -478,17 +475,24 @@ class PlanningScene:
         same before it is made (a pear that slipped 3 mm in the hand, lifted beside a UR5e's base, came within the
         padding of its upper arm, and every place pose's path screen failed at its start)."""
         saved = dict(self._leaving)
-        self._place(np.asarray(q, dtype=float))
-        mujoco.mj_collision(self.model, self.data)
-        distances = self.data.contact.dist
-        for k, (a, b) in enumerate(self._contact_bodies()):
+        for (a, b), floor in self._contact_floors(q).items():
             if not self._allowed[a, b] and (a, b) not in saved:
-                floor = min(self._leaving.get((a, b), 0.0), float(distances[k]))
+                floor = min(self._leaving.get((a, b), 0.0), floor)  # the pair may come in both orders
                 self._leaving[(a, b)] = self._leaving[(b, a)] = floor
         try:
             yield
         finally:
             self._leaving = saved
+
+    def _contact_floors(self, q: np.ndarray) -> dict[tuple[int, int], float]:
+        """Each pair of bodies in contact with the arm at ``q`` (as MuJoCo orders it), with the least distance
+        between them and no more than 0: how deep a contact being left may stay (:meth:`allow_leaving`)."""
+        self._place(np.asarray(q, dtype=float))
+        mujoco.mj_collision(self.model, self.data)
+        floors: dict[tuple[int, int], float] = {}
+        for k, pair in enumerate(self._contact_bodies()):
+            floors[pair] = min(floors.get(pair, 0.0), float(self.data.contact.dist[k]))
+        return floors
 
     def leaving_names(self) -> set[tuple[str, str]]:
         """The pairs allowed to be left (:meth:`allow_leaving`) as names, to carry them into a rebuilt scene."""
