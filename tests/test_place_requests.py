@@ -7,8 +7,10 @@ import numpy as np
 import pytest
 
 from roboscript.api.nearby import (
+    NEAR_BASE,
     NEAREST_BOUND,
     Support,
+    clear_of_base,
     finger_room_turns,
     free_spots,
     ranked,
@@ -238,6 +240,7 @@ def test_the_doc_string_gives_the_distances_the_placement_keeps():
     doc = " ".join(inspect.getdoc(ToolAPI.parse_place_pose).split())
     assert f"at least {ASIDE_AWAY * 100:.0f} cm from where it stood" in doc
     assert f"spot within {NEAREST_BOUND * 100:.0f} cm" in doc
+    assert f"within {NEAR_BASE * 100:.0f} cm of the robot's base" in doc
 
 
 def test_a_thing_sent_away_from_where_it_was_taken_is_not_brought_back_when_its_position_is_taken():
@@ -267,3 +270,23 @@ def test_a_thing_carried_far_from_where_it_was_taken_is_placed_as_if_the_place_w
     alone = ranked(spots, target, half, 0.0, support.obstacles)
     far = ranked(spots, target, half, 0.0, support.obstacles, np.array([0.0, -0.7]))
     assert [tuple(s.center) for s in far] == [tuple(s.center) for s in alone]
+
+
+def test_a_position_beside_the_base_moves_out_to_where_the_arm_can_take_the_thing_again():
+    """A pear sent 20 cm towards the robot, 12 cm from the base's axis: put down there, the Panda could lift it
+    again only 3 cm, its wrist at a joint limit. It goes to the nearest free spot at least NEAR_BASE out, within
+    the bound; a position further out keeps the order of its spots."""
+    base = np.array([-0.45, 0.0])
+    region = Receptacle("table", Transform.identity(), np.array([-0.6, -0.6, 0.8]), np.array([0.6, 0.6, 1.2]))
+    support, half = Support(region, 0.8, ()), np.array([0.035, 0.035])
+    target = base + np.array([0.12, -0.03])
+    spots = free_spots(ring_candidates(target, NEAREST_BOUND, base), half, 0.0, 0.1, support)
+    near = ranked(spots, target, half, 0.0, support.obstacles)
+    assert np.allclose(near[0].center[:2], target), "the position itself is free"
+    first = clear_of_base(near, base)[0]
+    assert np.linalg.norm(first.center[:2] - base) >= NEAR_BASE
+    assert np.linalg.norm(first.center[:2] - target) <= NEAR_BASE - 0.12 + 0.03, "not sent further than needed"
+    assert sorted(tuple(s.center) for s in clear_of_base(near, base)) == sorted(tuple(s.center) for s in near)
+    out = base + np.array([0.35, 0.0])
+    spots = ranked(free_spots(ring_candidates(out, 0.1, base), half, 0.0, 0.1, support), out, half, 0.0, ())
+    assert clear_of_base(spots, base) == spots

@@ -17,6 +17,7 @@ from roboscript.api import compartments, supports
 from roboscript.api.nearby import (
     NEAREST_BOUND,
     REPORT_BOUND,
+    clear_of_base,
     distance_moved,
     free_spots,
     ranked,
@@ -154,7 +155,7 @@ class PlaceRequests:
         ring = ring_candidates(target[:2], NEAREST_BOUND, self.base_xy)
         for support in candidates:
             spots = free_spots(ring, half, yaw, height, support)
-            spots = ranked(spots, target[:2], half, yaw, support.obstacles, origin)
+            spots = clear_of_base(ranked(spots, target[:2], half, yaw, support.obstacles, origin), self.base_xy)
             spots = _open_side(spots, support.region)
             if spots:
                 return spots

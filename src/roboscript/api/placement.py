@@ -12,7 +12,7 @@ from collections.abc import Callable, Collection
 
 import numpy as np
 
-from roboscript.api.nearby import MOVED, distance_moved
+from roboscript.api.nearby import MOVED, NEAR_BASE, distance_moved
 from roboscript.api.place_requests import (
     PLACE_IK_BUDGET,
     REPEAT_SPACING,
@@ -142,10 +142,13 @@ class Placer:
         request = self.requests.spots(name, receptacle, target, tcp, self.taken_from(name))
         pose, spot = self.reachable(name, tcp, request)
         if request.target is not None and distance_moved(spot, request.target) > MOVED:
+            near_base = float(np.linalg.norm(request.target[:2] - self.base_xy)) < NEAR_BASE
+            why = "taken, out of reach or off its support"
+            why = f"within {NEAR_BASE * 100:.0f} cm of the robot's base" if near_base else why
+            moved = distance_moved(spot, request.target) * 100
             notice(
-                f"parse_place_pose: {np.round(request.target[:2], 3).tolist()} is taken, out of reach or off its "
-                f"support; putting {name!r} {distance_moved(spot, request.target) * 100:.1f} cm away, at "
-                f"{np.round(spot.center[:2], 3).tolist()}"
+                f"parse_place_pose: {np.round(request.target[:2], 3).tolist()} is {why}; putting {name!r} "
+                f"{moved:.1f} cm away, at {np.round(spot.center[:2], 3).tolist()}"
             )
         return pose
 

@@ -253,8 +253,9 @@ class ToolAPI:
         - ``position`` ``[x, y, z]``: the object's middle goes above (x, y), resting on whatever is there (the table, or
           an object's top, a bowl or open drawer beneath); z may be anything. With ``receptacle_name`` too: at
           that position, in or on it.
-        - Where that spot is taken, out of reach or off its support, the object goes to the nearest free, reachable
-          spot within 15 cm (a ``[notice]`` line says where); farther away, PlacementError says how far it was."""
+        - Where that spot is taken, out of reach, off its support or within 20 cm of the robot's base (the arm could
+          not take it up again), the object goes to the nearest free, reachable spot within 15 cm (a ``[notice]``
+          line says where; one nearer the base where there is none); farther away, PlacementError says how far."""
         name = self._name(object_name)
         if receptacle_name is None and position is None:
             raise ArgumentError(
