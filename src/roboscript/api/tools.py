@@ -93,8 +93,8 @@ class ToolAPI:
 
     @tool
     def get_object_center_position(self, object_name: str) -> np.ndarray:
-        """Centre of the object's world-aligned 3D box as ``np.array([x, y, z])``, metres, in the robot's
-        frame (x forward, y left, z up)."""
+        """Centre of the object's world-aligned 3D box as ``np.array([x, y, z])``, metres, in the world's frame,
+        whose axes are the robot's (x forward, y left, z up) but whose origin is not the robot's base."""
         return self.perception.box(self._name(object_name)).center
 
     @tool

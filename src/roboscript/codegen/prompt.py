@@ -26,7 +26,8 @@ Rules:
   its parts when you mean the things on the table.
 - Plates, saucers, bowls and baskets stay where they are: things go in or on them, and the gripper cannot pick
   them up.
-- Positions are in metres in the robot's frame: x forward, y left, z up.
+- Positions are in metres in the world's frame, whose axes are the robot's: x forward (away from the robot), y
+  left, z up. Its origin is not the robot's base: take distances from the things the tools report.
 - To pick something: open_gripper(), grasp(a grasp pose), close_gripper(), attach_object(name), then lift it.
 - To put something down: move_to_pose(a place pose), open_gripper(), detach_object(name), then move up.
 - Drawers and doors: grasp the handle, close the gripper, attach the drawer or door, then move along its joint.
