@@ -71,6 +71,17 @@ def test_the_prompt_is_built_from_the_tool_api_itself():
         assert inspect.getdoc(method).splitlines()[0] in prompt
 
 
+def test_the_prompt_says_where_the_robots_base_stands_where_that_is_known():
+    # Two authors of a batch read "the robot's frame" as the base at the origin, and kept only spots 30 to 75 cm
+    # from it; the world's origin is the middle of the table. The rules say the origin is not the base, and where
+    # the base is when the backend is known.
+    plain = " ".join(system_prompt().split())
+    assert "in the world's frame" in plain and "Its origin is not the robot's base." in plain
+    assert "robot's frame" not in plain
+    told = " ".join(system_prompt((-0.45, 0.0)).split())
+    assert "Its origin is not the robot's base, which stands at x = -0.45, y = 0.00." in told
+
+
 def test_the_examples_are_ten_or_more_and_pass_the_checker():
     examples = load_examples()
     assert len(examples) >= 10
@@ -129,6 +140,8 @@ def test_an_undefined_helper_is_generated_and_the_task_done_through_a_real_serve
     assert len(server.requests) == 3
     query = server.requests[0]["messages"][-1]["content"]
     assert query == get_task("simple_0").query  # the paper's query, verbatim
+    rules = " ".join(server.requests[0]["messages"][0]["content"].split())
+    assert "the robot's base, which stands at x = -0.45, y = 0.00." in rules  # the trial's backend told it
     assert "pick_and_place" in server.requests[1]["messages"][-1]["content"]
 
 

@@ -8,7 +8,7 @@ from __future__ import annotations
 
 import os
 import time
-from collections.abc import Callable
+from collections.abc import Callable, Sequence
 from dataclasses import asdict, dataclass, field, replace
 from pathlib import Path
 
@@ -142,7 +142,7 @@ def run_trial(spec: TrialSpec, announce: Callable[[float | None], None] | None =
     while True:
         with _trial_world(spec, task) as world:
             if spec.llm is not None and author is None:
-                author = _Author(spec.llm, task.query_for(spec.instruction))
+                author = _Author(spec.llm, task.query_for(spec.instruction), world.backend.base_pose().position[:2])
             program = spec.program if author is None else author.program
             if program is None:  # the LLM could not be asked
                 result = author.failure
@@ -297,13 +297,13 @@ def _partial(video: str) -> str:
 class _Author:
     """The LLM side of a trial: writes the program for the query, and repairs it from an attempt's error."""
 
-    def __init__(self, llm_spec: str, query: str):
+    def __init__(self, llm_spec: str, query: str, base_xy: Sequence[float]):
         from roboscript.codegen.agent import CodeAgent
         from roboscript.llm import LLMError, make_llm
 
         self.query, self.generation, self.failure, self.repair_error = query, None, None, None
         try:
-            self.agent = CodeAgent(make_llm(llm_spec))
+            self.agent = CodeAgent(make_llm(llm_spec), base_xy=base_xy)
             with phase("llm"):
                 self.generation = self.agent.write_program(query)
         except LLMError as exc:

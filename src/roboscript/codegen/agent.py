@@ -5,6 +5,7 @@ from __future__ import annotations
 
 import ast
 import contextlib
+from collections.abc import Sequence
 from dataclasses import dataclass, field
 
 from roboscript.codegen.checker import undefined_calls
@@ -25,13 +26,22 @@ class Generation:
 
 
 class CodeAgent:
-    """Writes programs with ``llm``. ``max_depth``: how many levels of helpers the sub-agent may generate."""
+    """Writes programs with ``llm``. ``max_depth``: how many levels of helpers the sub-agent may generate;
+    ``base_xy``: where the robot's base stands, told in the rules where known (:func:`system_prompt`)."""
 
-    def __init__(self, llm: LLM, examples: list[Example] | None = None, max_depth: int = 3, max_tokens: int = 2048):
+    def __init__(
+        self,
+        llm: LLM,
+        examples: list[Example] | None = None,
+        max_depth: int = 3,
+        max_tokens: int = 2048,
+        base_xy: Sequence[float] | None = None,
+    ):
         self.llm, self.examples, self.max_depth, self.max_tokens = llm, examples, max_depth, max_tokens
+        self.base_xy = None if base_xy is None else (float(base_xy[0]), float(base_xy[1]))
 
     def write_program(self, query: str) -> Generation:
-        messages = program_messages(query, self.examples)
+        messages = program_messages(query, self.examples, self.base_xy)
         text = self._ask(messages)
         generation = Generation(extract_code(text), [{"purpose": "program", "messages": messages, "response": text}])
         self.define_missing(generation)
@@ -40,7 +50,7 @@ class CodeAgent:
     def repair(self, query: str, generation: Generation, errors: list[str]) -> None:
         """One repair round: the program and what went wrong with it go back to the LLM; its answer (with any
         helpers it calls) replaces the program."""
-        messages = repair_messages(query, generation.program, errors, self.examples)
+        messages = repair_messages(query, generation.program, errors, self.examples, self.base_xy)
         text = self._ask(messages)
         generation.exchanges.append({"purpose": "repair", "messages": messages, "response": text})
         generation.program = extract_code(text)

@@ -7,6 +7,7 @@ program, planning comments first.
 from __future__ import annotations
 
 import inspect
+from collections.abc import Sequence
 from dataclasses import dataclass
 from importlib import resources
 
@@ -27,7 +28,7 @@ Rules:
 - Plates, saucers, bowls and baskets stay where they are: things go in or on them, and the gripper cannot pick
   them up.
 - Positions are in metres in the world's frame, whose axes are the robot's: x forward (away from the robot), y
-  left, z up. Its origin is not the robot's base: take distances from the things the tools report.
+  left, z up. Its origin is not the robot's base{base}.
 - To pick something: open_gripper(), grasp(a grasp pose), close_gripper(), attach_object(name), then lift it.
 - To put something down: move_to_pose(a place pose), open_gripper(), detach_object(name), then move up.
 - Drawers and doors: grasp the handle, close the gripper, attach the drawer or door, then move along its joint.
@@ -54,8 +55,11 @@ def tool_reference() -> str:
     return "\n\n".join(blocks) + "\n\n# " + pose + "\n# " + errors
 
 
-def system_prompt() -> str:
-    return f"{RULES}\n\nTools:\n\n```python\n{tool_reference()}\n```"
+def system_prompt(base_xy: Sequence[float] | None = None) -> str:
+    """The rules and the tools. ``base_xy``: where the robot's base stands (x, y), said in the rules where known:
+    a program that chooses spots by the arm's reach needs it, and the world's origin is elsewhere."""
+    where = "" if base_xy is None else f", which stands at x = {base_xy[0]:.2f}, y = {base_xy[1]:.2f}"
+    return f"{RULES.replace('{base}', where)}\n\nTools:\n\n```python\n{tool_reference()}\n```"
 
 
 @dataclass(frozen=True)
@@ -90,10 +94,12 @@ def fenced(program: str) -> str:
     return f"```python\n{program.rstrip()}\n```"
 
 
-def program_messages(query: str, examples: list[Example] | None = None) -> list[dict]:
-    """System prompt, the examples as earlier turns, then the query."""
+def program_messages(
+    query: str, examples: list[Example] | None = None, base_xy: Sequence[float] | None = None
+) -> list[dict]:
+    """System prompt (:func:`system_prompt`), the examples as earlier turns, then the query."""
     examples = load_examples() if examples is None else examples
-    messages = [{"role": "system", "content": system_prompt()}]
+    messages = [{"role": "system", "content": system_prompt(base_xy)}]
     for example in examples:
         messages.append({"role": "user", "content": example.query})
         messages.append({"role": "assistant", "content": fenced(example.program)})
@@ -113,9 +119,15 @@ def function_messages(name: str, call: str, program: str) -> list[dict]:
     ]
 
 
-def repair_messages(query: str, program: str, errors: list[str], examples: list[Example] | None = None) -> list[dict]:
+def repair_messages(
+    query: str,
+    program: str,
+    errors: list[str],
+    examples: list[Example] | None = None,
+    base_xy: Sequence[float] | None = None,
+) -> list[dict]:
     """The original conversation, the program as the model's answer, then the errors and a request to fix them."""
-    messages = program_messages(query, examples)
+    messages = program_messages(query, examples, base_xy)
     messages.append({"role": "assistant", "content": fenced(program)})
     listed = "\n".join(f"- {e}" for e in errors)
     messages.append(
