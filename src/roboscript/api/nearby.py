@@ -166,11 +166,14 @@ def ranked(
     return [ranked_spots[k] for k in np.argsort(steps, kind="stable")]
 
 
+def near_base(xy: np.ndarray, base_xy: np.ndarray) -> bool:
+    """Whether ``xy`` lies within :data:`NEAR_BASE` of the base's axis at ``base_xy``."""
+    return float(np.linalg.norm(np.asarray(xy, dtype=float)[:2] - np.asarray(base_xy, dtype=float))) < NEAR_BASE
+
+
 def clear_of_base(spots: list[PlacementSpot], base_xy: np.ndarray) -> list[PlacementSpot]:
-    """``spots`` in order, those within :data:`NEAR_BASE` of the base's axis at ``base_xy`` moved after the rest."""
-    base = np.asarray(base_xy, dtype=float)
-    away = [s for s in spots if float(np.linalg.norm(s.center[:2] - base)) >= NEAR_BASE]
-    return away + [s for s in spots if float(np.linalg.norm(s.center[:2] - base)) < NEAR_BASE]
+    """``spots`` in order, those :func:`near_base` moved after the rest."""
+    return sorted(spots, key=lambda spot: near_base(spot.center, base_xy))  # stable: the order stands within each
 
 
 def finger_room_turns(

@@ -12,7 +12,7 @@ from collections.abc import Callable, Collection
 
 import numpy as np
 
-from roboscript.api.nearby import MOVED, NEAR_BASE, distance_moved
+from roboscript.api.nearby import MOVED, NEAR_BASE, distance_moved, near_base
 from roboscript.api.place_requests import (
     PLACE_IK_BUDGET,
     REPEAT_SPACING,
@@ -142,9 +142,11 @@ class Placer:
         request = self.requests.spots(name, receptacle, target, tcp, self.taken_from(name))
         pose, spot = self.reachable(name, tcp, request)
         if request.target is not None and distance_moved(spot, request.target) > MOVED:
-            near_base = float(np.linalg.norm(request.target[:2] - self.base_xy)) < NEAR_BASE
-            why = "taken, out of reach or off its support"
-            why = f"within {NEAR_BASE * 100:.0f} cm of the robot's base" if near_base else why
+            why = (
+                f"within {NEAR_BASE * 100:.0f} cm of the robot's base"
+                if near_base(request.target, self.base_xy)
+                else "taken, out of reach or off its support"
+            )
             moved = distance_moved(spot, request.target) * 100
             notice(
                 f"parse_place_pose: {np.round(request.target[:2], 3).tolist()} is {why}; putting {name!r} "
