@@ -86,6 +86,54 @@ def test_a_taken_position_beside_a_neighbour_moves_along_it_not_away_from_it():
     assert sorted(tuple(s.center) for s in kept) == sorted(tuple(s.center) for s in spots)  # reordered, none lost
 
 
+def test_a_neighbour_seven_centimetres_off_is_kept_as_near_when_the_position_is_taken():
+    """ "Next to the mug", 7 cm clear of it, where a strawberry stands: 7 cm is beside it to a reader, so the thing
+    goes beside the strawberry, not beyond it."""
+    region = Receptacle("table", Transform.identity(), np.array([-0.5, -0.5, 0.8]), np.array([0.5, 0.5, 1.2]))
+    mug = Footprint(np.array([0.0, 0.0]), 0.0, np.array([0.045, 0.045]))
+    target, half = np.array([0.0, 0.045 + 0.07 + 0.045]), np.array([0.045, 0.045])
+    strawberry = Footprint(target, 0.0, np.array([0.02, 0.02]))
+    support = Support(region, 0.8, (mug, strawberry))
+    spots = free_spots(ring_candidates(target, NEAREST_BOUND, np.array([-0.45, 0.0])), half, 0.0, 0.08, support)
+    first = ranked(spots, target, half, 0.0, support.obstacles)[0].center[:2]
+    assert abs(first[0]) >= 0.02 + 0.045  # clear of the strawberry, beside it
+    assert first[1] - 0.09 <= 0.07 + 0.02  # as near the mug as asked, within a ring
+
+
+def test_a_round_neighbours_outline_not_its_rectangle_decides_whether_a_position_is_free():
+    """A can 1.5 cm from a bowl, diagonally: their rectangles overlap at the corners, the things do not."""
+    region = Receptacle("table", Transform.identity(), np.array([-0.5, -0.5, 0.8]), np.array([0.5, 0.5, 1.2]))
+    angles = np.arange(32) * 2 * np.pi / 32
+    circle = np.column_stack([np.cos(angles), np.sin(angles)])
+    bowl = Footprint(np.zeros(2), 0.0, np.array([0.04, 0.04]), 0.04 * circle)
+    half, can = np.array([0.03, 0.03]), 0.03 * circle
+    target = np.array([1.0, 1.0]) * (0.04 + 0.015 + 0.03) / np.sqrt(2)
+    support = Support(region, 0.8, (bowl,))
+    candidates = ring_candidates(target, NEAREST_BOUND, np.array([-0.45, 0.0]))
+    by_rectangles = free_spots(candidates, half, 0.0, 0.1, support)
+    assert np.linalg.norm(by_rectangles[0].center[:2] - target) > 0.01, "the rectangles overlap"
+    by_outlines = free_spots(candidates, half, 0.0, 0.1, support, can)
+    assert np.allclose(by_outlines[0].center[:2], target), "the can itself stands clear"
+    # Nearer than the margin, the outlines do not stand clear either.
+    touching = np.array([1.0, 1.0]) * (0.04 + 0.003 + 0.03) / np.sqrt(2)
+    assert free_spots(touching[None], half, 0.0, 0.1, support, can) == []
+
+
+def test_a_mugs_outline_is_its_body_and_handle_within_its_footprint():
+    world = _world([{"name": "red_mug", "type": "red_mug", "position": [0.1, 0.0], "yaw": 35}])
+    with MujocoBackend(world, robot="panda", settle=0.2) as backend:
+        perception = build_tools(backend).perception
+        center, yaw, half = perception.footprint("red_mug")
+        outline = perception.outline("red_mug")
+    axes = np.array([[np.cos(yaw), np.sin(yaw)], [-np.sin(yaw), np.cos(yaw)]])
+    local = (outline - center) @ axes.T
+    assert np.all(np.abs(local) <= half + 1e-6), "within the footprint"
+    area = 0.5 * abs(
+        np.dot(outline[:, 0], np.roll(outline[:, 1], -1)) - np.dot(outline[:, 1], np.roll(outline[:, 0], -1))
+    )
+    assert area < 0.9 * 4 * half[0] * half[1], "the corners of its rectangle are not the mug's"
+
+
 def test_a_position_moved_off_what_stood_there_leaves_the_fingers_room_to_take_the_thing_again():
     """A gelatin box asked to go where a medication bottle stands (overlapping it by 2 cm, so taken for a
     neighbour): it moves along the bottle, but not snug against it across its narrow side, where the fingers close

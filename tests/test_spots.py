@@ -5,9 +5,18 @@ import math
 import numpy as np
 
 from roboscript.api.place_requests import _clear_of
-from roboscript.api.spots import Footprint, PlacementSpot, gap, gaps, spots_in_receptacle
+from roboscript.api.spots import (
+    MARGIN,
+    Footprint,
+    PlacementSpot,
+    gap,
+    gaps,
+    outline_distances,
+    spots_in_receptacle,
+)
 from roboscript.geometry import Transform, quat_from_yaw
 from roboscript.perception.base import Receptacle
+from roboscript.perception.footprints import outline_of, rectangle_outline
 
 
 def _gap_by_definition(a: Footprint, b: Footprint) -> float:
@@ -32,6 +41,66 @@ def test_gaps_of_many_footprints_are_each_ones_gap():
     assert gap(overlapping, Footprint(np.array([0.01, 0.0]), 1.0, np.array([0.03, 0.03]))) < 0
 
 
+def _boundary(outline: np.ndarray, per_edge: int) -> np.ndarray:
+    """Points densely along a closed outline's edges."""
+    t = np.linspace(0.0, 1.0, per_edge, endpoint=False)[:, None]
+    ends = np.roll(outline, -1, axis=0)
+    return np.vstack([a + t * (b - a) for a, b in zip(outline, ends, strict=True)])
+
+
+def _inside(point: np.ndarray, outline: np.ndarray) -> bool:
+    """Whether ``point`` lies within the convex, counter-clockwise ``outline``."""
+    edges, offsets = np.roll(outline, -1, axis=0) - outline, point - outline
+    return bool(np.all(edges[:, 0] * offsets[:, 1] - edges[:, 1] * offsets[:, 0] >= 0))
+
+
+def _circle(center, radius: float, count: int = 24) -> np.ndarray:
+    angles = np.arange(count) * 2 * math.pi / count
+    return np.asarray(center) + radius * np.column_stack([np.cos(angles), np.sin(angles)])
+
+
+def test_outline_distances_are_as_the_crow_flies_between_outlines_apart_and_negative_where_they_overlap():
+    rng = np.random.default_rng(5)
+    for _ in range(12):
+        own = rectangle_outline(np.zeros(2), rng.uniform(-3, 3), rng.uniform(0.01, 0.06, 2))
+        other = _circle(rng.uniform(-0.1, 0.1, 2), rng.uniform(0.01, 0.06))
+        centers = rng.uniform(-0.3, 0.3, (6, 2))
+        found = outline_distances(centers, own, other)
+        for center, distance in zip(centers, found, strict=True):
+            a, b = _boundary(own + center, 100), _boundary(other, 30)
+            nearest = np.sqrt(((a[:, None] - b[None]) ** 2).sum(axis=-1)).min()
+            if distance > 0:
+                assert abs(distance - nearest) < 1e-3
+            else:  # overlapping: their edges meet, or one holds the other
+                assert nearest < 1e-3 or _inside(own[0] + center, other) or _inside(other[0], own + center)
+    # Two squares corner to corner: the separating axis says 4 cm, the crow flies 5.7.
+    square = rectangle_outline(np.zeros(2), 0.0, np.array([0.05, 0.05]))
+    apart = outline_distances(np.array([[0.14, 0.14]]), square, square)[0]
+    assert abs(apart - 0.04 * math.sqrt(2)) < 1e-9
+    assert (
+        gap(
+            Footprint(np.array([0.14, 0.14]), 0.0, np.array([0.05, 0.05])),
+            Footprint(np.zeros(2), 0.0, np.array([0.05, 0.05])),
+        )
+        < apart
+    )
+
+
+def test_an_outline_is_the_convex_hull_of_the_points_within_the_footprint_counter_clockwise():
+    rng = np.random.default_rng(2)
+    angles = rng.uniform(0, 2 * math.pi, 2000)
+    disc = np.column_stack([0.04 * np.cos(angles), 0.04 * np.sin(angles), rng.uniform(0.8, 0.9, 2000)])
+    stray = np.array([[0.2, 0.2, 0.85]])  # one point of the table taken for the object's
+    outline = outline_of(np.vstack([disc, stray]) + np.array([0.3, -0.1, 0.0]))
+    assert np.all(np.linalg.norm(outline - [0.3, -0.1], axis=1) <= 0.04 + 1e-9), "the stray point is left out"
+    edges = np.roll(outline, -1, axis=0) - outline
+    turns = edges[:, 0] * np.roll(edges, -1, axis=0)[:, 1] - edges[:, 1] * np.roll(edges, -1, axis=0)[:, 0]
+    assert np.all(turns > 0), "counter-clockwise and convex"
+    # Points on a line span no area: the outline is their footprint's rectangle.
+    line = np.column_stack([np.linspace(0, 0.1, 20), np.zeros(20), np.zeros(20)])
+    assert outline_of(line).shape == (4, 2)
+
+
 def test_spots_in_a_turned_tray_keep_clear_of_what_is_in_it():
     tray = Receptacle(
         "tray",
@@ -54,6 +123,19 @@ def test_spots_in_a_turned_tray_keep_clear_of_what_is_in_it():
         assert _gap_by_definition(turned, mug) >= -1e-9
     # Without the mug, spots where it stands become free.
     assert len(spots_in_receptacle(tray, half, 0.2, 0.06, [], corner_xy=np.array([0.3, 0.0]))) > len(spots)
+
+
+def test_spots_in_a_receptacle_keep_clear_of_what_stands_there_by_its_outline_not_its_rectangle():
+    """A curved thing's rectangle may cover a plate its outline covers half of (a banana on a round plate)."""
+    plate = Receptacle("plate", Transform.identity(), np.array([-0.1, -0.1, 0.0]), np.array([0.1, 0.1, 0.02]))
+    half_plate = np.array([[-0.09, -0.09], [0.09, -0.09], [-0.09, 0.09]])  # counter-clockwise
+    lying = Footprint(np.zeros(2), 0.0, np.array([0.09, 0.09]), half_plate)
+    half, apple = np.array([0.03, 0.03]), _circle(np.zeros(2), 0.03)
+    assert spots_in_receptacle(plate, half, 0.0, 0.07, [lying], corner_xy=np.array([-0.5, 0.0])) == []
+    spots = spots_in_receptacle(plate, half, 0.0, 0.07, [lying], corner_xy=np.array([-0.5, 0.0]), outline=apple)
+    assert spots, "the other half of the plate is free"
+    apart = outline_distances(np.array([s.center[:2] for s in spots]), apple, half_plate)
+    assert np.all(apart >= MARGIN - 1e-9)
 
 
 def test_spots_clear_of_points_are_those_with_no_point_within_the_radius():

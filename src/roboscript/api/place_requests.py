@@ -138,6 +138,7 @@ class PlaceRequests:
         (:func:`ranked`; ``origin``: where it was taken); a PlacementError that says how far the nearest free one
         is where there is none."""
         _, yaw, half = self.perception.footprint(name)
+        outline = self._outline(name)
         height = self.perception.box(name).size[2]
         table = supports.table_top(self.perception)
         if receptacle_name is None:
@@ -154,13 +155,15 @@ class PlaceRequests:
             candidates = [supports.support_named(self.perception, name, named)]
         ring = ring_candidates(target[:2], NEAREST_BOUND, self.base_xy)
         for support in candidates:
-            spots = free_spots(ring, half, yaw, height, support)
-            spots = clear_of_base(ranked(spots, target[:2], half, yaw, support.obstacles, origin), self.base_xy)
+            spots = free_spots(ring, half, yaw, height, support, outline)
+            spots = ranked(spots, target[:2], half, yaw, support.obstacles, origin, outline)
+            spots = clear_of_base(spots, self.base_xy)
             spots = _open_side(spots, support.region)
             if spots:
                 return spots
         support = candidates[-1]  # the widest search: where the nearest free spot is
-        farther = free_spots(ring_candidates(target[:2], REPORT_BOUND, self.base_xy), half, yaw, height, support)
+        wider = ring_candidates(target[:2], REPORT_BOUND, self.base_xy)
+        farther = free_spots(wider, half, yaw, height, support, outline)
         where = f"on {support.region.name!r}"
         nearest = (
             f"the nearest free spot {where} is {distance_moved(farther[0], target) * 100:.0f} cm away, at "
@@ -223,7 +226,10 @@ class PlaceRequests:
         wall_margin = DRAWER_WALL_MARGIN if drawer else MARGIN
         height = self.perception.box(name).size[2]
         corner = self._fill_corner(receptacle)
-        spots = spots_in_receptacle(receptacle, half, yaw, height, inside, corner, wall_margin=wall_margin)
+        outline = self._outline(name)
+        spots = spots_in_receptacle(
+            receptacle, half, yaw, height, inside, corner, wall_margin=wall_margin, outline=outline
+        )
         return _open_side(spots, receptacle)
 
     def _receptacle(self, receptacle_name: str, held: str) -> Receptacle:
@@ -253,7 +259,12 @@ class PlaceRequests:
 
     def _footprint(self, name: str) -> Footprint:
         center, yaw, half = self.perception.footprint(name)
-        return Footprint(np.asarray(center, dtype=float), float(yaw), np.asarray(half, dtype=float))
+        center, half = np.asarray(center, dtype=float), np.asarray(half, dtype=float)
+        return Footprint(center, float(yaw), half, self.perception.outline(name))
+
+    def _outline(self, name: str) -> np.ndarray:
+        """The held ``name``'s outline from above, relative to its footprint's middle."""
+        return self.perception.outline(name) - np.asarray(self.perception.footprint(name)[0], dtype=float)
 
     def _table_region(self) -> Receptacle:
         """Where things may be put aside on the table: its top as perception knows it, within the robot's reach."""

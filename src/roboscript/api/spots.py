@@ -11,7 +11,7 @@ world-aligned box would cover most of it.
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 
 import numpy as np
 
@@ -23,6 +23,7 @@ DROP = 0.012  # the object is released this far above its support
 
 
 _SIGNS = np.array([[1, 1], [1, -1], [-1, 1], [-1, -1]])  # a rectangle's corners, in half-extents
+_CYCLE = [0, 1, 3, 2]  # the corners in order round the outline
 
 
 @dataclass(frozen=True)
@@ -32,10 +33,17 @@ class Footprint:
     center: np.ndarray
     yaw: float
     half: np.ndarray
+    # Its outline from above (K, 2: corners in order round it, in the world) where it is known to be other than
+    # the rectangle (a mug's circle and handle): how far things are from it is measured to this.
+    outline: np.ndarray | None = field(default=None, compare=False)
 
     @staticmethod
     def of_box(box: Box3D) -> Footprint:
         return Footprint(box.center[:2], 0.0, box.size[:2] / 2)
+
+    def shape(self) -> np.ndarray:
+        """Its outline from above, else its rectangle's corners in order round it."""
+        return self.corners()[_CYCLE] if self.outline is None else np.asarray(self.outline, dtype=float)
 
     def axes(self) -> np.ndarray:
         c, s = math.cos(self.yaw), math.sin(self.yaw)
@@ -60,6 +68,69 @@ def gaps(centers: np.ndarray, yaw: float, half: np.ndarray, other: Footprint) ->
         pa, pb = corners_a @ axis, corners_b @ axis
         best = np.maximum(best, np.maximum(pb.min() - pa.max(axis=1), pa.min(axis=1) - pb.max()))
     return best
+
+
+def outline_distances(centers: np.ndarray, outline: np.ndarray, other: np.ndarray) -> np.ndarray:
+    """How far apart, as the crow flies, the convex outline ``outline`` (M, 2: its corners in order round it,
+    relative to its centre) put at each of ``centers`` (N, 2) is from the convex outline ``other`` (K, 2, in the
+    world): the shortest distance between them where they are apart, else how deep they overlap (negative, along
+    the axis that separates them best). A mug's outline is a circle and its handle: the rectangle round it has
+    corners a few centimetres out, and two rectangles apart corner to corner are nearer along their best
+    separating axis than the distance a reader sees between the things."""
+    centers = np.asarray(centers, dtype=float)
+    local, other = np.asarray(outline, dtype=float), np.asarray(other, dtype=float)
+    separation = np.full(len(centers), -np.inf)
+    for axis in np.vstack([_edge_normals(local), _edge_normals(other)]):
+        own, theirs, shift = local @ axis, other @ axis, centers @ axis
+        apart_along = np.maximum(theirs.min() - (shift + own.max()), shift + own.min() - theirs.max())
+        separation = np.maximum(separation, apart_along)
+    placed = centers[:, None, :] + local[None]  # (N, M, 2)
+    fixed = np.broadcast_to(other, (len(centers), *other.shape))
+    apart = np.minimum(_corners_to_edges(placed, fixed), _corners_to_edges(fixed, placed))
+    return np.where(separation > 0, apart, separation)
+
+
+def stands_clear(
+    centers: np.ndarray,
+    yaw: float,
+    own_half: np.ndarray,
+    obstacle: Footprint,
+    outline: np.ndarray | None = None,
+    among: np.ndarray | None = None,
+) -> np.ndarray:
+    """Whether a footprint (half-extents ``own_half``, the margin included, turned ``yaw``) at each of ``centers``
+    (N, 2) stands clear of ``obstacle``. With the thing's ``outline`` (K, 2, turned as the footprint, relative to
+    its middle) and the obstacle's, where the rectangles meet the outlines decide: :data:`MARGIN` apart is clear.
+    ``among``: only these centres (a mask) need the outlines' test; the rest keep the rectangles' answer."""
+    clear = gaps(centers, yaw, own_half, obstacle) >= 0
+    if outline is None or obstacle.outline is None:
+        return clear
+    closer = np.flatnonzero(~clear if among is None else ~clear & among)
+    if len(closer):  # the rectangles hold the outlines: only where they meet need the outlines be measured
+        clear[closer] = outline_distances(np.asarray(centers)[closer], outline, obstacle.shape()) >= MARGIN
+    return clear
+
+
+def turned(outline: np.ndarray, angle: float) -> np.ndarray:
+    """``outline`` (K, 2) turned ``angle`` radians about its origin."""
+    c, s = math.cos(angle), math.sin(angle)
+    return np.asarray(outline, dtype=float) @ np.array([[c, s], [-s, c]])
+
+
+def _edge_normals(outline: np.ndarray) -> np.ndarray:
+    edges = np.roll(outline, -1, axis=0) - outline
+    normals = np.column_stack([-edges[:, 1], edges[:, 0]])
+    lengths = np.linalg.norm(normals, axis=1)
+    return normals[lengths > 1e-9] / lengths[lengths > 1e-9, None]
+
+
+def _corners_to_edges(corners: np.ndarray, outline: np.ndarray) -> np.ndarray:
+    """The shortest distance from any of ``corners`` (N, M, 2) to the edges of the closed ``outline`` (N, K, 2)."""
+    start, end = outline, np.roll(outline, -1, axis=1)
+    edge = (end - start)[:, None]  # (N, 1, K, 2): every corner against every edge
+    offset = corners[:, :, None] - start[:, None]
+    along = np.clip(np.sum(offset * edge, axis=-1) / np.maximum(np.sum(edge * edge, axis=-1), 1e-12), 0.0, 1.0)
+    return np.linalg.norm(offset - along[..., None] * edge, axis=-1).min(axis=(1, 2))
 
 
 @dataclass(frozen=True)
@@ -88,13 +159,16 @@ def spots_in_receptacle(
     step: float = 0.015,
     near_xy: np.ndarray | None = None,
     wall_margin: float = MARGIN,
+    outline: np.ndarray | None = None,
 ) -> list[PlacementSpot]:
     """Free spots inside the receptacle's interior, filled from the corner nearest ``corner_xy`` outwards.
 
     The object (footprint half-extents ``half_xy`` in its own frame, turned by ``object_yaw``) is turned square to
     the receptacle in each of four ways. Filling from one corner, like packing a box, leaves the most room for
     what comes next; the corner nearest the robot keeps the arm's reach short. With ``near_xy`` (putting
-    something aside on the table) the spots nearest that point come first instead.
+    something aside on the table) the spots nearest that point come first instead. With the object's ``outline``
+    (K, 2, relative to its footprint's middle), what it must keep clear of is measured outline to outline
+    (:func:`stands_clear`): a banana's rectangle covers much of a round plate, the banana does not.
     """
     lower, upper = receptacle.lower, receptacle.upper
     rotation = receptacle.frame.rotation
@@ -117,8 +191,9 @@ def spots_in_receptacle(
         grid = np.array([[x, y] for x in xs for y in ys])
         world = receptacle.frame.apply(np.column_stack([grid, np.zeros(len(grid))]))
         free = np.ones(len(grid), dtype=bool)
+        own = None if outline is None else turned(outline, turn)
         for o in obstacles:
-            free &= gaps(world[:, :2], frame_yaw, own_half, o) >= 0
+            free &= stands_clear(world[:, :2], frame_yaw, own_half, o, own, free)
         for k in np.flatnonzero(free):
             center = np.array([world[k, 0], world[k, 1], bottom + height / 2 + DROP])
             # Nearest the corner first; among equals, the smaller turn.

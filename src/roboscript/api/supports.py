@@ -125,7 +125,8 @@ def obstacles_for(perception: Perception, held: str, support: Receptacle) -> tup
     for name in perception.objects():
         if name not in (held, support.name):
             center, yaw, half = perception.footprint(name)
-            out.append(Footprint(np.asarray(center, dtype=float), float(yaw), np.asarray(half, dtype=float)))
+            center, half = np.asarray(center, dtype=float), np.asarray(half, dtype=float)
+            out.append(Footprint(center, float(yaw), half, perception.outline(name)))
     if support.name == TABLE:
         out += [Footprint.of_box(perception.box(n)) for n in perception.furniture() if "." not in n]
     return tuple(out)

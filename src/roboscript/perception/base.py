@@ -16,6 +16,7 @@ import numpy as np
 from roboscript.errors import UsageError, did_you_mean
 from roboscript.geometry import Box3D, Transform
 from roboscript.names import TABLE
+from roboscript.perception.footprints import rectangle_outline
 
 OCCUPANCY_MARGIN = 0.02  # metres around an ignored object's box whose points are taken to be its own
 # Room kept between the carcass front and where things are put into an open drawer: the panel above the drawer
@@ -107,6 +108,11 @@ class Perception(ABC):
     @abstractmethod
     def footprint(self, name: str) -> tuple[np.ndarray, float, np.ndarray]:
         """``(center_xy, yaw, half_extents_xy)``: the object's footprint as a rectangle turned by ``yaw``."""
+
+    def outline(self, name: str) -> np.ndarray:
+        """The object's outline from above, as far as it is known: the corners ``(K, 2)`` of a convex polygon round
+        what it covers of the table, counter-clockwise, in the world. By default its footprint's rectangle."""
+        return rectangle_outline(*self.footprint(name))
 
     @abstractmethod
     def joints(self, name: str) -> list[ArticulationJoint]:

@@ -1,10 +1,12 @@
-"""Footprints: the turned rectangle of least area around what an object covers of the table, seen from above."""
+"""Footprints: the turned rectangle of least area around what an object covers of the table, seen from above, and
+the convex outline within it."""
 
 from __future__ import annotations
 
 import math
 
 import numpy as np
+from scipy.spatial import ConvexHull, QhullError
 
 
 def footprint_of(points: np.ndarray, trim: float = 0.5) -> tuple[np.ndarray, float, np.ndarray]:
@@ -37,3 +39,25 @@ def _rectangle(xy: np.ndarray, angle: float, trim: float) -> tuple[float, np.nda
     local = xy @ np.array([[c, -s], [s, c]])
     lower, upper = np.percentile(local, trim, axis=0), np.percentile(local, 100 - trim, axis=0)
     return float(np.prod(upper - lower)), lower, upper
+
+
+def outline_of(points: np.ndarray, trim: float = 0.5) -> np.ndarray:
+    """The convex outline, seen from above, of the points within their footprint (:func:`footprint_of`, the
+    stray points it trims left out): its corners ``(K, 2)`` counter-clockwise round it; the footprint's corners
+    where the points span no area."""
+    center, yaw, half = footprint_of(points, trim)
+    axes = np.array([[math.cos(yaw), math.sin(yaw)], [-math.sin(yaw), math.cos(yaw)]])
+    xy = np.asarray(points, dtype=float)[:, :2]
+    within = xy[np.all(np.abs((xy - center) @ axes.T) <= half + 1e-3, axis=1)]
+    try:
+        hull = ConvexHull(within)
+    except (QhullError, ValueError):  # fewer than three points, or all on a line
+        return rectangle_outline(center, yaw, half)
+    return within[hull.vertices]
+
+
+def rectangle_outline(center: np.ndarray, yaw: float, half: np.ndarray) -> np.ndarray:
+    """The corners ``(4, 2)`` of the rectangle ``(center, yaw, half)``, counter-clockwise."""
+    axes = np.array([[math.cos(yaw), math.sin(yaw)], [-math.sin(yaw), math.cos(yaw)]])
+    signs = np.array([[1.0, 1.0], [-1.0, 1.0], [-1.0, -1.0], [1.0, -1.0]])
+    return np.asarray(center, dtype=float) + (signs * np.asarray(half, dtype=float)) @ axes

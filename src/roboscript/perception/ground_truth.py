@@ -25,7 +25,7 @@ from roboscript.perception.base import (
     Receptacle,
     UnknownObjectError,
 )
-from roboscript.perception.footprints import footprint_of
+from roboscript.perception.footprints import footprint_of, outline_of
 from roboscript.perception.points import entities_points, entity_points, robot_masks, surface_points
 from roboscript.phases import timed
 from roboscript.robot_io import CameraFrame
@@ -88,6 +88,12 @@ class GroundTruthPerception(Perception):
         local = self.gt.local_box(name, frame)
         center = frame.apply(local.center[None])[0]
         return center[:2], yaw, local.size[:2] / 2
+
+    def outline(self, name: str) -> np.ndarray:
+        """Of objects, the convex outline of their geoms from above; of furniture, its box's."""
+        if self._entity(name).object_type is None:
+            return super().outline(name)
+        return outline_of(self.gt.outline(name), trim=0.0)
 
     def joints(self, name: str) -> list[ArticulationJoint]:
         entity = self._entity(name)

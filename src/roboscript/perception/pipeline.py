@@ -52,7 +52,7 @@ from roboscript.perception.drawers import (
     unseen_inside,
 )
 from roboscript.perception.faces import plane_normal_at
-from roboscript.perception.footprints import footprint_of
+from roboscript.perception.footprints import footprint_of, outline_of
 from roboscript.perception.furniture_parts import row_bands
 from roboscript.perception.fusion import FusionSettings
 from roboscript.perception.grounding import Grounder, normalize_phrase
@@ -466,6 +466,11 @@ class PipelinePerception(Perception):
             box = self._part_box(name)
             return box.center[:2], 0.0, box.size[:2] / 2
         return footprint_of(obj.outline)
+
+    def outline(self, name: str) -> np.ndarray:
+        """Of objects, the convex outline of their points from above; of furniture and parts, their box's."""
+        obj = self._object(name)
+        return super().outline(name) if obj is None else outline_of(obj.outline)
 
     def pose(self, name: str) -> Transform:
         """Of objects, the centre of their bottom face turned as their footprint; of furniture and parts, the
