@@ -276,7 +276,7 @@ def test_every_query_lists_a_cabinets_drawers_and_doors_from_the_top_row_down():
     from roboscript.bench.tasks import load_suite
     from roboscript.sim.world_catalog import load_world
 
-    assert "lists a cabinet's drawers\n  and doors in that order, from the top" in system_prompt()
+    assert "lists a cabinet's drawers\n  and doors row by row from the top, whatever their kind" in system_prompt()
     listed = 0
     for suite in ("paper", "generated"):
         for task in load_suite(suite).values():

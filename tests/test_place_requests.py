@@ -134,17 +134,24 @@ def test_a_mugs_outline_is_its_body_and_handle_within_its_footprint():
     assert area < 0.9 * 4 * half[0] * half[1], "the corners of its rectangle are not the mug's"
 
 
-def test_a_position_moved_off_what_stood_there_leaves_the_fingers_room_to_take_the_thing_again():
+@pytest.mark.parametrize("round_bottle", [False, True], ids=["rectangles", "outlines"])
+def test_a_position_moved_off_what_stood_there_leaves_the_fingers_room_to_take_the_thing_again(round_bottle):
     """A gelatin box asked to go where a medication bottle stands (overlapping it by 2 cm, so taken for a
     neighbour): it moves along the bottle, but not snug against it across its narrow side, where the fingers close
-    to take it again; the turns kept are those that leave that room."""
+    to take it again; the turns kept are those that leave that room. Measured between outlines, the round bottle
+    stands further from a spot beside it than its rectangle does: the room kept for the fingers is not counted as
+    moving away from it."""
     region = Receptacle("table", Transform.identity(), np.array([-0.5, -0.5, 0.8]), np.array([0.5, 0.5, 1.2]))
-    bottle = Footprint(np.array([0.0, 0.0]), 0.0, np.array([0.022, 0.022]))
+    angles = np.arange(24) * 2 * np.pi / 24
+    circle = 0.022 * np.column_stack([np.cos(angles), np.sin(angles)]) if round_bottle else None
+    bottle = Footprint(np.array([0.0, 0.0]), 0.0, np.array([0.022, 0.022]), circle)
     half = np.array([0.045, 0.036])  # narrow along y: the fingers close along y
+    box = Footprint(np.zeros(2), 0.0, half).shape() if round_bottle else None
     target = np.array([0.0, 0.022 + 0.036 + 0.007 - 0.02])
     support = Support(region, 0.8, (bottle,))
-    spots = free_spots(ring_candidates(target, NEAREST_BOUND, np.array([-0.45, 0.0])), half, 0.0, 0.03, support)
-    first = ranked(spots, target, half, 0.0, support.obstacles)[0]
+    candidates = ring_candidates(target, NEAREST_BOUND, np.array([-0.45, 0.0]))
+    spots = free_spots(candidates, half, 0.0, 0.03, support, box)
+    first = ranked(spots, target, half, 0.0, support.obstacles, None, box)[0]
     assert finger_room_turns(first, half, 0.0, support.obstacles) == first.turns
     for turn in first.turns:
         # The open fingers (2 cm square pads, 1 cm out from each long side) come down across the narrow side.
@@ -153,6 +160,29 @@ def test_a_position_moved_off_what_stood_there_leaves_the_fingers_room_to_take_t
             pad = Footprint(first.center[:2] + side * closing * (half[1] + 0.01 + 0.01), turn, np.array([0.01, 0.01]))
             assert gap(pad, bottle) > 0.0, f"a finger comes down on the bottle (turn {turn:.2f})"
     assert np.linalg.norm(first.center[:2] - target) <= 0.08, "not sent far off for it"
+
+
+@pytest.mark.parametrize("yaw", [0.3, 0.6, 1.2])
+def test_a_turned_box_moved_off_a_round_bottle_it_was_asked_onto_keeps_a_fingers_room_from_it(yaw):
+    """Outline to outline, a spot with room for the fingers between the box and the bottle stands a few
+    centimetres further from the bottle than a snug one: that room is what "beside it" means for a thing the
+    position overlapped, not a move away from it (a gelatin box put 7 mm from a bottle could not be taken again)."""
+    region = Receptacle("table", Transform.identity(), np.array([-0.5, -0.5, 0.8]), np.array([0.5, 0.5, 1.2]))
+    angles = np.arange(24) * 2 * np.pi / 24
+    target, half = np.array([-0.07, -0.09]), np.array([0.045, 0.037])
+    box = Footprint(np.zeros(2), yaw, half).shape()
+    for offset in ([-0.035, 0.017], [0.0, 0.045], [0.03, -0.03]):
+        middle = target + offset
+        bottle = Footprint(
+            middle, 0.0, np.array([0.022, 0.022]), middle + 0.022 * np.column_stack([np.cos(angles), np.sin(angles)])
+        )
+        support = Support(region, 0.8, (bottle,))
+        spots = free_spots(
+            ring_candidates(target, NEAREST_BOUND, np.array([-0.45, 0.0])), half, yaw, 0.03, support, box
+        )
+        first = ranked(spots, target, half, yaw, support.obstacles, None, box)[0]
+        assert finger_room_turns(first, half, yaw, support.obstacles), (offset, first.center)
+        assert np.linalg.norm(first.center[:2] - target) <= 0.08, "not sent far off for it"
 
 
 def test_stacking_on_a_box_that_is_no_container():

@@ -173,7 +173,7 @@ def test_motion_tools_reject_bad_input_and_leave_the_arm_alone(tools):
         tools.move_in_direction(direction=[0, 0, 0], distance=0.1)
     with pytest.raises(TypeError, match="distance must be a number"):
         tools.move_in_direction([0, 0, 1], "far")
-    with pytest.raises(ValueError, match="distance is in metres"):
+    with pytest.raises(ValueError, match=r"must be between -1\.5 and 1\.5 metres"):
         tools.move_in_direction([0, 0, 1], 25)
     with pytest.raises(TypeError, match="path must be a non-empty list of Pose"):
         tools.follow_path([])

@@ -155,8 +155,12 @@ def ranked(
     own = Footprint(np.zeros(2), yaw, np.asarray(half, dtype=float)).shape() if outline is None else outline
     target = np.asarray(target_xy, dtype=float)[None]
     asked = [float(outline_distances(target, own, obstacle.shape())[0]) for obstacle in obstacles]
+    # One the position overlapped is kept beside, with a finger's room: whoever misjudged it meant the thing to
+    # stand next to it, and a thing snug against it cannot be taken again.
     neighbours = [
-        (o, max(a, 0.0)) for o, a in zip(obstacles, asked, strict=True) if -NEIGHBOUR_OVERLAP <= a <= NEIGHBOUR_GAP
+        (o, a if a >= 0.0 else FINGER_ROOM)
+        for o, a in zip(obstacles, asked, strict=True)
+        if -NEIGHBOUR_OVERLAP <= a <= NEIGHBOUR_GAP
     ]
     # Only coming back near the old place counts: not the front of a drawer the thing was carried to.
     sent = None if origin_xy is None else min(float(np.linalg.norm(target[0] - origin_xy)), ORIGIN_RADIUS)

@@ -198,11 +198,11 @@ class ToolAPI:
     @tool
     def move_in_direction(self, axis: Sequence[float], distance: float) -> None:
         """Moves the TCP in a straight line along ``axis`` (any non-zero 3-vector, normalised) by ``distance``
-        metres (negative: backwards; at most 1.5), keeping its orientation and carrying what is attached."""
+        metres (negative: backwards; at most 1.5), keeping its orientation and carrying what is attached; a line
+        blocked on the way becomes a planned path to its end. Raises IKError or PlanningError where it cannot."""
         unit, distance = direction(axis, "axis"), real(distance, "distance")
         if abs(distance) > LONGEST_MOVE:
-            within = f"[-{LONGEST_MOVE}, {LONGEST_MOVE}]"
-            raise ArgumentError(f"distance is in metres and must be within {within}, got {distance}")
+            raise ArgumentError(f"distance must be between -{LONGEST_MOVE} and {LONGEST_MOVE} metres, got {distance}")
         self.moves.in_direction(unit, distance)
 
     @tool

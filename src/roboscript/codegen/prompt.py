@@ -22,9 +22,10 @@ Rules:
   `cabinet.drawer_0` is the top drawer, `cabinet.door_0` the top door, and `cabinet.handle_k` is the handle on the
   k-th row from the top, drawers and doors counted together (in a cabinet of two drawers above a door,
   `cabinet.handle_1` is the second drawer's and `cabinet.handle_2` the door's); the query lists a cabinet's drawers
-  and doors in that order, from the top. The table and the furniture are objects too (`get_3d_bbox('table')`,
-  `parse_place_pose(name, 'table')`), and `get_object_name_list()` lists them: leave out `table`, `cabinet` and
-  its parts when you mean the things on the table.
+  and doors row by row from the top, whatever their kind (a door above a drawer is listed first). The table
+  and the furniture are objects too (`get_3d_bbox('table')`, `parse_place_pose(name, 'table')`), and
+  `get_object_name_list()` lists them: leave out `table`, `cabinet` and its parts when you mean the things on
+  the table.
 - Plates, saucers, bowls and baskets stay where they are: things go in or on them, and the gripper cannot pick
   them up.
 - Positions are in metres in the world's frame, whose axes are the robot's: x forward (away from the robot), y
