@@ -34,7 +34,7 @@ REACH_MIDDLE = 0.5  # metres from the base: among equally near spots, those near
 TURNS = (0.0, math.pi / 2, -math.pi / 2, math.pi)
 # Neighbours whose outlines stood this near the asked-for one, or overlapped it by no more than NEIGHBOUR_OVERLAP,
 # are those the position was chosen by: a moved spot is charged NEIGHBOUR_WEIGHT times each centimetre it takes the
-# thing further from them than asked (from one it overlapped: than touching it). Things 8 cm apart stand beside
+# thing further from them than asked (from one it overlapped: than a finger's room). Things 8 cm apart stand beside
 # each other to a reader (the benchmark's "near" allows as much); a mug put 5.5 cm from another, measured as the
 # crow flies between their outlines, is beside it. Moving along a neighbour keeps the relation the program asked
 # for; moving away from it breaks it, so that counts for more than the distance moved. A slight overlap is a
