@@ -137,8 +137,7 @@ class PlaceRequests:
         """Free spots for the held ``name`` at ``target`` or round it within :data:`NEAREST_BOUND`, best first
         (:func:`ranked`; ``origin``: where it was taken); a PlacementError that says how far the nearest free one
         is where there is none."""
-        _, yaw, half = self.perception.footprint(name)
-        outline = self._outline(name)
+        yaw, half, outline = self._held_shape(name)
         height = self.perception.box(name).size[2]
         table = supports.table_top(self.perception)
         if receptacle_name is None:
@@ -219,14 +218,13 @@ class PlaceRequests:
 
     def _spots_in(self, name: str, receptacle: Receptacle, others: list[str]) -> list[PlacementSpot]:
         """Free spots for the held object in a container or a drawer, clear of what is already in it."""
-        _, yaw, half = self.perception.footprint(name)
+        yaw, half, outline = self._held_shape(name)
         inside = [self._footprint(o) for o in others if _within(self.perception.box(o), receptacle)]
         drawer = kind_of(receptacle.name) == "drawer"
         # A drawer's front and walls stand high around a held object that may swing a little.
         wall_margin = DRAWER_WALL_MARGIN if drawer else MARGIN
         height = self.perception.box(name).size[2]
         corner = self._fill_corner(receptacle)
-        outline = self._outline(name)
         spots = spots_in_receptacle(
             receptacle, half, yaw, height, inside, corner, wall_margin=wall_margin, outline=outline
         )
@@ -258,13 +256,13 @@ class PlaceRequests:
         return receptacle
 
     def _footprint(self, name: str) -> Footprint:
-        center, yaw, half = self.perception.footprint(name)
-        center, half = np.asarray(center, dtype=float), np.asarray(half, dtype=float)
-        return Footprint(center, float(yaw), half, self.perception.outline(name))
+        return supports.object_footprint(self.perception, name)
 
-    def _outline(self, name: str) -> np.ndarray:
-        """The held ``name``'s outline from above, relative to its footprint's middle."""
-        return self.perception.outline(name) - np.asarray(self.perception.footprint(name)[0], dtype=float)
+    def _held_shape(self, name: str) -> tuple[float, np.ndarray, np.ndarray]:
+        """The held ``name``'s footprint's ``(yaw, half_extents_xy)`` and its outline from above, relative to the
+        footprint's middle."""
+        middle, yaw, half = self.perception.footprint(name)
+        return yaw, half, self.perception.outline(name) - np.asarray(middle, dtype=float)
 
     def _table_region(self) -> Receptacle:
         """Where things may be put aside on the table: its top as perception knows it, within the robot's reach."""

@@ -17,13 +17,13 @@ import numpy as np
 
 from roboscript.geometry import Box3D
 from roboscript.perception.base import Receptacle
+from roboscript.perception.footprints import rectangle_outline
 
 MARGIN = 0.007  # clearance kept from walls and from other objects
 DROP = 0.012  # the object is released this far above its support
 
 
 _SIGNS = np.array([[1, 1], [1, -1], [-1, 1], [-1, -1]])  # a rectangle's corners, in half-extents
-_CYCLE = [0, 1, 3, 2]  # the corners in order round the outline
 
 
 @dataclass(frozen=True)
@@ -43,7 +43,9 @@ class Footprint:
 
     def shape(self) -> np.ndarray:
         """Its outline from above, else its rectangle's corners in order round it."""
-        return self.corners()[_CYCLE] if self.outline is None else np.asarray(self.outline, dtype=float)
+        if self.outline is None:
+            return rectangle_outline(self.center, self.yaw, self.half)
+        return np.asarray(self.outline, dtype=float)
 
     def axes(self) -> np.ndarray:
         c, s = math.cos(self.yaw), math.sin(self.yaw)

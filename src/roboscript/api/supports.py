@@ -118,15 +118,20 @@ def contains_xy(receptacle: Receptacle, point_xy: np.ndarray) -> bool:
     return bool(np.all(local[:2] >= receptacle.lower[:2]) and np.all(local[:2] <= receptacle.upper[:2]))
 
 
+def object_footprint(perception: Perception, name: str) -> Footprint:
+    """``name``'s footprint as perception knows it, with its outline from above."""
+    center, yaw, half = perception.footprint(name)
+    center, half = np.asarray(center, dtype=float), np.asarray(half, dtype=float)
+    return Footprint(center, float(yaw), half, perception.outline(name))
+
+
 def obstacles_for(perception: Perception, held: str, support: Receptacle) -> tuple[Footprint, ...]:
     """The footprints a thing put down on ``support`` must keep clear of: every other object's, and the
     furniture's unless the support is part of it (a drawer's floor lies within its cabinet's box)."""
     out = []
     for name in perception.objects():
         if name not in (held, support.name):
-            center, yaw, half = perception.footprint(name)
-            center, half = np.asarray(center, dtype=float), np.asarray(half, dtype=float)
-            out.append(Footprint(center, float(yaw), half, perception.outline(name)))
+            out.append(object_footprint(perception, name))
     if support.name == TABLE:
         out += [Footprint.of_box(perception.box(n)) for n in perception.furniture() if "." not in n]
     return tuple(out)

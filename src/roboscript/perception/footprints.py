@@ -41,11 +41,13 @@ def _rectangle(xy: np.ndarray, angle: float, trim: float) -> tuple[float, np.nda
     return float(np.prod(upper - lower)), lower, upper
 
 
-def outline_of(points: np.ndarray, trim: float = 0.5) -> np.ndarray:
+def outline_of(
+    points: np.ndarray, trim: float = 0.5, footprint: tuple[np.ndarray, float, np.ndarray] | None = None
+) -> np.ndarray:
     """The convex outline, seen from above, of the points within their footprint (:func:`footprint_of`, the
-    stray points it trims left out): its corners ``(K, 2)`` counter-clockwise round it; the footprint's corners
-    where the points span no area."""
-    center, yaw, half = footprint_of(points, trim)
+    stray points it trims left out; ``footprint``: that of the points, where it is known already): its corners
+    ``(K, 2)`` counter-clockwise round it; the footprint's corners where the points span no area."""
+    center, yaw, half = footprint_of(points, trim) if footprint is None else footprint
     axes = np.array([[math.cos(yaw), math.sin(yaw)], [-math.sin(yaw), math.cos(yaw)]])
     xy = np.asarray(points, dtype=float)[:, :2]
     within = xy[np.all(np.abs((xy - center) @ axes.T) <= half + 1e-3, axis=1)]

@@ -25,6 +25,7 @@ import math
 from collections.abc import Iterator, Sequence
 from contextlib import contextmanager
 from dataclasses import dataclass, field
+from functools import cached_property
 
 import numpy as np
 
@@ -116,6 +117,12 @@ class SeenObject:
     def outline(self) -> np.ndarray:
         """The points that show its outline from above."""
         return footprint_points(self.points, self.support)
+
+    @cached_property
+    def footprint(self) -> tuple[np.ndarray, float, np.ndarray]:
+        """``(center_xy, yaw, half_extents_xy)`` of :attr:`outline` (:func:`footprint_of`); asked for by every
+        placement's obstacles, so worked out once per object seen (a moved object is a new one)."""
+        return footprint_of(self.outline)
 
 
 class PipelinePerception(Perception):
@@ -465,12 +472,12 @@ class PipelinePerception(Perception):
         if obj is None:
             box = self._part_box(name)
             return box.center[:2], 0.0, box.size[:2] / 2
-        return footprint_of(obj.outline)
+        return obj.footprint
 
     def outline(self, name: str) -> np.ndarray:
         """Of objects, the convex outline of their points from above; of furniture and parts, their box's."""
         obj = self._object(name)
-        return super().outline(name) if obj is None else outline_of(obj.outline)
+        return super().outline(name) if obj is None else outline_of(obj.outline, footprint=obj.footprint)
 
     def pose(self, name: str) -> Transform:
         """Of objects, the centre of their bottom face turned as their footprint; of furniture and parts, the
@@ -478,7 +485,7 @@ class PipelinePerception(Perception):
         obj = self._object(name)
         if obj is None:
             return Transform(self.box(name).center, quat_from_yaw(0.0))
-        center, yaw, _ = footprint_of(obj.outline)
+        center, yaw, _ = obj.footprint
         return Transform(np.array([center[0], center[1], obj.box.lower[2]]), quat_from_yaw(yaw))
 
     def joints(self, name: str) -> list[ArticulationJoint]:
