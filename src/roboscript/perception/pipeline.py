@@ -54,6 +54,7 @@ from roboscript.perception.drawers import (
 )
 from roboscript.perception.faces import plane_normal_at
 from roboscript.perception.footprints import footprint_of, outline_of
+from roboscript.perception.free_space import stands_empty
 from roboscript.perception.furniture_parts import row_bands
 from roboscript.perception.fusion import FusionSettings
 from roboscript.perception.grounding import Grounder, normalize_phrase
@@ -82,6 +83,7 @@ SURFACE_STRIDE = 2  # every how many depth pixels one stands for the observed su
 HANDLE_PROUD = 0.004  # metres out of its front from which a point is the handle's, not the front's
 MOVED = 0.005  # metres the gripper must have moved since a look for another look to be worth it
 SETTLE_INSET = 0.01  # metres: the footprint a let-go object falls within, shrunk by this; smaller drops are none
+JUMP = 0.05  # metres an untouched object's find may lie from where it stood before it must show it has gone
 OPEN_DRAWER = 0.04  # metres a drawer's front must stand out of its cabinet's for it to count as open
 
 
@@ -276,11 +278,24 @@ class PipelinePerception(Perception):
             else:
                 fresh = self._seen(names[k], phrase, instance, seen)
                 before = self.store.get(names[k])
+                if before is not None and not self._may_have_gone(before, fresh, seen):
+                    continue
                 # Seen by fewer cameras than before (the arm in the way, a detector's miss) where it stood still:
                 # the earlier look saw more of it (a mug's rim from one side only has no grasp pairs).
                 still = before is not None and names[k] not in self._let_go and _part_of(fresh, before)
                 self.store[names[k]] = before if still and fresh.views < before.views else fresh
         return set(names.values())
+
+    def _may_have_gone(self, before: SeenObject, fresh: SeenObject, seen: Observation) -> bool:
+        """Whether ``fresh``, found :data:`JUMP` or more from where ``before`` stood, may be it. The robot has not
+        touched it since, so it went only if pushed or carried along (in a drawer): this look sees through its old
+        place (:func:`~roboscript.perception.free_space.stands_empty`), or sees the find better than it was seen.
+        Else the detector put its name on something else (a mug's on an open drawer's front) and missed it."""
+        if before.name in self._let_go or fresh.views > before.views:
+            return True
+        if float(np.linalg.norm(fresh.box.center - before.box.center)) < JUMP:
+            return True
+        return stands_empty(before.points, seen.frames, self.masks)
 
     def _in_hand(self, expected: SeenObject, instance: Instance3D) -> SeenObject:
         """A carried object seen in the hand: the whole of it as seen before, moved to where this look shows the
