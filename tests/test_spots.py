@@ -12,6 +12,7 @@ from roboscript.api.spots import (
     gap,
     gaps,
     outline_distances,
+    overhang,
     spots_in_receptacle,
 )
 from roboscript.geometry import Transform, quat_from_yaw
@@ -136,6 +137,29 @@ def test_spots_in_a_receptacle_keep_clear_of_what_stands_there_by_its_outline_no
     assert spots, "the other half of the plate is free"
     apart = outline_distances(np.array([s.center[:2] for s in spots]), apple, half_plate)
     assert np.all(apart >= MARGIN - 1e-9)
+
+
+def test_on_a_round_floor_spots_within_it_come_first_and_beyond_it_the_least_beyond():
+    """A bottle filled into the corner of the box round a plate's flat middle would stand on the rim and fall over;
+    a thing longer than the flat middle goes where the least of it lies beyond."""
+    frame = Transform(np.array([0.4, -0.2, 0.8]), quat_from_yaw(0.5))
+    box = np.array([-0.08, -0.08, 0.0]), np.array([0.08, 0.08, 0.1])
+    round_plate, square_plate = Receptacle("plate", frame, *box, round_floor=True), Receptacle("plate", frame, *box)
+    bottle, half = _circle(np.zeros(2), 0.022), np.array([0.022, 0.022])
+    corner = np.array([0.0, 0.0])
+    for plate, within in ((round_plate, True), (square_plate, False)):
+        best = spots_in_receptacle(plate, half, 0.0, 0.09, [], corner_xy=corner, outline=bottle)[0]
+        middle = plate.frame.inverse().apply(best.center[None])[0, :2]
+        assert (np.linalg.norm(middle) + 0.022 <= 0.08 - MARGIN + 1e-3) == within
+        assert overhang(plate, middle[None], bottle)[0] == 0.0 or not within
+    long_half = np.array([0.07, 0.03])  # within the box round the flat middle, not within the flat middle
+    banana = rectangle_outline(np.zeros(2), 0.0, long_half)
+    spots = spots_in_receptacle(round_plate, long_half, 0.5, 0.04, [], corner_xy=corner, outline=banana)
+    middle = round_plate.frame.inverse().apply(spots[0].center[None])[0, :2]
+    assert np.linalg.norm(middle) < 0.02
+    local = np.array([[0.0, 0.0], [0.05, 0.0]])
+    assert overhang(round_plate, local, np.zeros((1, 2)))[0] == 0.0
+    assert overhang(round_plate, np.array([[0.09, 0.0]]), np.zeros((1, 2)))[0] > 0.0
 
 
 def test_spots_clear_of_points_are_those_with_no_point_within_the_radius():

@@ -21,6 +21,9 @@ from roboscript.perception.footprints import rectangle_outline
 
 MARGIN = 0.007  # clearance kept from walls and from other objects
 DROP = 0.012  # the object is released this far above its support
+# Score lost per metre a spot stands beyond a round floor: more than any corner distance gains (spots within it come
+# first), and among spots beyond it the least beyond comes first (a banana longer than a plate's flat middle).
+OVERHANG_WEIGHT = 100.0
 
 
 _SIGNS = np.array([[1, 1], [1, -1], [-1, 1], [-1, -1]])  # a rectangle's corners, in half-extents
@@ -196,16 +199,33 @@ def spots_in_receptacle(
         own = None if outline is None else turned(outline, turn)
         for o in obstacles:
             free &= stands_clear(world[:, :2], frame_yaw, own_half, o, own, free)
+        shape = _SIGNS * (half - wall_margin) if own is None else turned(own, -frame_yaw)
+        beyond = overhang(receptacle, grid, shape, wall_margin)
         for k in np.flatnonzero(free):
             center = np.array([world[k, 0], world[k, 1], bottom + height / 2 + DROP])
-            # Nearest the corner first; among equals, the smaller turn.
+            # Within a round floor first, then the least beyond it; nearest the corner next; then the smaller turn.
             if near_xy is None:
                 score = -float(np.abs(grid[k] - corner).sum()) - 0.01 * abs(turn)
             else:
                 score = -float(np.linalg.norm(world[k, :2] - near_xy)) - 0.01 * abs(turn)
-            out.append(PlacementSpot(center, turn, score))
+            out.append(PlacementSpot(center, turn, score - OVERHANG_WEIGHT * float(beyond[k])))
     out.sort(key=lambda s: -s.score)
     return out
+
+
+def overhang(receptacle: Receptacle, spots: np.ndarray, shape: np.ndarray, margin: float = MARGIN) -> np.ndarray:
+    """How far (metres) a thing of outline ``shape`` (K, 2, in the receptacle's frame, relative to its middle)
+    stands beyond a round floor (:attr:`Receptacle.round_floor`, less ``margin``) at each of ``spots`` (N, 2, in
+    the receptacle's frame): 0 within it, and for every receptacle without a round floor. A bottle in the corner of
+    the box round a plate's flat middle stands on the rim and falls over when let go."""
+    spots = np.asarray(spots, dtype=float)
+    if not receptacle.round_floor:
+        return np.zeros(len(spots))
+    middle = (receptacle.lower[:2] + receptacle.upper[:2]) / 2
+    axes = np.maximum((receptacle.upper[:2] - receptacle.lower[:2]) / 2 - margin, 1e-3)
+    placed = spots[:, None, :] + np.asarray(shape, dtype=float)[None] - middle  # (N, K, 2)
+    reach = np.linalg.norm(placed / axes, axis=-1).max(axis=1)
+    return np.maximum(reach - 1.0, 0.0) * float(axes.min())
 
 
 def fits(receptacle: Receptacle, half_xy: np.ndarray) -> bool:

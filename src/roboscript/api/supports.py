@@ -80,7 +80,7 @@ def whole_surface(perception: Perception, receptacle: Receptacle) -> Receptacle 
     reach = np.maximum(np.asarray(half, dtype=float) - PLATE_EDGE, 0.0)
     lower = np.array([-reach[0], -reach[1], receptacle.lower[2]])
     upper = np.array([reach[0], reach[1], receptacle.upper[2]])
-    return Receptacle(receptacle.name, frame, lower, upper)
+    return Receptacle(receptacle.name, frame, lower, upper, receptacle.round_floor)
 
 
 def has_walls(perception: Perception, receptacle: Receptacle) -> bool:

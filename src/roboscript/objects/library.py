@@ -40,6 +40,9 @@ class ObjectType:
     interior: tuple[tuple[float, float, float], tuple[float, float, float]] | None = None
     friction: float = 1.0
     round: bool = False  # rolls: given rolling friction so it settles like a real, not quite round, fruit
+    # The interior's floor is round (a plate's, a bowl's): the disc inscribed in ``interior``'s box. Beyond it, in
+    # the box's corners, a thing would stand on the rim or against the wall, tilted.
+    round_floor: bool = False
     # The shape class the object-shape study groups by (SHAPES); set for every type.
     shape: str = ""
     # The colour it is drawn in where that differs from the one its name says (a green apple of a lighter green).
@@ -280,6 +283,7 @@ for _color in ("white", "blue", "red", "green", "yellow"):
             shape="flat",
             container=True,
             interior=((-0.08, -0.08, 0.008), (0.08, 0.08, 0.1)),
+            round_floor=True,
         )
     )
 _register(
@@ -293,6 +297,7 @@ _register(
         shape="flat",
         container=True,
         interior=((-0.12, -0.12, 0.008), (0.12, 0.12, 0.1)),
+        round_floor=True,
     )
 )
 _register(
@@ -319,6 +324,7 @@ _register(
         shape="flat",
         container=True,
         interior=((-0.075, -0.075, 0.008), (0.075, 0.075, 0.1)),
+        round_floor=True,
     )
 )
 _register(
@@ -332,6 +338,7 @@ _register(
         shape="flat",
         container=True,
         interior=((-0.07, -0.07, 0.008), (0.07, 0.07, 0.1)),
+        round_floor=True,
     )
 )
 _register(
@@ -359,6 +366,7 @@ for _color in ("white", "blue", "pink"):
             shape="flat",
             container=True,
             interior=((-0.05, -0.05, 0.008), (0.05, 0.05, 0.08)),
+            round_floor=True,
         )
     )
 for _color in ("white", "blue", "green", "red"):
@@ -373,6 +381,7 @@ for _color in ("white", "blue", "green", "red"):
             shape="bowl",
             container=True,
             interior=((-0.055, -0.055, 0.008), (0.055, 0.055, 0.1)),
+            round_floor=True,
         )
     )
 _register(
@@ -386,6 +395,7 @@ _register(
         shape="bowl",
         container=True,
         interior=((-0.05, -0.05, 0.008), (0.05, 0.05, 0.09)),
+        round_floor=True,
     )
 )
 _register(
@@ -399,6 +409,7 @@ _register(
         shape="bowl",
         container=True,
         interior=((-0.06, -0.06, 0.058), (0.06, 0.06, 0.18)),
+        round_floor=True,
     )
 )
 _register(

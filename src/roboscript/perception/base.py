@@ -54,12 +54,14 @@ class ArticulationJoint:
 
 @dataclass(frozen=True)
 class Receptacle:
-    """The free volume of a container or drawer: the box ``[lower, upper]`` in the frame ``frame``."""
+    """The free volume of a container or drawer: the box ``[lower, upper]`` in the frame ``frame``; with
+    ``round_floor``, of its floor only the ellipse inscribed in the box's (a plate's, a bowl's)."""
 
     name: str
     frame: Transform
     lower: np.ndarray
     upper: np.ndarray
+    round_floor: bool = False
 
     def corners(self) -> np.ndarray:
         signs = np.array([[i, j, k] for i in (0, 1) for j in (0, 1) for k in (0, 1)], dtype=float)

@@ -191,7 +191,7 @@ class GroundTruthPerception(Perception):
             if kind is None or not kind.container or kind.interior is None:
                 return None
             lower, upper = (np.array(v, dtype=float) for v in kind.interior)
-            return Receptacle(name, self.gt.pose(name), lower, upper)
+            return Receptacle(name, self.gt.pose(name), lower, upper, kind.round_floor)
         if entity.kind == "part" and entity.category == "drawer":
             body = entity.bodies[0]
             lower, upper = drawer_interior(self.world.model, name)

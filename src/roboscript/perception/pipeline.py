@@ -788,4 +788,5 @@ def interior_of(points: np.ndarray, outline: np.ndarray, kind: ObjectType, name:
     middle = local[np.all(np.abs(local[:, :2]) < inner_half * 0.6, axis=1)]
     floor = float(middle[:, 2].min()) if len(middle) >= 5 else lz
     top = max(height + (uz - bounds_upper[2]), floor + 0.05)
-    return Receptacle(name, frame, np.array([-inner_half[0], -inner_half[1], floor]), np.array([*inner_half, top]))
+    lower, upper = np.array([-inner_half[0], -inner_half[1], floor]), np.array([*inner_half, top])
+    return Receptacle(name, frame, lower, upper, kind.round_floor)
