@@ -38,6 +38,7 @@ PLACE_LIFTS = (0.0, 0.01, 0.02, 0.05, 0.1)
 PLACE_LOW_LIFTS = PLACE_LIFTS[:3]  # tried first on the first few spots (PLACE_LOW_SPOTS)
 PLACE_LOW_SPOTS = 4
 PLACE_LOW_RADIUS = 0.03  # metres from the first spot within which those spots lie
+PLACE_LOW_SPACING = 0.01  # metres those spots stand apart at least (turned the same way)
 PLACE_RETREAT = 0.10  # metres a place pose should leave straight above it: the customary pre-place approach and retreat
 # Where no upright pose reaches any spot (a drawer beneath another, at the edge of the arm's reach), the hand leans
 # this far (degrees) toward the spot's open side, the held object with it, and lets go of it there: an object
@@ -198,26 +199,24 @@ class Placer:
         q = self.motion.sync()
         found = _Search()
         distinct = _distinct(spots, spacing)
-        tried: set[tuple[int, float, float]] = set()
+        tried: set[tuple[float, ...]] = set()
         # A short drop on one of the first few spots beats a long one on the first: a cup let go 5 cm above a plate
         # (the hand's first spot walled in lower down by the arm's own links) caught on the opening fingers.
         # Not far off, though: beyond a few centimetres the packing order counts for more (a gelatin box put 6 cm
         # into a basket's middle left no room for the last cup).
-        beside = [
-            k
-            for k in range(min(PLACE_LOW_SPOTS, len(distinct)))
-            if _apart(distinct[k], distinct[0]) <= PLACE_LOW_RADIUS
-        ]
-        for indices, lifts in ((beside, PLACE_LOW_LIFTS), (range(len(distinct)), PLACE_LIFTS)):
-            for index in indices:
-                spot = distinct[index]
+        # The spots beside the first are told apart more finely than repeats are: on a plate's round middle all
+        # the spots a cup fits lie within a few centimetres of each other.
+        beside = [s for s in _distinct(spots, PLACE_LOW_SPACING) if _apart(s, spots[0]) <= PLACE_LOW_RADIUS]
+        for candidates, lifts in ((beside[:PLACE_LOW_SPOTS], PLACE_LOW_LIFTS), (distinct, PLACE_LIFTS)):
+            for index, spot in enumerate(candidates):
                 found.tried = max(found.tried, index + 1)
                 for lift, lean in [(lift, lean) for lift in lifts for lean in leans]:
                     if budget <= 0:
                         return found
-                    if (index, lift, lean) in tried:
+                    key = (*np.round(spot.center, 4), round(spot.yaw, 4), lift, lean)
+                    if key in tried:
                         continue
-                    tried.add((index, lift, lean))
+                    tried.add(key)
                     budget -= len(spot.turns)
                     if self._try(found, carried, spot, (lift, lean), q, search, retreat):
                         return found
