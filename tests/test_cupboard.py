@@ -167,6 +167,17 @@ def test_a_door_swung_to_the_edge_of_reach_stops_where_the_hand_can_still_back_o
     assert record.success, (record.error, record.checks)
 
 
+@pytest.mark.parametrize("robot", ["panda", "ur5e"])
+def test_a_handle_swung_to_the_edge_of_reach_is_taken_again_to_swing_its_door_as_far_as_the_arm_goes(robot):
+    # The program swings the door towards 90 degrees, the arm stops it near 70, and the program swings again for
+    # the rest. From the door's head-on grasp it opens only 6 degrees further (the grasp was refused: "a grasp
+    # that cannot pull is no use"), and the UR5e's other grasps start their approach out of reach.
+    program = (CORPUS / "helpers" / "generated" / "into_cupboard.gen_090.py").read_text()
+    record = run_trial(TrialSpec("into_cupboard.gen_090", robot, 0, 0, program, suite="generated"))
+    assert "no grasp opens it further" in record.output
+    assert record.success, (record.error, record.checks)
+
+
 def test_a_low_thing_gripped_tilted_down_goes_into_the_compartment_with_the_hand_levelled():
     # The UR5e takes the wooden bar (4 cm high) from the side tilted 52 degrees down; pitched like that, the wrist
     # meets the panel over the compartment at every spot.

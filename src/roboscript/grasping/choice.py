@@ -104,7 +104,7 @@ class GraspChooser:
         object (a handle)."""
         if name not in self.perception.objects():
             raise failure
-        why = str(failure).split("; first failure")[0]
+        why = str(failure).split("; the nearest to it")[0]
         pose = self.adaptive(name, GraspPreferences(approach=np.array([0.0, 0.0, -1.0])))
         notice(f"{tool}: {why}; taking the best grasp of its shape{said} instead")
         return pose
@@ -175,10 +175,11 @@ class GraspChooser:
         also be able to open its drawer or door (:meth:`_opening_reach`): the wrist turned near its limit on one
         of the two turns cannot follow a door's arc."""
         q = self.motion.sync()
-        errors: list[str] = []
+        errors: list[tuple[int, str]] = []  # (how far the grasp got: 0 no IK ... 4 no path, why not further)
         fallback: Transform | None = None
         handle = kind_of(name) == "handle"
         short_pull: tuple[float, Transform] | None = None
+        little_pull: tuple[float, Transform, str] | None = None
         walled: Transform | None = None
         short_approach: Transform | None = None
         with self.contacts.touching(self.contacts.not_yet_allowed([name], self.held())):
@@ -193,39 +194,53 @@ class GraspChooser:
                             pose, PRE_GRASP_DISTANCE, q, attempts=8, max_attempts=40, branches=3, first=not handle
                         )
                     except IKError as exc:
-                        errors.append(str(exc))
+                        errors.append((0, str(exc)))
                         continue
                     if options[0][1] is None:
                         # Reachable, but grasp() will have to plan its final approach: kept as a last resort.
                         fallback = fallback or pose
-                        errors.append("the straight approach from the pre-grasp pose is blocked on every IK branch")
+                        errors.append((1, "the straight approach from the pre-grasp pose is blocked on every branch"))
                         continue
                     approach, pulled, why = self._branch_that_opens(name, pose, options)
                     if why:
-                        errors.append(why)
+                        errors.append((2, why))
                         if pulled >= PULL_LEAST and (short_pull is None or pulled > short_pull[0]):
                             short_pull = (pulled, pose)
+                        elif pulled > 0.0 and (little_pull is None or pulled > little_pull[0]):
+                            little_pull = (pulled, pose, why)
                         continue
                     if self.motion.approach_length(approach) < PRE_GRASP_DISTANCE - 1e-3:
                         # Moved in along a shortened line: kept, in case no grasp has the full approach.
-                        errors.append("the straight approach is free only part of the way")
+                        errors.append((3, "the straight approach is free only part of the way"))
                         short_approach = short_approach or pose
                         continue
                     if not self.motion.connects(q, approach[0]):
                         # IK reaches its pre-grasp, but no path was found to it: a configuration walled in by
                         # the table. Kept, in case the planner's retries would find one.
-                        errors.append("no path was found to the pre-grasp configuration")
+                        errors.append((4, "no path was found to the pre-grasp configuration"))
                         walled = walled or pose
                         continue
                     return pose
         # The last resorts, best first. A handle grasp that pulls less than PULL_CHECK is kept over one that
-        # cannot move in straight: the program may not pull that far (a preferred approach costs reach).
-        for kept in (walled, short_approach, short_pull[1] if short_pull else None, fallback):
+        # cannot move in straight: the program may not pull that far (a preferred approach costs reach). One that
+        # pulls less than PULL_LEAST comes after them, with a notice; one with no straight way in, last.
+        for kept in (walled, short_approach, short_pull[1] if short_pull else None):
             if kept is not None:
                 return kept
+        if little_pull is not None:
+            # A door swung to the edge of the arm's reach opens little further from any grasp: the one that opens
+            # it furthest still takes the handle, to close it or to open it as far as the arm goes; it moves in
+            # straight, where the last resort below does not.
+            notice(f"{kind} grasp of {name!r}: {little_pull[2]}; no grasp opens it further")
+            return little_pull[1]
+        if fallback is not None:
+            return fallback
+        # The failure of the grasp that got furthest says most: a handle's head-on grasp is reached, but its door
+        # swings no further from it, where the other grasps have no IK at all.
+        nearest = max(errors, key=lambda e: e[0])[1] if errors else "none"
         raise PlanningError(
             f"none of the {len(candidates)} {kind} grasps of {name!r} (each also turned half a turn) can be reached "
-            f"without collision; first failure: {errors[0] if errors else 'none'}",
+            f"without collision; the nearest to it: {nearest}",
         )
 
     def _branch_that_opens(

@@ -321,9 +321,28 @@ class MotionPlanner:
         """Moves to the start of whichever of ``options`` (from :meth:`approaches`) a planned path reaches: each IK
         branch with a clear line is a goal, so where none leads to one branch's start (walled in by the table on a
         6-joint arm) the next is tried. Returns that option."""
-        start = Transform(target.position - distance * target.rotation[:, 2], target.quaternion)
-        starts = [line[0] if line is not None else self.ik(start, goal) for goal, line in options]
-        return options[self.move_to_any(starts)]
+        starts: list[tuple[int, np.ndarray]] = []
+        failure: IKError | None = None
+        for index, (goal, line) in enumerate(options):
+            if line is not None:
+                starts.append((index, line[0]))
+                continue
+            try:
+                starts.append((index, self._approach_start(target, distance, goal)))
+            except IKError as exc:  # this branch's way in starts out of reach; another's may not
+                failure = failure or exc
+        if failure is not None and not starts:
+            raise failure
+        return options[starts[self.move_to_any([q for _, q in starts])][0]]
+
+    def _approach_start(self, target: Transform, distance: float, goal: np.ndarray) -> np.ndarray:
+        """Where an approach with no clear straight line starts: the pre-grasp ``distance`` back along the
+        approach axis, or half as far where that is out of reach (a handle at the edge of the arm's reach)."""
+        axis = target.rotation[:, 2]
+        try:
+            return self.ik(Transform(target.position - distance * axis, target.quaternion), goal)
+        except IKError:
+            return self.ik(Transform(target.position - distance / 2 * axis, target.quaternion), goal)
 
     def finish_approach(self, option: tuple[np.ndarray, np.ndarray | None], target: Transform) -> None:
         """Moves in along the option's straight line to ``target``; where it had none, or the line is blocked now
