@@ -101,7 +101,8 @@ class Placer:
         one planner run reaches (see :meth:`_search`), or failing a path, one that leaves the retreat; the same
         with the hand leaning toward the spot's open side (:data:`PLACE_LEANS`); an upright pose that leaves the
         longest retreat; an upright pose found by a wider IK search; a leaning pose that leaves the longest
-        retreat."""
+        retreat. Into a compartment, with the hand pitched down, a levelled pose that leaves the retreat comes
+        first."""
         # Spots are where the middle of the object's footprint goes (for a curved banana lying turned, not the
         # middle of its world-aligned box): the hand turns about that.
         footprint_center = self.perception.footprint(name)[0]
@@ -109,16 +110,22 @@ class Placer:
         pivot = np.array([footprint_center[0], footprint_center[1], box.center[2]])
         carried = _Carried(tcp, pivot, box.corners() - pivot)
         spots, where, limits = request.spots, request.where, (request.spacing, request.budget, request.retreat)
-        upright = self._search(carried, spots, PLACE_IK_QUICK, (0.0,), *limits)
-        best = upright.leaving
         leaning: _Search | None = None
-        leans = PLACE_LEANS if request.retreat[2] > 0.5 else _levelling(tcp)
-        if best is None and leans:
+        best = None
+        if request.retreat[2] <= 0.5 and _levelling(tcp):
+            # Into a compartment, a hand pitched down (a low object held from the side, tilted so that the hand
+            # clears the table) lets go at a slant and backs out along it, the fingers sweeping up through where
+            # the object lies (a lime hooked out of the cupboard): levelled first, most level first.
+            leaning = self._search(carried, spots, PLACE_IK_QUICK, _levelling(tcp)[::-1], *limits)
+            best = leaning.leaving
+        upright = _Search() if best is not None else self._search(carried, spots, PLACE_IK_QUICK, (0.0,), *limits)
+        best = best or upright.leaving
+        if best is None and leaning is not None:
+            best = upright.longest
+        elif best is None and request.retreat[2] > 0.5:
             # A pose the hand cannot back out of straight up would leave a program's own approach from above
-            # (or its retreat) no room: leaning out from under what stands over the spot is better. A hand
-            # pitched down into a compartment (a low object held from the side, tilted so that the hand clears
-            # the table) brings the wrist up against the panel above: levelled, it tilts the object instead.
-            leaning = self._search(carried, spots, PLACE_IK_QUICK, leans, *limits)
+            # (or its retreat) no room: leaning out from under what stands over the spot is better.
+            leaning = self._search(carried, spots, PLACE_IK_QUICK, PLACE_LEANS, *limits)
             best = leaning.leaving or upright.longest
         if best is None:
             # The quick screen may miss the one IK branch that clears the furniture (a mug going into a drawer
