@@ -73,6 +73,7 @@ class _Search:
     tried: int = 0
     errors: list[str] = dataclasses.field(default_factory=list)
     screens: int = PLACE_PATH_SCREENS  # planner runs left to check that a pose can be reached
+    connected: bool = False  # whether a planner run reached ``leaving``
 
 
 class Placer:
@@ -115,14 +116,16 @@ class Placer:
         if request.retreat[2] <= 0.5 and _levelling(tcp):
             # Into a compartment, a hand pitched down (a low object held from the side, tilted so that the hand
             # clears the table) lets go at a slant and backs out along it, the fingers sweeping up through where
-            # the object lies (a lime hooked out of the cupboard): levelled first, most level first.
+            # the object lies (a lime hooked out of the cupboard): levelled first, most level first, where a
+            # planner run reaches it (one that does not may be walled in, and the pitched hand's is not).
             leaning = self._search(carried, spots, PLACE_IK_QUICK, _levelling(tcp)[::-1], *limits)
-            best = leaning.leaving
+            best = leaning.leaving if leaning.connected else None
         upright = _Search() if best is not None else self._search(carried, spots, PLACE_IK_QUICK, (0.0,), *limits)
-        best = best or upright.leaving
         if best is None and leaning is not None:
-            best = upright.longest
-        elif best is None and request.retreat[2] > 0.5:
+            best = (upright.leaving if upright.connected else None) or leaning.leaving or upright.leaving
+            best = best or upright.longest
+        best = best or upright.leaving
+        if best is None and leaning is None and request.retreat[2] > 0.5:
             # A pose the hand cannot back out of straight up would leave a program's own approach from above
             # (or its retreat) no room: leaning out from under what stands over the spot is better.
             leaning = self._search(carried, spots, PLACE_IK_QUICK, PLACE_LEANS, *limits)
@@ -255,7 +258,7 @@ class Placer:
             # As a grasp's pre-grasp is screened: a configuration IK reaches may be walled in (a UR5e branch turned
             # back over its shoulder beside the basket), and no path reaches it.
             if self.motion.connects(q, goal):
-                found.leaving = (pose, goal, spot)
+                found.leaving, found.connected = (pose, goal, spot), True
                 return True
         # Leaving the full retreat though no path was found to it in one planner run: the motion's own retries may
         # find one.
