@@ -113,23 +113,25 @@ class Placer:
         spots, where, limits = request.spots, request.where, (request.spacing, request.budget, request.retreat)
         leaning: _Search | None = None
         best = None
-        if request.retreat[2] <= 0.5 and _levelling(tcp):
+        levelling = _levelling(tcp) if request.retreat[2] <= 0.5 else ()
+        if levelling:
             # Into a compartment, a hand pitched down (a low object held from the side, tilted so that the hand
             # clears the table) lets go at a slant and backs out along it, the fingers sweeping up through where
             # the object lies (a lime hooked out of the cupboard): levelled first, most level first, where a
             # planner run reaches it (one that does not may be walled in, and the pitched hand's is not).
-            leaning = self._search(carried, spots, PLACE_IK_QUICK, _levelling(tcp)[::-1], *limits)
+            leaning = self._search(carried, spots, PLACE_IK_QUICK, levelling[::-1], *limits)
             best = leaning.leaving if leaning.connected else None
         upright = _Search() if best is not None else self._search(carried, spots, PLACE_IK_QUICK, (0.0,), *limits)
         if best is None and leaning is not None:
-            best = (upright.leaving if upright.connected else None) or leaning.leaving or upright.leaving
-            best = best or upright.longest
-        best = best or upright.leaving
-        if best is None and leaning is None and request.retreat[2] > 0.5:
-            # A pose the hand cannot back out of straight up would leave a program's own approach from above
-            # (or its retreat) no room: leaning out from under what stands over the spot is better.
-            leaning = self._search(carried, spots, PLACE_IK_QUICK, PLACE_LEANS, *limits)
-            best = leaning.leaving or upright.longest
+            connected = upright.leaving if upright.connected else None
+            best = connected or leaning.leaving or upright.leaving or upright.longest
+        elif best is None:
+            best = upright.leaving
+            if best is None and request.retreat[2] > 0.5:
+                # A pose the hand cannot back out of straight up would leave a program's own approach from above
+                # (or its retreat) no room: leaning out from under what stands over the spot is better.
+                leaning = self._search(carried, spots, PLACE_IK_QUICK, PLACE_LEANS, *limits)
+                best = leaning.leaving or upright.longest
         if best is None:
             # The quick screen may miss the one IK branch that clears the furniture (a mug going into a drawer
             # pulled 20 cm, at the edge of the Panda's reach): the spots are searched again, widely.
