@@ -151,6 +151,7 @@ class FrankyDriver(Driver):
             franky.JointWaypoint(franky.JointState(q[order], dq[order]), minimum_time=franky.Duration(ms))
             for ms, q, dq in zip(*waypoint_samples(trajectory, WAYPOINT_SPACING), strict=True)
         ]
+        self._stopping = False  # a stop asked for an earlier motion is not this one's
         try:
             with self._lock:
                 self._robot.move(franky.JointWaypointMotion(waypoints), asynchronous=True)
@@ -172,11 +173,16 @@ class FrankyDriver(Driver):
             return GoalStatus(state, detail + ("" if recovered else "; libfranka could not recover from it"))
         if finished:
             self._stopping = False
+        elif self._stopping:  # a stop sent before libfranka's control loop ran preempts nothing: send it again
+            self._stop()
         return GoalStatus("succeeded") if finished else GoalStatus("active")
 
     def stop_motion(self) -> None:
         """Stops the running motion, if any (the arm holds where it is)."""
         self._stopping = True
+        self._stop()
+
+    def _stop(self) -> None:
         try:
             with self._lock:
                 self._robot.stop()
