@@ -163,3 +163,31 @@ def test_what_was_seen_of_a_part_the_hand_moved_is_forgotten_and_the_rest_rememb
     after_the_push = source.contents()
     assert len(after_the_push.fixed["cabinet.drawer_0"]) == 0  # forgotten: the drawer is no longer there
     assert len(after_the_push.fixed[UNKNOWN]) == 50  # the wall behind the arm is still remembered
+
+
+def _inside_a_box(scene, body: str, point: np.ndarray) -> bool:
+    model, data = scene.model, scene.data
+    geoms = [g for g in range(model.ngeom) if model.body(model.geom_bodyid[g]).name == body]
+    return any(np.all(np.abs(point - data.geom_xpos[g]) <= model.geom_size[g] + 1e-3) for g in geoms)
+
+
+def test_a_cabinets_unseen_sides_and_back_are_solid_and_its_inside_free():
+    """No camera sees the outer face of this cabinet's left side or its back; a thing carried past them must still
+    find them in the way (the planning scene lays its panels), while the compartment behind its door stays free."""
+    from roboscript.bench.tasks import get_task
+
+    backend = MujocoBackend(get_task("into_cupboard.gen_083", suite="generated").world, robot="panda")
+    try:
+        api = build_tools(backend, perception="gt-2d")
+        api.namespace()["detect_objects"]()
+        scene = api.motion.scene
+        truth = backend.ground_truth.box("cabinet")  # shut: its front at y = 0.37, its back at 0.73
+        x_side, y_back = truth.lower[0] + 0.008, truth.upper[1] - 0.008
+        for z in (0.9, 1.0, 1.1):
+            for y in (0.45, 0.55, 0.65):
+                assert _inside_a_box(scene, "fixed/cabinet", np.array([x_side, y, z])), (y, z)
+            assert _inside_a_box(scene, "fixed/cabinet", np.array([0.0, y_back, z])), z
+        assert not _inside_a_box(scene, "fixed/cabinet", np.array([0.0, 0.55, 1.1]))  # behind the door
+        assert not _inside_a_box(scene, "fixed/cabinet", np.array([x_side - 0.03, 0.55, 1.0]))  # beside it
+    finally:
+        backend.close()

@@ -17,6 +17,7 @@ import numpy as np
 
 from roboscript.geometry import Box3D, Transform
 from roboscript.perception.base import Perception, outside, within
+from roboscript.perception.carcass import carcass_facing, carcass_panels
 from roboscript.perception.memory import remembered
 from roboscript.planning.occupancy import VOXEL, occupied_boxes
 from roboscript.planning.scene import PlanningScene
@@ -135,6 +136,19 @@ def filled_below(points: np.ndarray, floor: float, step: float = OBJECT_VOXEL / 
     return np.vstack([points, *fill]) if fill else points
 
 
+def carcasses(perception: Perception) -> dict[str, np.ndarray]:
+    """By furniture name, points filling its carcass's side and back panels (:mod:`roboscript.perception.carcass`)
+    for each piece of furniture whose front could be told."""
+    out = {}
+    for name in perception.furniture():
+        if "." in name:  # a part (drawer, door, handle): its furniture's carcass holds it
+            continue
+        facing = carcass_facing(perception, name)
+        if facing is not None:
+            out[name] = carcass_panels(perception.points(name).points, facing)
+    return out
+
+
 def within_reach(points: np.ndarray, mount: Transform) -> np.ndarray:
     """The points the arm mounted at ``mount`` could touch: within :data:`REACH` of its base and not below the
     surface it stands on (the floor, far walls and the table's legs are out of its reach)."""
@@ -203,7 +217,10 @@ class PerceivedSceneSource:
         contents = sort_points(scene_points, object_points, object_boxes, parts)
         # Only fixed surfaces are remembered: an object's are where it was, and it may be carried off.
         self._memory = {name: points for name, points in contents.fixed.items() if len(points)}
-        return contents
+        fixed = dict(contents.fixed)
+        for name, panels in carcasses(perception).items():
+            fixed[name] = np.vstack([fixed.get(name, np.zeros((0, 3))), within_reach(panels, self.mount)])
+        return SceneContents(contents.objects, fixed)
 
     def state(self) -> np.ndarray:
         """The scene's ``qpos``: objects where they were seen, the robot's joints as read."""
