@@ -169,6 +169,12 @@ class Box3D:
     def intersection(self, other: Box3D) -> Box3D:
         return Box3D(np.maximum(self.lower, other.lower), np.minimum(self.upper, other.upper))
 
+    def iou(self, other: Box3D) -> float:
+        """Intersection over union of the two boxes' volumes (0 where they do not meet)."""
+        inter = self.intersection(other).volume
+        union = self.volume + other.volume - inter
+        return inter / union if union > 0 else 0.0
+
     def union(self, other: Box3D) -> Box3D:
         return Box3D(np.minimum(self.lower, other.lower), np.maximum(self.upper, other.upper))
 

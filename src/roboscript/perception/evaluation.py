@@ -18,9 +18,7 @@ from roboscript.sim.ground_truth import GroundTruth
 
 def box_iou(a: Box3D, b: Box3D) -> float:
     """Intersection over union of two axis-aligned boxes."""
-    inter = a.intersection(b).volume
-    union = a.volume + b.volume - inter
-    return inter / union if union > 0 else 0.0
+    return a.iou(b)
 
 
 def source_of(boxes: Sequence[int], detections: Sequence[Sequence[Detection2D]]) -> int:

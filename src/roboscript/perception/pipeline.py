@@ -84,6 +84,7 @@ HANDLE_PROUD = 0.004  # metres out of its front from which a point is the handle
 MOVED = 0.005  # metres the gripper must have moved since a look for another look to be worth it
 SETTLE_INSET = 0.01  # metres: the footprint a let-go object falls within, shrunk by this; smaller drops are none
 JUMP = 0.05  # metres an untouched object's find may lie from where it stood before it must show it has gone
+SAME_PLACE = 0.5  # box IoU above which a find stands where another known object does: it is that one
 OPEN_DRAWER = 0.04  # metres a drawer's front must stand out of its cabinet's for it to count as open
 
 
@@ -269,6 +270,7 @@ class PipelinePerception(Perception):
                 counter += 1
             names[k] = f"{base}_{counter}"
             taken.add(names[k])
+        missed: set[str] = set()
         for k, instance in enumerate(found):
             if names[k] in self._carried:
                 # Its surfaces in this look are not obstacles: where the fit is not believed, they stand out of the
@@ -280,11 +282,31 @@ class PipelinePerception(Perception):
                 before = self.store.get(names[k])
                 if before is not None and not self._may_have_gone(before, fresh, seen):
                     continue
+                if before is not None and self._held_by_another(fresh, seen):
+                    missed.add(names[k])  # what was let go and not seen again settles where it was let go
+                    continue
                 # Seen by fewer cameras than before (the arm in the way, a detector's miss) where it stood still:
                 # the earlier look saw more of it (a mug's rim from one side only has no grasp pairs).
                 still = before is not None and names[k] not in self._let_go and _part_of(fresh, before)
                 self.store[names[k]] = before if still and fresh.views < before.views else fresh
-        return set(names.values())
+        return set(names.values()) - missed
+
+    def _held_by_another(self, fresh: SeenObject, seen: Observation) -> bool:
+        """Whether ``fresh`` is where another known object of another phrase stands, one the robot has not moved
+        and this look does not find elsewhere: two things do not fill one place, so the detector put this name on
+        that one (a wooden bar let go inside a cabinet, out of every camera's sight, found on the wooden block)."""
+
+        def found_elsewhere(other: SeenObject) -> bool:
+            return any(i.label == other.phrase and i.box.iou(other.box) <= SAME_PLACE for i in seen.instances)
+
+        return any(
+            other.phrase != fresh.phrase
+            and other.name not in self._let_go
+            and other.name not in self._carried
+            and fresh.box.iou(other.box) > SAME_PLACE
+            and not found_elsewhere(other)
+            for other in self.store.values()
+        )
 
     def _may_have_gone(self, before: SeenObject, fresh: SeenObject, seen: Observation) -> bool:
         """Whether ``fresh``, found :data:`JUMP` or more from where ``before`` stood, may be it. The robot has not
