@@ -22,9 +22,11 @@ def test_robot_only_options_without_a_robot_say_how_to_name_one(tmp_path):
     run = _exec(tmp_path, "--dry-run")
     assert run.returncode == 2
     assert (
-        "--dry-run only apply to a running robot: add --backend ros --master URI, or --backend franky "
+        "--dry-run applies only to a running robot: add --backend ros --master URI, or --backend franky "
         "--robot-config FILE" in run.stderr
     )
+    run = _exec(tmp_path, "--dry-run", "--log-dir", str(tmp_path / "run"))
+    assert run.returncode == 2 and "--dry-run, --log-dir apply only to a running robot" in run.stderr
 
 
 @pytest.mark.parametrize(

@@ -62,7 +62,8 @@ def robot_requested(args: argparse.Namespace) -> bool:
         given = [f"--{name.replace('_', '-')}" for name in ROBOT_ONLY if getattr(args, name, None)]
         if given:
             raise UsageError(
-                f"{', '.join(given)} only apply to a running robot: add --backend ros --master URI, or "
+                f"{', '.join(given)} {'applies' if len(given) == 1 else 'apply'} only to a running robot: add "
+                "--backend ros --master URI, or "
                 "--backend franky --robot-config FILE"
             )
         return False
