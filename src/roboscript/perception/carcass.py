@@ -6,7 +6,8 @@ planning scene has the cabinet's top standing on nothing at its sides, and a thi
 by its end, sticking out ahead of the hand) is planned straight through the side panel. A carcass has panels at its
 sides and back whether or not they were seen: they are laid, :data:`PANEL` thick, inside the faces of the box its
 seen points fill in the cabinet's own frame (x out of its front, which the drawers' joints or a door's compartment
-tell).
+tell). Its front is its top's front edge, seen from above: an open drawer's tray, whose points go with the
+carcass's, stands out of its front and would carry the side panels out with it, into the arm's way.
 """
 
 from __future__ import annotations
@@ -17,7 +18,8 @@ import numpy as np
 
 from roboscript.errors import RoboScriptError
 from roboscript.perception.base import Perception
-from roboscript.perception.compartments import PANEL
+from roboscript.perception.compartments import MIN_TOP_POINTS, PANEL
+from roboscript.perception.furniture_parts import LEVEL, TOP_BAND
 
 log = logging.getLogger(__name__)
 
@@ -55,22 +57,34 @@ def carcass_frame(facing: np.ndarray) -> np.ndarray:
     return np.column_stack([out, np.cross(up, out), up])
 
 
-def carcass_panels(points: np.ndarray, facing: np.ndarray, spacing: float = SPACING) -> np.ndarray:
-    """Points (N, 3) filling the side and back panels of the carcass whose seen surface is ``points`` (M, 3) and
-    whose front faces ``facing``: each panel :data:`PANEL` thick inside the face of the box the points fill along
-    the carcass's own axes, from their lowest to their highest. Empty where fewer than ten points were seen."""
+def carcass_panels(
+    points: np.ndarray, normals: np.ndarray, facing: np.ndarray, spacing: float = SPACING
+) -> np.ndarray:
+    """Points (N, 3) filling the side and back panels of the carcass whose seen surface is ``points`` (M, 3) with
+    outward ``normals`` and whose front faces ``facing``: each panel :data:`PANEL` thick inside the faces of the
+    box the points fill along the carcass's own axes, from the lowest seen point up to the top, and no further
+    forward than the top's front edge. Empty where the top was seen too little to tell its edges."""
     points = np.asarray(points, dtype=float).reshape(-1, 3)
-    if len(points) < 10:
+    normals = np.nan_to_num(np.asarray(normals, dtype=float).reshape(-1, 3))
+    up = normals[:, 2] > LEVEL
+    if up.sum() < MIN_TOP_POINTS:
+        return np.zeros((0, 3))
+    top_height = float(np.percentile(points[up, 2], 99))
+    top = up & (points[:, 2] > top_height - TOP_BAND)
+    if top.sum() < MIN_TOP_POINTS:
         return np.zeros((0, 3))
     rotation = carcass_frame(facing)
     local = points @ rotation
+    # Its sides and back as far as any of its points go (the top's edges are seen thinly); its front where its
+    # top's front edge is.
     lower = np.percentile(local, EDGE, axis=0)
     upper = np.percentile(local, 100 - EDGE, axis=0)
-    lower[2], upper[2] = local[:, 2].min(), local[:, 2].max()
+    upper[0] = float(np.percentile(local[top, 0], 100 - EDGE))
+    lower[2], upper[2] = float(points[:, 2].min()), top_height
     panels = [
-        (np.array([lower[0], lower[1], lower[2]]), np.array([upper[0], lower[1] + PANEL, upper[2]])),  # right side
-        (np.array([lower[0], upper[1] - PANEL, lower[2]]), np.array([upper[0], upper[1], upper[2]])),  # left side
-        (np.array([lower[0], lower[1], lower[2]]), np.array([lower[0] + PANEL, upper[1], upper[2]])),  # back
+        (np.array([lower[0], lower[1], lower[2]]), np.array([upper[0], lower[1] + PANEL, upper[2]])),  # one side
+        (np.array([lower[0], upper[1] - PANEL, lower[2]]), np.array([upper[0], upper[1], upper[2]])),  # the other
+        (np.array([lower[0], lower[1], lower[2]]), np.array([lower[0] + PANEL, upper[1], upper[2]])),  # the back
     ]
     filled = [_grid(low, high, spacing) for low, high in panels if np.all(high > low)]
     if not filled:

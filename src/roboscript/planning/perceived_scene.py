@@ -145,7 +145,8 @@ def carcasses(perception: Perception) -> dict[str, np.ndarray]:
             continue
         facing = carcass_facing(perception, name)
         if facing is not None:
-            out[name] = carcass_panels(perception.points(name).points, facing)
+            seen = perception.points(name)
+            out[name] = carcass_panels(seen.points, seen.normals, facing)
     return out
 
 
