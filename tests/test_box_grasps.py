@@ -100,3 +100,23 @@ def test_a_round_thing_wider_than_the_opening_is_not_gripped_slantwise_where_its
     can = _Seen(near_half, 0.0, half, 0.034)
     with pytest.raises(GraspError, match="wider than the gripper"):
         central_lift_grasps(can, "tuna_can", "center", MAX_WIDTH, BASE)
+
+
+def test_the_far_turns_come_round_the_object_beyond_the_near_ones_square_to_its_sides_among_them():
+    """A cube nearly as wide as the opening, a bowl beside it on the robot's side: the near approaches are all
+    blocked, so the tool asks for the turns beyond them, which include the side-on ones out there."""
+    yaw, half = math.radians(47), np.array([0.038, 0.038])  # square to one side 85 degrees off the heading
+    points = _top_face(yaw, half, 0.057, lambda x, y: True)
+    seen = _Seen(points, yaw, half, 0.057)
+    heading = math.atan2(CENTER[1] - BASE[1], CENTER[0] - BASE[0])
+
+    def turns(grasps):
+        approaches = [g.rotation[:, 2] for g in grasps]
+        return {round(math.remainder(math.atan2(a[1], a[0]) - heading, 2 * math.pi), 2) for a in approaches}
+
+    near = turns(horizontal_grasps(seen, "rubiks_cube", None, 0.08, BASE))
+    far = turns(horizontal_grasps(seen, "rubiks_cube", None, 0.08, BASE, far=True))
+    assert max(abs(t) for t in near) <= 1.31
+    assert far and min(abs(t) for t in far) > 1.3 and max(abs(t) for t in far) <= 1.91
+    side_on = [t for t in far if abs(math.remainder(t + heading - yaw, math.pi / 2)) < 0.02]
+    assert side_on  # closing square across the cube: the only way it fits between the fingers

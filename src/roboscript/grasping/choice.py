@@ -89,9 +89,14 @@ class GraspChooser:
         # A preferred approach is preferred, not demanded: the approaches the tool would take by itself follow (a
         # drawer pulled out brings its handle to where only a wider turn reaches it).
         failure: GraspError | PlanningError | None = None
-        for wanted in [approach] if approach is None else [approach, None]:
+        tries = [(approach, False)] if approach is None else [(approach, False), (None, False)]
+        if kind_of(name) != "handle":  # a handle is taken square to its front or not at all
+            tries.append((None, True))
+        for wanted, far in tries:
             try:
-                candidates = horizontal_grasps(self.perception, name, wanted, self.gripper.max_width, self.base_xy)
+                candidates = horizontal_grasps(
+                    self.perception, name, wanted, self.gripper.max_width, self.base_xy, far=far
+                )
                 return self.first_reachable(name, candidates, "horizontal")
             except (GraspError, PlanningError) as exc:
                 failure = failure or exc

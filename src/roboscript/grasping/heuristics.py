@@ -119,6 +119,9 @@ LOW_OBJECT = 0.045
 LOW_TILTS = (0.5, 0.9, 0.0)
 # Turns of the default approach tried, nearest first (radians about world z).
 APPROACH_YAWS = (0.0, 0.35, -0.35, 0.7, -0.7, 1.0, -1.0, 1.3, -1.3)
+# ... and, where none of those is reachable, the turns beyond them that an arm still reaches round to (a cube
+# nearly as wide as the opening, a bowl beside it: only a side-on approach from its far side is free).
+FAR_APPROACH_YAWS = (1.6, -1.6, 1.9, -1.9)
 
 
 # An object whose points fill this much of its footprint rectangle (seen from above) is box-like: a box fills it
@@ -166,12 +169,14 @@ def _extent(points: np.ndarray, direction: np.ndarray) -> float:
     return float(along.max() - along.min())
 
 
-def _with_side_on_yaws(yaws: list[float], approach: np.ndarray, footprint_yaw: float) -> list[float]:
+def _with_side_on_yaws(
+    yaws: list[float], approach: np.ndarray, footprint_yaw: float, nearer: float = 0.0
+) -> list[float]:
     """The approach turns, with those that come at a turned object square to its sides added (within the range
-    tried): closing across a box's narrow side at an angle would need a wider opening."""
+    tried, beyond ``nearer``): closing across a box's narrow side at an angle would need a wider opening."""
     heading = math.atan2(approach[1], approach[0])
     square = [math.remainder(footprint_yaw + k * math.pi / 2 - heading, 2 * math.pi) for k in range(4)]
-    extra = [d for d in square if abs(d) <= max(abs(y) for y in yaws)]
+    extra = [d for d in square if nearer < abs(d) <= max(abs(y) for y in yaws)]
     return sorted({*yaws, *extra}, key=abs)
 
 
@@ -263,6 +268,7 @@ def horizontal_grasps(
     approach_direction: np.ndarray | None,
     max_width: float,
     base_xy: np.ndarray,
+    far: bool = False,
 ) -> list[Transform]:
     """Grasps approaching horizontally; handles are gripped across their bar, other things across their width.
 
@@ -270,6 +276,7 @@ def horizontal_grasps(
     the robot's side; several nearby yaws follow, for the tool layer to pick a reachable one. A given
     ``approach_direction`` is preferred, not demanded: turns of it within :data:`PREFERENCE_CONE` follow it. An
     object too low to be gripped level without the hand touching its support is approached tilted downwards.
+    With ``far``, an object's turns beyond those instead (:data:`FAR_APPROACH_YAWS`, side-on ones among them).
     """
     box = perception.box(name)
     is_handle = kind_of(name) == "handle"
@@ -285,10 +292,11 @@ def horizontal_grasps(
     else:
         # A handle is approached against its part's opening direction, anything else from the robot's side.
         approach = -_handle_normal(perception, name, box) if is_handle else np.append(box.center[:2] - base_xy, 0.0)
-        yaws = list(APPROACH_YAWS)
+        yaws = list(FAR_APPROACH_YAWS if far else APPROACH_YAWS)
     approach = approach / np.linalg.norm(approach)
     if not is_handle and approach_direction is None:
-        yaws = _with_side_on_yaws(yaws, approach, perception.footprint(name)[1])
+        nearer = max(APPROACH_YAWS) if far else 0.0
+        yaws = _with_side_on_yaws(yaws, approach, perception.footprint(name)[1], nearer)
     outward_normal = -approach if approach_direction is None else _handle_normal(perception, name, box)
     candidates = []
     target_z = min(box.center[2], box.lower[2] + 0.06)
