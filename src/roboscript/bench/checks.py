@@ -1,10 +1,10 @@
 """The benchmark's checks, evaluated on ground-truth geometry at the end of a trial.
 
-``in(a, b)``: at least 80% of a's box volume inside b's box (a door's: its compartment's). ``on(a, b)``: a's bottom
-above b's bottom and at least 80% of a's footprint over b's. ``at(a, p)``: a's centre within 0.1 m of p. ``joint(j) >
-x``: a drawer or door opened beyond x (metres or radians). ``near(a, b)``: a beside b, their footprints at most 8 cm
-apart and less than 20% of either's over the other's (neither on nor in the other). Any of them negated (the original's
-``flag_not``): ``not in(a, b)``.
+``in(a, b)``: at least 80% of a's box volume inside b's box (a door's: its compartment's), both in b's own axes.
+``on(a, b)``: a's bottom above b's bottom and at least 80% of a's footprint over b's. ``at(a, p)``: a's centre within
+0.1 m of p. ``joint(j) > x``: a drawer or door opened beyond x (metres or radians). ``near(a, b)``: a beside b, their
+footprints at most 8 cm apart and less than 20% of either's over the other's (neither on nor in the other). Any of
+them negated (the original's ``flag_not``): ``not in(a, b)``.
 """
 
 from __future__ import annotations
@@ -14,6 +14,7 @@ from dataclasses import dataclass
 import numpy as np
 from scipy.spatial import Delaunay, QhullError
 
+from roboscript.geometry import Box3D
 from roboscript.sim.ground_truth import GroundTruth
 
 FRACTION = 0.8
@@ -66,8 +67,7 @@ class Check:
 
     def _relation(self, gt: GroundTruth) -> CheckResult:
         if self.kind == "in":
-            a, b = gt.box(self.subject), gt.holding_box(self.target)
-            inside = a.intersection(b).volume / max(a.volume, 1e-12)
+            inside = _share_inside(gt, self.subject, self.target)
             return CheckResult(self.name, inside >= FRACTION, f"{inside:.0%} of its volume inside")
         if self.kind == "on":
             a, b = gt.box(self.subject), gt.box(self.target)
@@ -125,6 +125,20 @@ def _hull_share(inner: np.ndarray, outer: np.ndarray) -> float:
     within_inner = Delaunay(inner).find_simplex(grid) >= 0
     within_both = within_inner & (Delaunay(outer).find_simplex(grid) >= 0)
     return float(within_both.sum() / max(within_inner.sum(), 1))
+
+
+def _share_inside(gt: GroundTruth, subject: str, target: str) -> float:
+    """The share of ``subject``'s box inside the space ``target`` holds things in (a door's: its compartment), both
+    boxes taken in ``target``'s own axes: a basket turned on the table has empty corners in its world box, and a
+    thing standing there beside it is not in it."""
+    if gt.entity(target).category == "door":
+        frame, lower, upper = gt.compartment(target)
+        holding = Box3D(np.asarray(lower, dtype=float), np.asarray(upper, dtype=float))
+    else:
+        frame = gt.pose(target)
+        holding = gt.local_box(target, frame)
+    box = gt.local_box(subject, frame)
+    return box.intersection(holding).volume / max(box.volume, 1e-12)
 
 
 def _footprint_over(a, b) -> float:
