@@ -1,13 +1,12 @@
 """Whether a look shows a place empty: a camera straight above a floor sees a patch of points, sees through where
-they were, is blocked in front of them, or has the robot in the way; and what a camera at the side sees through
-under a patch is no solid under it."""
+they were, is blocked in front of them, or has the robot in the way."""
 
 from __future__ import annotations
 
 import numpy as np
 
 from roboscript.geometry import Transform
-from roboscript.perception.free_space import THROUGH, carved, seen_through, stands_empty
+from roboscript.perception.free_space import seen_through, stands_empty
 from roboscript.robot_io import CameraFrame
 
 H, W = 60, 80
@@ -54,38 +53,3 @@ def test_a_point_one_view_sees_counts_as_there_though_another_sees_through_it():
     depth = np.full((H, W), 1.0)
     depth[20:41, 30:51] = 0.9
     assert not stands_empty(_patch(), [_frame(np.full((H, W), 1.0)), _frame(depth)], [None, None])
-
-
-def _side(depth: float) -> CameraFrame:
-    """A camera 1 m along x from the patch, 5 cm above the floor, looking back along -x, seeing ``depth`` everywhere."""
-    intrinsics = np.array([[100.0, 0.0, 40.0], [0.0, 100.0, 30.0], [0.0, 0.0, 1.0]])
-    looking = np.array([[0.0, 0.0, -1.0], [1.0, 0.0, 0.0], [0.0, -1.0, 0.0]])  # right: +y, down: -z, ahead: -x
-    pose = Transform.from_rotation(np.array([1.0, 0.0, 0.05]), looking)
-    return CameraFrame("side", None, np.full((H, W), depth, np.float32), None, intrinsics, pose)
-
-
-def _under_the_patch() -> np.ndarray:
-    x, y, z = np.meshgrid(np.linspace(-0.05, 0.05, 6), np.linspace(-0.05, 0.05, 6), np.linspace(0.02, 0.09, 8))
-    return np.column_stack([x.ravel(), y.ravel(), z.ravel()])
-
-
-def test_what_a_side_camera_sees_through_under_a_patch_is_carved_from_its_fill():
-    """A rim seen from above (a bowl's): a camera at the side sees the wall far behind, under the rim, so nothing
-    solid stands there; one that sees something just beyond the fill (a foot) carves nothing."""
-    above = np.full((H, W), 1.0)
-    above[20:41, 30:51] = 0.9
-    fill = _under_the_patch()
-    frames = [_frame(above), _side(2.0)]
-    kept = carved(_patch(), fill, frames, [None, None])
-    assert np.all(kept[:, 2] >= 0.1 - THROUGH)  # only what lies within the depth's tolerance of the rim stays
-    assert len(kept) < len(fill) / 4
-    frames = [_frame(above), _side(0.94)]  # a surface just before the fill: it hides the fill, tells nothing
-    assert len(carved(_patch(), fill, frames, [None, None])) == len(fill)
-
-
-def test_a_look_that_does_not_show_the_surface_where_it_is_carves_nothing():
-    """The object moved since the look (it was let go elsewhere): the look sees through its surface, and says
-    nothing of what is under it now."""
-    fill = _under_the_patch()
-    frames = [_frame(np.full((H, W), 1.0)), _side(2.0)]
-    assert len(carved(_patch(), fill, frames, [None, None])) == len(fill)

@@ -50,21 +50,3 @@ def stands_empty(points: np.ndarray, frames: Sequence[CameraFrame], masks: Seque
     gone = int(np.count_nonzero(through & ~seen))
     told = gone + int(np.count_nonzero(seen))
     return told >= MIN_TOLD and gone >= GONE_SHARE * told
-
-
-def carved(
-    surface: np.ndarray, fill: np.ndarray, frames: Sequence[CameraFrame], masks: Sequence[np.ndarray | None]
-) -> np.ndarray:
-    """``fill`` (points taken as solid inside an object whose seen ``surface`` they lie under) less those some view
-    sees through: under a bowl's rim, beside a plum's round side, a camera sees the table or the foot beyond. Only
-    where the look shows the surface where it is (it is not a look from before the object moved): else ``fill``
-    whole."""
-    fill = np.asarray(fill, dtype=float).reshape(-1, 3)
-    if len(fill) == 0 or not frames:
-        return fill
-    through, seen = seen_through(np.asarray(surface, dtype=float).reshape(-1, 3), frames, masks)
-    shown = int(np.count_nonzero(seen))
-    if shown < MIN_TOLD or shown < GONE_SHARE * (shown + int(np.count_nonzero(through & ~seen))):
-        return fill
-    through, seen = seen_through(fill, frames, masks)
-    return fill[~(through & ~seen)]

@@ -18,7 +18,6 @@ import numpy as np
 from roboscript.geometry import Box3D, Transform
 from roboscript.perception.base import Perception, outside, within
 from roboscript.perception.carcass import carcass_facing, carcass_panels
-from roboscript.perception.free_space import carved
 from roboscript.perception.memory import remembered
 from roboscript.planning.occupancy import VOXEL, occupied_boxes
 from roboscript.planning.scene import PlanningScene
@@ -212,7 +211,9 @@ class PerceivedSceneSource:
             hidden = perception.last_masks()
             scene_points = np.vstack([scene_points, remembered(np.vstack(list(self._memory.values())), frames, hidden)])
         object_boxes = {name: perception.box(name) for name in objects}
-        object_points = {name: self._solid(perception.points(name).points, object_boxes[name]) for name in objects}
+        object_points = {
+            name: filled_below(perception.points(name).points, float(object_boxes[name].lower[2])) for name in objects
+        }
         parts = {name: perception.box(name) for name in perception.furniture()}
         contents = sort_points(scene_points, object_points, object_boxes, parts)
         # Only fixed surfaces are remembered: an object's are where it was, and it may be carried off.
@@ -221,14 +222,6 @@ class PerceivedSceneSource:
         for name, panels in carcasses(perception).items():
             fixed[name] = np.vstack([fixed.get(name, np.zeros((0, 3))), within_reach(panels, self.mount)])
         return SceneContents(contents.objects, fixed)
-
-    def _solid(self, surface: np.ndarray, box: Box3D) -> np.ndarray:
-        """An object's points: its seen surface, filled down to its underside where no camera saw through."""
-        surface = np.asarray(surface, dtype=float).reshape(-1, 3)
-        filled = filled_below(surface, float(box.lower[2]))
-        frames = self.perception.last_frames()
-        fill = carved(surface, filled[len(surface) :], frames, self.perception.last_masks() if frames else [])
-        return np.vstack([surface, fill])
 
     def state(self) -> np.ndarray:
         """The scene's ``qpos``: objects where they were seen, the robot's joints as read."""
