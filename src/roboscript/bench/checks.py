@@ -14,7 +14,6 @@ from dataclasses import dataclass
 import numpy as np
 from scipy.spatial import Delaunay, QhullError
 
-from roboscript.geometry import Box3D
 from roboscript.sim.ground_truth import GroundTruth
 
 FRACTION = 0.8
@@ -128,15 +127,10 @@ def _hull_share(inner: np.ndarray, outer: np.ndarray) -> float:
 
 
 def _share_inside(gt: GroundTruth, subject: str, target: str) -> float:
-    """The share of ``subject``'s box inside the space ``target`` holds things in (a door's: its compartment), both
-    boxes taken in ``target``'s own axes: a basket turned on the table has empty corners in its world box, and a
-    thing standing there beside it is not in it."""
-    if gt.entity(target).category == "door":
-        frame, lower, upper = gt.compartment(target)
-        holding = Box3D(np.asarray(lower, dtype=float), np.asarray(upper, dtype=float))
-    else:
-        frame = gt.pose(target)
-        holding = gt.local_box(target, frame)
+    """The share of ``subject``'s box inside the space ``target`` holds things in (:meth:`GroundTruth.holding_space`),
+    both boxes taken in ``target``'s own axes: a basket turned on the table has empty corners in its world box, and
+    a thing standing there beside it is not in it."""
+    frame, holding = gt.holding_space(target)
     box = gt.local_box(subject, frame)
     return box.intersection(holding).volume / max(box.volume, 1e-12)
 

@@ -19,7 +19,7 @@ import numpy as np
 from roboscript.errors import RoboScriptError
 from roboscript.perception.base import Perception
 from roboscript.perception.compartments import MIN_TOP_POINTS, PANEL
-from roboscript.perception.furniture_parts import LEVEL, TOP_BAND
+from roboscript.perception.furniture_parts import top_face
 
 log = logging.getLogger(__name__)
 
@@ -65,14 +65,11 @@ def carcass_panels(
     box the points fill along the carcass's own axes, from the lowest seen point up to the top, and no further
     forward than the top's front edge. Empty where the top was seen too little to tell its edges."""
     points = np.asarray(points, dtype=float).reshape(-1, 3)
-    normals = np.nan_to_num(np.asarray(normals, dtype=float).reshape(-1, 3))
-    up = normals[:, 2] > LEVEL
-    if up.sum() < MIN_TOP_POINTS:
+    normals = np.asarray(normals, dtype=float).reshape(-1, 3)
+    found = top_face(points[:, 2], normals[:, 2], MIN_TOP_POINTS)
+    if found is None:
         return np.zeros((0, 3))
-    top_height = float(np.percentile(points[up, 2], 99))
-    top = up & (points[:, 2] > top_height - TOP_BAND)
-    if top.sum() < MIN_TOP_POINTS:
-        return np.zeros((0, 3))
+    top, top_height = found
     rotation = carcass_frame(facing)
     local = points @ rotation
     # Its sides and back as far as any of its points go (the top's edges are seen thinly); its front where its

@@ -17,7 +17,7 @@ import numpy as np
 
 from roboscript.geometry import Transform, quat_from_yaw
 from roboscript.perception.base import DRAWER_FRONT_CLEARANCE, ArticulationJoint, Receptacle
-from roboscript.perception.furniture_parts import LEVEL, TOP_BAND
+from roboscript.perception.furniture_parts import top_face
 from roboscript.perception.instances import densest_layer
 
 FRONT_BAND = 0.005  # metres behind the front's plane still taken as the front's own points
@@ -75,14 +75,10 @@ def carcass_front(
 def _top_front_edge(local: np.ndarray, facing: np.ndarray) -> float | None:
     """The front edge (along x) of the highest level face among ``local`` points whose normals, in the same
     frame, are ``facing``; ``None`` where too few points face up there."""
-    up = facing[:, 2] > LEVEL
-    if up.sum() < MIN_TOP_POINTS:
+    found = top_face(local[:, 2], facing[:, 2], MIN_TOP_POINTS)
+    if found is None:
         return None
-    height = float(np.percentile(local[up, 2], 99))
-    top = local[up & (local[:, 2] > height - TOP_BAND)]
-    if len(top) < MIN_TOP_POINTS:
-        return None
-    return float(np.sort(top[:, 0])[-TOP_EDGE_RANK])
+    return float(np.sort(local[found[0], 0])[-TOP_EDGE_RANK])
 
 
 def drawer_receptacle(

@@ -29,6 +29,20 @@ FRONT_SHARE = 0.92  # of a row's height, what its front covers (the rest: the pa
 ROW_SLACK = 0.005  # metres beyond its front's height range that a row's part may still show (the handles' spread)
 
 
+def top_face(heights: np.ndarray, normal_z: np.ndarray, least: int) -> tuple[np.ndarray, float] | None:
+    """Which of a carcass's points (their ``heights`` and their normals' vertical parts ``normal_z``) lie on its
+    top, the highest level face (within :data:`TOP_BAND` of the 99th percentile of those facing up), and that
+    face's height; ``None`` where fewer than ``least`` points face up, or lie on it."""
+    up = np.nan_to_num(normal_z) > LEVEL
+    if up.sum() < least:
+        return None
+    height = float(np.percentile(heights[up], 99))
+    on_top = up & (heights > height - TOP_BAND)
+    if on_top.sum() < least:
+        return None
+    return on_top, height
+
+
 @dataclass(frozen=True)
 class FurnitureRows:
     """A piece of furniture as the description gives it: its name and its rows' kinds from the top down

@@ -200,12 +200,22 @@ class GroundTruth:
         lower, upper = compartment_interior(self.model, door)
         return frame, lower, upper
 
+    def holding_space(self, name: str) -> tuple[Transform, Box3D]:
+        """Where things put into ``name`` are, in its own axes: a door's compartment behind it in its cabinet's
+        frame, else ``name``'s own box in the frame of its pose."""
+        if self.entity(name).category == "door":
+            frame, lower, upper = self.compartment(name)
+            return frame, Box3D(np.asarray(lower, dtype=float), np.asarray(upper, dtype=float))
+        frame = self.pose(name)
+        return frame, self.local_box(name, frame)
+
     def holding_box(self, name: str) -> Box3D:
-        """Where things put into ``name`` are: a door's compartment behind it, else ``name``'s own box."""
+        """Where things put into ``name`` are, world-aligned: a door's compartment behind it, else ``name``'s own
+        box."""
         if self.entity(name).category != "door":
             return self.box(name)
-        frame, lower, upper = self.compartment(name)
-        return Box3D.from_points(frame.apply(Box3D(lower, upper).corners()))
+        frame, inside = self.holding_space(name)
+        return Box3D.from_points(frame.apply(inside.corners()))
 
     def _articulated(self) -> list[str]:
         return [e.name for e in self.world.entities if e.joint >= 0]
