@@ -76,6 +76,15 @@ def test_run_directory_resumes_and_refuses_mixing(tmp_path):
         RunDirectory(tmp_path, provenance("reference", "panda", 3, 0, {"simple_0": "program A"}, "gt", backend="ros"))
 
 
+def test_a_run_resumed_from_other_code_names_every_commit_that_wrote_to_it(tmp_path):
+    first = {**provenance("reference", "panda", 3, 0, {"simple_0": "program A"}, "gt"), "git_commit": "aaa"}
+    RunDirectory(tmp_path, first)
+    RunDirectory(tmp_path, {**first, "git_commit": "bbb"})
+    again = RunDirectory(tmp_path, {**first, "git_commit": "bbb"})
+    assert again.run["git_commit"] == "aaa"  # where it began
+    assert again.run["git_commits"] == ["aaa", "bbb"]
+
+
 def test_a_resumed_run_tries_again_the_trials_that_never_ran_and_counts_each_trial_once(tmp_path):
     """A trial whose world or sandbox could not be set up (a missing library, a full disk) is not the program's
     failure: resuming runs it again, and its new record stands for it (once run on a machine where every trial

@@ -38,7 +38,22 @@ HOSTILE = [
     ("alias = np\nalias.load('MARK')", FORBIDDEN, ".load"),
     ("b = globals()['__builtins__']", FORBIDDEN, "'globals' is not allowed"),
     ("X = type('X', (), {})", FORBIDDEN, "'type' is not allowed"),
-    ("class X:\n    pass", FORBIDDEN, "class definitions are not allowed"),
+    # A program's own classes (codegen/program_classes.py): plain ones run; nothing that hooks the interpreter.
+    ("class X(metaclass=print):\n    pass", FORBIDDEN, "class keywords (metaclass=...) are not allowed"),
+    ("class X(np.ndarray):\n    pass", FORBIDDEN, "may extend only object, an exception"),
+    ("class X(Pose):\n    pass", FORBIDDEN, "may extend only object, an exception"),
+    ("Exception = Pose\nclass X(Exception):\n    pass", FORBIDDEN, "may extend only object"),
+    ("class E(Exception):\n    pass\nE = np\nclass F(E):\n    pass", FORBIDDEN, "may extend only object"),
+    ("class X:\n    def __getattr__(self, name):\n        return 1", FORBIDDEN, "method __getattr__ is not allowed"),
+    ("class X:\n    pass\ns = X.__subclasses__()", FORBIDDEN, ".__subclasses__"),
+    ("class X:\n    def f(self):\n        return self.__class__", FORBIDDEN, ".__class__"),
+    ("class X:\n    def f(self):\n        return self._core\nv = X.f(np)", RUNTIME, "has no attribute 'private_core'"),
+    ("s = super()", FORBIDDEN, "'super' is not allowed"),
+    ("class X(object):\n    base = object", FORBIDDEN, "'object' is not allowed"),
+    ("class X:\n    @print\n    def f(self):\n        pass", FORBIDDEN, "decorators are not allowed"),
+    ("@staticmethod\ndef f():\n    pass", FORBIDDEN, "decorators are not allowed"),
+    ("class __X:\n    pass", FORBIDDEN, "'__X' is not allowed"),
+    ("class E(RuntimeError):\n    robot_failure = True\nraise E('faked')", RUNTIME, "E: faked"),
     ("async def f():\n    pass", FORBIDDEN, "async code is not allowed"),
     ("def f():\n    yield 1", FORBIDDEN, "generators (yield) are not allowed"),
     ("s = '{0.__class__}'.format(1)", FORBIDDEN, "format strings may not name dunder attributes"),
@@ -138,6 +153,52 @@ def test_a_well_behaved_program_runs_with_numpy_and_prints():
     result = execute(program, {}, Limits(timeout=5))
     assert result.outcome is Outcome.OK and result.error is None
     assert result.output == "5.0 ['a', 'b']\n"
+
+
+def test_a_program_may_define_classes_as_an_llm_writes_them():
+    program = """
+class GraspFailed(RuntimeError):
+    def __init__(self, name):
+        super().__init__(f"could not grasp {name}")
+        self.name = name
+
+
+class Robot(object):
+    def __init__(self, lift=0.1):
+        self._held = None
+        self.lift = lift
+
+    @staticmethod
+    def width(box):
+        return box[3] - box[0]
+
+    @property
+    def holding(self):
+        return self._held is not None
+
+    def pick(self, name):
+        self._held = name
+        return self.width([0, 0, 0, 0.05, 0, 0])
+
+    def __repr__(self):
+        return f"Robot({self._held})"
+
+
+robot = Robot()
+print(robot.pick("apple"), robot.holding, robot)
+try:
+    raise GraspFailed("apple")
+except GraspFailed as exc:
+    print(exc, exc.name)
+raise GraspFailed("pear")
+"""
+    from roboscript.codegen.checker import check_program
+
+    assert check_program(program) == []
+    result = run_program(program, {"Pose": Pose}, Limits(timeout=5.0))
+    assert result.output == "0.05 True Robot(apple)\ncould not grasp apple apple\n"
+    assert result.outcome is Outcome.RUNTIME_ERROR  # the program's own error, not the robot's failure
+    assert result.error.startswith("GraspFailed: could not grasp pear (program line 35)")
 
 
 def test_limits_are_restored_after_a_run():

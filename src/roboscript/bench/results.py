@@ -122,6 +122,10 @@ class RunDirectory:
             previous["programs"] = {**previous.get("programs", {}), **run["programs"]}
             previous["trials"] = max(previous.get("trials", 0), run["trials"])
             previous.setdefault("resumed", []).append(run["started"])
+            # A run resumed from other code holds trials of each: every commit that wrote to it is kept.
+            commits = previous.setdefault("git_commits", [previous.get("git_commit")])
+            if run.get("git_commit") not in commits:
+                commits.append(run.get("git_commit"))
             run = previous
         info.write_text(json.dumps(run, indent=2))
         self.run = run

@@ -127,7 +127,9 @@ def undefined_calls(program: str, tools: Mapping[str, inspect.Signature] | None 
 def _callable_names(tree: ast.AST, tools: Mapping[str, inspect.Signature]) -> set[str]:
     """Names a program may call: tools, builtins, the errors it may raise, its own functions, and names it assigns
     (a lambda, an alias)."""
-    return set(tools) | PROGRAM_BUILTINS | set(PROGRAM_ERRORS) | set(_defined_functions(tree)) | _assigned_names(tree)
+    defined = set(_defined_functions(tree))
+    # super: the guard lets a program call it only as super().__init__(...), in a class's method
+    return set(tools) | PROGRAM_BUILTINS | {"super"} | set(PROGRAM_ERRORS) | defined | _assigned_names(tree)
 
 
 def _bind(call: ast.Call, name: str, signature: inspect.Signature, aliases: bool) -> list[Finding]:
@@ -152,11 +154,26 @@ def _bind(call: ast.Call, name: str, signature: inspect.Signature, aliases: bool
 
 
 def _defined_functions(tree: ast.AST) -> dict[str, inspect.Signature]:
+    """What the program defines that a bare name calls: its functions, and its classes with their ``__init__``'s
+    parameters after ``self`` (a class without one takes anything: its base decides). A method is called on an
+    object, never by a bare name: a method named as a tool does not hide the tool."""
+    methods = {id(item) for node in ast.walk(tree) if isinstance(node, ast.ClassDef) for item in node.body}
     functions = {}
     for node in ast.walk(tree):
-        if isinstance(node, ast.FunctionDef):
+        if isinstance(node, ast.FunctionDef) and id(node) not in methods:
             functions[node.name] = _signature_of(node.args)
+        elif isinstance(node, ast.ClassDef):
+            functions[node.name] = _constructor_of(node)
     return functions
+
+
+def _constructor_of(node: ast.ClassDef) -> inspect.Signature:
+    for item in node.body:
+        if isinstance(item, ast.FunctionDef) and item.name == "__init__":
+            signature = _signature_of(item.args)
+            return signature.replace(parameters=list(signature.parameters.values())[1:])
+    P = inspect.Parameter
+    return inspect.Signature([P("args", P.VAR_POSITIONAL), P("kwargs", P.VAR_KEYWORD)])
 
 
 def _signature_of(args: ast.arguments) -> inspect.Signature:

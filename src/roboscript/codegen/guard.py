@@ -12,12 +12,13 @@ import ast
 from dataclasses import dataclass
 
 from roboscript.codegen.checked_calls import uncalled_checked_methods
+from roboscript.codegen.program_classes import class_findings
 
 ALLOWED_NODES: tuple[type[ast.AST], ...] = (
     ast.alias,  # only inside an import, which is reported itself
     ast.Module, ast.Expr, ast.Assign, ast.AugAssign, ast.AnnAssign, ast.Pass, ast.Break, ast.Continue,
     ast.If, ast.For, ast.While, ast.Try, ast.ExceptHandler, ast.Raise, ast.Assert, ast.Delete,
-    ast.FunctionDef, ast.Return, ast.Lambda, ast.arguments, ast.arg, ast.keyword,
+    ast.FunctionDef, ast.ClassDef, ast.Return, ast.Lambda, ast.arguments, ast.arg, ast.keyword,
     ast.Name, ast.Load, ast.Store, ast.Del, ast.Starred, ast.Attribute, ast.Subscript, ast.Slice,
     ast.Constant, ast.List, ast.Tuple, ast.Dict, ast.Set, ast.JoinedStr, ast.FormattedValue,
     ast.ListComp, ast.SetComp, ast.DictComp, ast.GeneratorExp, ast.comprehension,
@@ -58,7 +59,6 @@ FORBIDDEN_NAMES = frozenset(
 _WHY = {
     ast.Import: "imports are not allowed: np and Pose are already there, everything else is a tool",
     ast.ImportFrom: "imports are not allowed: np and Pose are already there, everything else is a tool",
-    ast.ClassDef: "class definitions are not allowed; write functions",
     ast.Global: "global statements are not allowed; pass values as arguments and return results",
     ast.Nonlocal: "nonlocal statements are not allowed; pass values as arguments and return results",
     ast.With: "with statements are not allowed (there are no files or resources to open)",
@@ -84,21 +84,25 @@ class Violation:
 
 def find_violations(tree: ast.AST) -> list[Violation]:
     """Every forbidden construct in ``tree``, in the order they appear."""
-    found: list[Violation] = []
+    classes = class_findings(tree)  # what a program's own classes may hold beyond the rules below
+    found = [Violation(line, message) for line, message in classes.violations]
     for node in ast.walk(tree):
         line = getattr(node, "lineno", 0)
         if not isinstance(node, ALLOWED_NODES):
             why = _WHY.get(type(node), f"{type(node).__name__} is not allowed in a program")
             found.append(Violation(line, why))
+        elif isinstance(node, ast.Name | ast.Attribute) and id(node) in classes.allowed:
+            continue
         elif isinstance(node, ast.Attribute) and _forbidden_attribute(node):
             found.append(Violation(line, f"the attribute .{node.attr} is not allowed"))
         elif isinstance(node, ast.Name) and (node.id.startswith("__") or node.id in FORBIDDEN_NAMES):
             found.append(Violation(line, f"the name {node.id!r} is not allowed"))
-        elif isinstance(node, _NAMED) and _name_of(node).startswith("__"):  # def __f, f(__x=1), except E as __b
+        elif isinstance(node, _NAMED) and _name_of(node).startswith("__") and id(node) not in classes.allowed:
+            # def __f, f(__x=1), except E as __b, class __C; a class's __init__ is allowed
             found.append(Violation(line, f"the name {_name_of(node)!r} is not allowed"))
         elif isinstance(node, ast.ExceptHandler) and node.type is None:
             found.append(Violation(line, "a bare except: is not allowed; name what to catch, e.g. except Exception:"))
-        elif isinstance(node, ast.FunctionDef) and node.decorator_list:
+        elif isinstance(node, ast.FunctionDef) and node.decorator_list and id(node) not in classes.decorated:
             found.append(Violation(line, "decorators are not allowed"))
         elif isinstance(node, ast.Constant) and _dunder_template(node.value):
             # str.format reads attributes named in its template: "{0.__class__}".format(x)
@@ -149,10 +153,10 @@ def _dunder_template(value: object) -> bool:
     return isinstance(value, str) and "{" in value and "__" in value
 
 
-_NAMED = (ast.FunctionDef, ast.arg, ast.ExceptHandler, ast.keyword)
+_NAMED = (ast.FunctionDef, ast.ClassDef, ast.arg, ast.ExceptHandler, ast.keyword)
 
 
-def _name_of(node: ast.FunctionDef | ast.arg | ast.ExceptHandler | ast.keyword) -> str:
-    if isinstance(node, ast.FunctionDef | ast.ExceptHandler):
+def _name_of(node: ast.FunctionDef | ast.ClassDef | ast.arg | ast.ExceptHandler | ast.keyword) -> str:
+    if isinstance(node, ast.FunctionDef | ast.ClassDef | ast.ExceptHandler):
         return node.name or ""
     return node.arg or ""

@@ -19,9 +19,11 @@ from dataclasses import dataclass, replace
 from roboscript.codegen.checked_calls import helpers, rewrite_checked_calls
 from roboscript.codegen.guard import find_violations
 from roboscript.codegen.outcomes import Outcome
+from roboscript.codegen.program_classes import class_builtins, rewrite_classes
 from roboscript.codegen.program_numpy import program_numpy
 
 PROGRAM_FILENAME = "<program>"
+PROGRAM_MODULE = "program"  # the module a program's own classes belong to
 MAX_RECURSION = 200  # frames a program may stack on top of where it starts
 
 _SAFE_BUILTIN_NAMES = (
@@ -45,6 +47,7 @@ def safe_builtins(output: io.StringIO) -> dict:
     allowed = {name: getattr(builtins, name) for name in _SAFE_BUILTIN_NAMES}
     allowed["print"] = lambda *args, sep=" ", end="\n", **_: output.write(sep.join(map(str, args)) + end)
     allowed.update(helpers())
+    allowed.update(class_builtins())
     return allowed
 
 
@@ -119,10 +122,12 @@ def _message(exc: BaseException) -> str:
 
 def classify_exception(exc: BaseException) -> Outcome:
     """Failures (the robot could not do what was asked: :class:`~roboscript.errors.FailureError`) apart from
-    other runtime errors. A tool's error relayed into a program's process says so itself (``robot_failure``)."""
+    other runtime errors. A tool's error relayed into a program's process says so itself (``robot_failure``); an
+    error class of the program's own is the program's error, whatever it says."""
     from roboscript.errors import FailureError
 
-    failure = isinstance(exc, FailureError) or getattr(type(exc), "robot_failure", False) is True
+    relayed = type(exc).__module__ != PROGRAM_MODULE and getattr(type(exc), "robot_failure", False) is True
+    failure = isinstance(exc, FailureError) or relayed
     return Outcome.PLANNING_FAILURE if failure else Outcome.RUNTIME_ERROR
 
 
@@ -155,14 +160,15 @@ def prepare(program: str) -> types.CodeType | ExecutionResult:
     if violations:
         return ExecutionResult(Outcome.FORBIDDEN_CONSTRUCT, "; ".join(map(str, violations[:5])), "")
     try:
-        return compile(rewrite_checked_calls(tree), PROGRAM_FILENAME, "exec")
+        return compile(rewrite_classes(rewrite_checked_calls(tree)), PROGRAM_FILENAME, "exec")
     except (SyntaxError, ValueError, RecursionError, MemoryError) as exc:
         return ExecutionResult(Outcome.SYNTAX, f"SyntaxError: the program cannot be compiled: {type(exc).__name__}", "")
 
 
 def program_scope(namespace: dict, output: io.StringIO) -> dict:
     """The globals a program runs in: ``namespace``, the program's ``np`` and the restricted builtins."""
-    return {**namespace, "np": safe_numpy(), "__builtins__": safe_builtins(output)}
+    # __name__: a class statement names the module its class is defined in.
+    return {**namespace, "np": safe_numpy(), "__builtins__": safe_builtins(output), "__name__": PROGRAM_MODULE}
 
 
 def execute(program: str, namespace: dict, limits: Limits = Limits()) -> ExecutionResult:
