@@ -21,6 +21,7 @@ from roboscript.codegen.checker import check_program, undefined_calls
 from roboscript.codegen.extract import extract_code
 from roboscript.codegen.outcomes import Outcome
 from roboscript.codegen.prompt import load_examples, program_messages, system_prompt, task_query
+from roboscript.codegen.sandbox import execute
 from roboscript.llm import make_llm
 
 
@@ -35,13 +36,59 @@ from roboscript.llm import make_llm
         ("open_gripper(1.0)", Outcome.BAD_ARGUMENTS, "too many positional arguments"),
         ("def f(a):\n    return a\nf(1, 2)", Outcome.BAD_ARGUMENTS, "too many positional arguments"),
         ("x = np.linalg.nrm([1, 2])", Outcome.UNKNOWN_FUNCTION, "did you mean norm"),
-        ("import math", Outcome.FORBIDDEN_CONSTRUCT, "imports are not allowed"),
+        ("import random", Outcome.FORBIDDEN_CONSTRUCT, "may import only numpy, math, typing"),
         ("move_to_pose(Pose(", Outcome.SYNTAX, "SyntaxError"),
     ],
 )
 def test_the_checker_names_each_problem_with_its_category_and_line(program, outcome, message):
     (finding,) = [f for f in check_program(program) if f.outcome is outcome]
     assert message in finding.message and finding.line >= 1
+
+
+def test_habits_of_llms_that_do_no_harm_are_accepted_and_run():
+    # Told not to import, LLMs still write `import numpy as np`; some keep a counter with `global`, test with :=.
+    program = (
+        "import numpy as np\nimport math\nfrom math import pi, sqrt\nfrom typing import List, Optional\n"
+        "import numpy.linalg\nfrom numpy.linalg import norm\ncounter = 0\n\n\n"
+        "def bump(k: int) -> List[int]:\n    global counter\n    counter += k\n    return [counter]\n\n\n"
+        "def dist(a, b) -> Optional[float]:\n    if (d := norm(np.array(a) - np.array(b))) > 0:\n"
+        "        return float(d)\n    return None\n\n\n"
+        "print(bump(2), round(math.cos(pi), 3), sqrt(4.0), dist([0, 0], [3, 4]), numpy.linalg.norm([1, 0]))\n"
+    )
+    assert check_program(program) == []
+    result = execute(program, {})
+    assert result.outcome is Outcome.OK, result.error
+    assert result.output == "[2] -1.0 2.0 5.0 1.0\n"
+
+
+@pytest.mark.parametrize(
+    ("program", "message"),
+    [
+        ("import os", "import of 'os' is not allowed"),
+        ("import numpy.ctypeslib", "import of 'numpy.ctypeslib' is not allowed"),
+        ("from numpy import *", "'from numpy import *' is not allowed"),
+        ("from . import tools", "relative imports are not allowed"),
+        ("from numpy import _core", "the name '_core' is not allowed"),
+        ("from numpy import load", "the name 'load' is not allowed"),
+        ("import math as __builtins__", "the name '__builtins__' is not allowed"),
+        ("global __builtins__", "__builtins__ are not all allowed"),
+    ],
+)
+def test_imports_beyond_numpy_math_and_typing_are_refused_with_what_is_accepted(program, message):
+    assert any(message in f.message for f in check_program(program))
+
+
+def test_an_import_the_guard_would_refuse_fails_at_run_time_too():
+    # The importer is the program's __import__: nothing but the three namespaces, whatever reached it.
+    from roboscript.codegen.program_imports import program_importer
+
+    importer = program_importer()
+    assert importer("math").sqrt(9.0) == 3.0
+    assert importer("numpy.linalg", fromlist=("norm",)).norm([3.0, 4.0]) == 5.0
+    with pytest.raises(ImportError, match="may import only numpy, math, typing; 'os' is not among them"):
+        importer("os")
+    with pytest.raises(ImportError, match=r"'numpy\.ctypeslib'"):
+        importer("numpy.ctypeslib", fromlist=("x",))
 
 
 def test_the_checker_accepts_aliases_defined_functions_and_callable_variables():

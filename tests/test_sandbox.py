@@ -16,10 +16,10 @@ FORBIDDEN, RUNTIME, TIMEOUT = Outcome.FORBIDDEN_CONSTRUCT, Outcome.RUNTIME_ERROR
 
 # (program, expected outcome, a piece of the error). MARK is replaced by a path that must not exist afterwards.
 HOSTILE = [
-    ("import os\nos.system('touch MARK')", FORBIDDEN, "imports are not allowed"),
-    ("from os import system\nsystem('touch MARK')", FORBIDDEN, "imports are not allowed"),
+    ("import os\nos.system('touch MARK')", FORBIDDEN, "import of 'os' is not allowed"),
+    ("from os import system\nsystem('touch MARK')", FORBIDDEN, "import of 'os' is not allowed"),
     ("__import__('os').system('touch MARK')", FORBIDDEN, "'__import__' is not allowed"),
-    ("import builtins", FORBIDDEN, "imports are not allowed"),
+    ("import builtins", FORBIDDEN, "import of 'builtins' is not allowed"),
     ("x = ().__class__.__bases__[0].__subclasses__()", FORBIDDEN, ".__class__"),
     ("x = [c for c in ().__class__.__base__.__subclasses__() if c.__name__ == 'Popen']", FORBIDDEN, ".__class__"),
     ("f = lambda: 0\ng = f.__globals__", FORBIDDEN, ".__globals__"),

@@ -65,7 +65,10 @@ def check_program(program: str, tools: Mapping[str, inspect.Signature] | None = 
         tree = parse_program(program)
     except SyntaxError as exc:
         return [Finding(exc.lineno or 0, Outcome.SYNTAX, f"SyntaxError: {_short(exc.msg)}")]
-    violations = find_violations(tree)
+    try:
+        violations = find_violations(tree)
+    except (ValueError, TypeError, RecursionError, MemoryError) as exc:  # a tree too odd to walk is no program
+        return [Finding(0, Outcome.SYNTAX, f"SyntaxError: the program cannot be checked: {type(exc).__name__}")]
     findings = [Finding(v.line, Outcome.FORBIDDEN_CONSTRUCT, v.message) for v in violations]
     if any(v.oversized for v in violations):  # binding its calls would be work without bound
         return sorted(set(findings), key=lambda f: (f.line, f.message))
@@ -204,6 +207,8 @@ def _assigned_names(tree: ast.AST) -> set[str]:
             names.add(node.arg)
         elif isinstance(node, ast.ExceptHandler) and node.name:
             names.add(node.name)
+        elif isinstance(node, ast.alias):  # import numpy as np, from math import sqrt
+            names.add(node.asname or node.name.partition(".")[0])
     return names
 
 

@@ -13,11 +13,13 @@ from dataclasses import dataclass
 
 from roboscript.codegen.checked_calls import uncalled_checked_methods
 from roboscript.codegen.program_classes import class_findings
+from roboscript.codegen.program_imports import import_violations
 
 ALLOWED_NODES: tuple[type[ast.AST], ...] = (
     ast.alias,  # only inside an import, which is reported itself
     ast.Module, ast.Expr, ast.Assign, ast.AugAssign, ast.AnnAssign, ast.Pass, ast.Break, ast.Continue,
-    ast.If, ast.For, ast.While, ast.Try, ast.ExceptHandler, ast.Raise, ast.Assert, ast.Delete,
+    ast.If, ast.For, ast.While, ast.Try, ast.ExceptHandler, ast.Raise, ast.Assert, ast.Delete, ast.Global,
+    ast.Nonlocal, ast.NamedExpr,
     ast.FunctionDef, ast.ClassDef, ast.Return, ast.Lambda, ast.arguments, ast.arg, ast.keyword,
     ast.Name, ast.Load, ast.Store, ast.Del, ast.Starred, ast.Attribute, ast.Subscript, ast.Slice,
     ast.Constant, ast.List, ast.Tuple, ast.Dict, ast.Set, ast.JoinedStr, ast.FormattedValue,
@@ -57,16 +59,11 @@ FORBIDDEN_NAMES = frozenset(
 )  # fmt: skip
 
 _WHY = {
-    ast.Import: "imports are not allowed: np and Pose are already there, everything else is a tool",
-    ast.ImportFrom: "imports are not allowed: np and Pose are already there, everything else is a tool",
-    ast.Global: "global statements are not allowed; pass values as arguments and return results",
-    ast.Nonlocal: "nonlocal statements are not allowed; pass values as arguments and return results",
     ast.With: "with statements are not allowed (there are no files or resources to open)",
     ast.AsyncFunctionDef: "async code is not allowed",
     ast.Await: "async code is not allowed",
     ast.Yield: "generators (yield) are not allowed; return a list",
     ast.YieldFrom: "generators (yield) are not allowed; return a list",
-    ast.NamedExpr: "assignment expressions (:=) are not allowed; assign on a line of its own",
 }
 
 
@@ -88,7 +85,13 @@ def find_violations(tree: ast.AST) -> list[Violation]:
     found = [Violation(line, message) for line, message in classes.violations]
     for node in ast.walk(tree):
         line = getattr(node, "lineno", 0)
-        if not isinstance(node, ALLOWED_NODES):
+        if isinstance(node, ast.Import | ast.ImportFrom):
+            found += [Violation(line, message) for message in import_violations(node)]
+            taken = [alias.name for alias in node.names] if isinstance(node, ast.ImportFrom) else []
+            found += [Violation(line, f"the name {n!r} is not allowed") for n in taken if n in FORBIDDEN_ATTRIBUTES]
+        elif isinstance(node, ast.Global | ast.Nonlocal) and any(n.startswith("__") for n in node.names):
+            found.append(Violation(line, f"the names {', '.join(node.names)} are not all allowed"))
+        elif not isinstance(node, ALLOWED_NODES):
             why = _WHY.get(type(node), f"{type(node).__name__} is not allowed in a program")
             found.append(Violation(line, why))
         elif isinstance(node, ast.Name | ast.Attribute) and id(node) in classes.allowed:

@@ -14,7 +14,8 @@ from __future__ import annotations
 
 import ast
 import builtins
-from collections import Counter
+import weakref
+from collections.abc import Callable
 from dataclasses import dataclass, field
 
 CLASS_DUNDERS = frozenset({"__init__", "__repr__", "__str__"})
@@ -27,13 +28,39 @@ BUILTIN_BASES = frozenset(
     }
 )  # fmt: skip
 PRIVATE_PREFIX = "private_"
+# Builtins a program's class statements need: a program may name them only where the guard allows, never bind them.
+RESERVED = frozenset({"__build_class__", "super", *METHOD_DECORATORS})
 
 
 def class_builtins() -> dict[str, object]:
-    """What running a class statement needs beyond a program's builtins; the guard lets a program name none of
-    these but as a method's decorator or in ``super().__init__(...)``."""
-    names = ("__build_class__", "super", *sorted(METHOD_DECORATORS))
-    return {name: getattr(builtins, name) for name in names}
+    """What running a class statement needs beyond a program's builtins: ``__build_class__`` checking bases as
+    the class is made (:func:`class_builder`), ``super`` and the method decorators. The guard lets a program
+    name these only in ``super().__init__(...)`` and as a method's decorator, and bind none of them."""
+    plain = {name: getattr(builtins, name) for name in RESERVED - {"__build_class__"}}
+    return {"__build_class__": class_builder(), **plain}
+
+
+def class_builder() -> Callable[..., type]:
+    """``__build_class__`` for one program: a base must be ``object``, one of :data:`BUILTIN_BASES`, or a class
+    this program made, whatever its name was bound to when the guard read it (a name can be shadowed where the
+    guard cannot follow it); no class keywords."""
+    allowed = tuple(getattr(builtins, name) for name in sorted(BUILTIN_BASES))
+    made: list[weakref.ref] = []
+
+    def build_class(func: Callable, name: str, *bases: object, **keywords: object) -> type:
+        if keywords:
+            raise TypeError(f"class {name}: class keywords are not allowed")
+        for base in bases:
+            if not any(base is a for a in allowed) and not any(base is ref() for ref in made):
+                raise TypeError(
+                    f"class {name} may extend only object, an exception such as RuntimeError, or a class the "
+                    f"program defines, not a {type(base).__name__}"
+                )
+        cls = builtins.__build_class__(func, name, *bases)
+        made.append(weakref.ref(cls))
+        return cls
+
+    return build_class
 
 
 @dataclass
@@ -47,26 +74,29 @@ class ClassFindings:
     violations: list[tuple[int, str]] = field(default_factory=list)
 
 
-def class_findings(tree: ast.AST) -> ClassFindings:
+def class_findings(tree: ast.Module) -> ClassFindings:
     """What the program's classes may and may not hold (:class:`ClassFindings`)."""
     found = ClassFindings()
-    classes = [node for node in ast.walk(tree) if isinstance(node, ast.ClassDef)]
-    own = {node.name for node in classes}
-    rebound = _rebound(tree, own)
-    for node in classes:
-        _check_class(node, own, rebound, found)
-        for item in node.body:
-            if isinstance(item, ast.FunctionDef):
-                _check_method(item, found)
+    bindings = _bindings(tree)
+    for name in sorted(RESERVED & bindings.keys()):
+        found.violations.append((bindings[name][0], f"the name {name!r} is reserved: a program may not bind it"))
+    # The bases the guard can vouch for: classes the module defines once, at its top, and binds no other way.
+    own = {
+        node.name for node in tree.body if isinstance(node, ast.ClassDef) and bindings[node.name][1] == 1
+    }
+    allowed_bases = own | BUILTIN_BASES - {n for n in BUILTIN_BASES if n in bindings}
     for node in ast.walk(tree):
-        if _is_super_init(node):
-            found.allowed |= {id(node.value.func), id(node)}
+        if isinstance(node, ast.ClassDef):
+            _check_class(node, allowed_bases, found)
+            for item in node.body:
+                if isinstance(item, ast.FunctionDef):
+                    _check_method(item, found)
         elif _is_private_of_self(node):
             found.allowed.add(id(node))
     return found
 
 
-def _check_class(node: ast.ClassDef, own: set[str], rebound: set[str], found: ClassFindings) -> None:
+def _check_class(node: ast.ClassDef, allowed_bases: set[str], found: ClassFindings) -> None:
     line = node.lineno
     if node.keywords:
         found.violations.append((line, f"class {node.name}: class keywords (metaclass=...) are not allowed"))
@@ -74,10 +104,11 @@ def _check_class(node: ast.ClassDef, own: set[str], rebound: set[str], found: Cl
         found.violations.append((line, f"class {node.name}: decorators on a class are not allowed"))
     for base in node.bases:
         name = base.id if isinstance(base, ast.Name) else None
-        if name is None or name not in own | BUILTIN_BASES or name in rebound:
+        if name is None or name not in allowed_bases:
+            got = repr(name) if name is not None else f"an expression ({type(base).__name__})"
             found.violations.append(
                 (line, f"class {node.name} may extend only object, an exception such as RuntimeError, or a class "
-                       f"the program defines, got {ast.unparse(base)}")
+                       f"the program defines at its top, got {got}")
             )
         elif name == "object":
             found.allowed.add(id(base))
@@ -95,13 +126,29 @@ def _check_method(node: ast.FunctionDef, found: ClassFindings) -> None:
     if decorators and len(decorators) == len(node.decorator_list):
         found.decorated.add(id(node))
         found.allowed |= {id(d) for d in decorators}
+    for call in _own_nodes(node):
+        if isinstance(call, ast.Call) and _is_super_init(call.func):
+            found.allowed |= {id(call.func), id(call.func.value.func)}
+
+
+def _own_nodes(method: ast.FunctionDef) -> list[ast.AST]:
+    """The nodes of a method's body, not those of functions, lambdas or classes inside it (there ``super()`` has
+    no class to go by)."""
+    out, stack = [], list(method.body)
+    while stack:
+        node = stack.pop()
+        out.append(node)
+        if not isinstance(node, ast.FunctionDef | ast.Lambda | ast.ClassDef):
+            stack.extend(ast.iter_child_nodes(node))
+    return out
 
 
 def _is_super_init(node: ast.AST) -> bool:
-    """``super().__init__`` (the attribute, to be called)."""
+    """``super().__init__``, read to be called."""
     return (
         isinstance(node, ast.Attribute)
         and node.attr == "__init__"
+        and isinstance(node.ctx, ast.Load)
         and isinstance(node.value, ast.Call)
         and isinstance(node.value.func, ast.Name)
         and node.value.func.id == "super"
@@ -121,20 +168,27 @@ def _is_private_of_self(node: ast.AST) -> bool:
     )
 
 
-def _rebound(tree: ast.AST, own: set[str]) -> set[str]:
-    """Names a base may not be, though they look like one: a program's class defined twice or bound otherwise too,
-    a builtin base bound by the program (a base must be the class its name promises)."""
-    classes = Counter(node.name for node in ast.walk(tree) if isinstance(node, ast.ClassDef))
-    other = set()
+def _bindings(tree: ast.AST) -> dict[str, tuple[int, int]]:
+    """Every name the program binds, however (assignment, loop, argument, function, class, handler, import): the
+    line of its first binding and how many there are."""
+    found: dict[str, tuple[int, int]] = {}
     for node in ast.walk(tree):
         if isinstance(node, ast.Name) and isinstance(node.ctx, ast.Store | ast.Del):
-            other.add(node.id)
+            names = [node.id]
         elif isinstance(node, ast.arg):
-            other.add(node.arg)
-        elif isinstance(node, ast.FunctionDef | ast.ExceptHandler) and node.name:
-            other.add(node.name)
-    twice = {name for name in own if classes[name] > 1}
-    return twice | (other & own) | (BUILTIN_BASES & (other | set(classes)))
+            names = [node.arg]
+        elif isinstance(node, ast.FunctionDef | ast.ClassDef | ast.ExceptHandler) and node.name:
+            names = [node.name]
+        elif isinstance(node, ast.alias):
+            names = [node.asname or node.name.partition(".")[0]]
+        elif isinstance(node, ast.Global | ast.Nonlocal):
+            names = list(node.names)
+        else:
+            continue
+        for name in names:
+            line, count = found.get(name, (getattr(node, "lineno", 0), 0))
+            found[name] = (line, count + 1)
+    return found
 
 
 class _Rewriter(ast.NodeTransformer):

@@ -41,7 +41,7 @@ class ObjectArrayError(UsageError, TypeError):
     """A program asked numpy for an array of objects or raw records."""
 
 
-def program_numpy() -> types.SimpleNamespace:
+def program_numpy() -> ProgramModule:
     """A fresh ``np`` namespace for one program."""
     proxy = _namespace("np", np, NUMPY_NAMES)
     proxy.ndarray = _ndarray_type()
@@ -62,9 +62,19 @@ def _namespace(name: str, module: types.ModuleType, names: tuple[str, ...]) -> t
             continue
         value = getattr(module, member)
         members[member] = value if member in SCALAR_TYPES or not callable(value) else _checked(value, member)
-    namespace = types.SimpleNamespace(**members)
+    namespace = ProgramModule(**members)
     namespace.__name__ = name
     return namespace
+
+
+class ProgramModule(types.SimpleNamespace):
+    """A namespace made once: its ``__init__`` called again (through anything that reaches it) adds nothing, so
+    no attribute numpy honours (``__array_interface__``) can be planted on ``np`` or its submodules."""
+
+    def __init__(self, **members: object):
+        if self.__dict__:
+            raise TypeError("a program's module cannot be made again")
+        super().__init__(**members)
 
 
 def _checked(function: Callable, name: str) -> Callable:

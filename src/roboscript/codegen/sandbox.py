@@ -20,6 +20,7 @@ from roboscript.codegen.checked_calls import helpers, rewrite_checked_calls
 from roboscript.codegen.guard import find_violations
 from roboscript.codegen.outcomes import Outcome
 from roboscript.codegen.program_classes import class_builtins, rewrite_classes
+from roboscript.codegen.program_imports import program_importer
 from roboscript.codegen.program_numpy import program_numpy
 
 PROGRAM_FILENAME = "<program>"
@@ -42,9 +43,10 @@ def safe_numpy() -> types.SimpleNamespace:
     return program_numpy()
 
 
-def safe_builtins(output: io.StringIO) -> dict:
-    """The builtins a program gets; ``print`` writes into ``output``."""
+def safe_builtins(output: io.StringIO, np: types.SimpleNamespace | None = None) -> dict:
+    """The builtins a program gets; ``print`` writes into ``output``; ``import numpy`` gives ``np``."""
     allowed = {name: getattr(builtins, name) for name in _SAFE_BUILTIN_NAMES}
+    allowed["__import__"] = program_importer(np)
     allowed["print"] = lambda *args, sep=" ", end="\n", **_: output.write(sep.join(map(str, args)) + end)
     allowed.update(helpers())
     allowed.update(class_builtins())
@@ -156,7 +158,10 @@ def prepare(program: str) -> types.CodeType | ExecutionResult:
         tree = parse_program(program)
     except SyntaxError as exc:
         return ExecutionResult(Outcome.SYNTAX, describe_exception(exc), "")
-    violations = find_violations(tree)
+    try:
+        violations = find_violations(tree)
+    except (ValueError, TypeError, RecursionError, MemoryError) as exc:
+        return ExecutionResult(Outcome.SYNTAX, f"SyntaxError: the program cannot be checked: {type(exc).__name__}", "")
     if violations:
         return ExecutionResult(Outcome.FORBIDDEN_CONSTRUCT, "; ".join(map(str, violations[:5])), "")
     try:
@@ -168,7 +173,8 @@ def prepare(program: str) -> types.CodeType | ExecutionResult:
 def program_scope(namespace: dict, output: io.StringIO) -> dict:
     """The globals a program runs in: ``namespace``, the program's ``np`` and the restricted builtins."""
     # __name__: a class statement names the module its class is defined in.
-    return {**namespace, "np": safe_numpy(), "__builtins__": safe_builtins(output), "__name__": PROGRAM_MODULE}
+    np = safe_numpy()
+    return {**namespace, "np": np, "__builtins__": safe_builtins(output, np), "__name__": PROGRAM_MODULE}
 
 
 def execute(program: str, namespace: dict, limits: Limits = Limits()) -> ExecutionResult:

@@ -1,0 +1,68 @@
+"""The imports a program may write though it needs none: ``import numpy as np``, ``import math``, ``from typing
+import List``. LLMs write them out of habit, told or not, and a program is no less correct for them.
+
+``numpy`` is the program's own ``np`` (:mod:`roboscript.codegen.program_numpy`), ``math`` its functions and
+constants, ``typing`` the names type hints use; no module object is handed over. Any other import, a relative one
+or ``import *`` is refused by the guard, with what would be accepted.
+"""
+
+from __future__ import annotations
+
+import ast
+import math
+import typing
+from collections.abc import Callable
+
+from roboscript.codegen.program_numpy import ProgramModule, program_numpy
+
+TYPING_NAMES = (
+    "Any", "Callable", "Dict", "FrozenSet", "Iterable", "Iterator", "List", "Mapping", "Optional", "Sequence", "Set",
+    "Tuple", "Union",
+)  # fmt: skip
+IMPORTABLE = ("numpy", "math", "typing")
+
+
+def _math() -> ProgramModule:
+    return ProgramModule(**{n: getattr(math, n) for n in dir(math) if not n.startswith("_")})
+
+
+def _typing() -> ProgramModule:
+    return ProgramModule(**{n: getattr(typing, n) for n in TYPING_NAMES})
+
+
+def program_importer(np: ProgramModule | None = None) -> Callable[..., ProgramModule]:
+    """The ``__import__`` of a program's builtins: ``numpy`` (and its submodules ``linalg`` and ``random``) gives
+    ``np``, ``math`` and ``typing`` namespaces of their public names; anything else an ``ImportError``."""
+    modules = {"numpy": np if np is not None else program_numpy(), "math": _math(), "typing": _typing()}
+
+    def importer(name, globals=None, locals=None, fromlist=(), level=0):  # the builtin __import__'s signature
+        if level != 0 or not _importable(str(name)):
+            raise ImportError(f"a program may import only {', '.join(IMPORTABLE)}; {name!r} is not among them")
+        top, _, rest = str(name).partition(".")
+        # import numpy.linalg binds numpy; from numpy.linalg import norm takes norm from the submodule
+        return getattr(modules[top], rest) if rest and fromlist else modules[top]
+
+    return importer
+
+
+def import_violations(node: ast.Import | ast.ImportFrom) -> list[str]:
+    """Why an import statement may not stand (empty if it may)."""
+    accepted = f"a program may import only {', '.join(IMPORTABLE)} (np and Pose are already there; everything else "
+    accepted += "is a tool)"
+    if isinstance(node, ast.ImportFrom):
+        if node.level:
+            return [f"relative imports are not allowed: {accepted}"]
+        modules = [node.module or ""]
+        if any(alias.name == "*" for alias in node.names):
+            return [f"'from {node.module} import *' is not allowed: name what you use"]
+    else:
+        modules = [alias.name for alias in node.names]
+    found = [f"import of {module!r} is not allowed: {accepted}" for module in modules if not _importable(module)]
+    names = [n for alias in node.names for n in (alias.asname, alias.name if isinstance(node, ast.ImportFrom) else "")]
+    found += [f"the name {n!r} is not allowed" for n in names if n and n.startswith("_")]
+    return found
+
+
+def _importable(module: str) -> bool:
+    top, _, rest = module.partition(".")
+    return top in IMPORTABLE and (not rest or (top == "numpy" and rest in ("linalg", "random")))
