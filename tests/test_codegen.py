@@ -20,8 +20,9 @@ from roboscript.codegen.agent import CodeAgent
 from roboscript.codegen.checker import check_program, undefined_calls
 from roboscript.codegen.extract import extract_code
 from roboscript.codegen.outcomes import Outcome
+from roboscript.codegen.program_process import run_program
 from roboscript.codegen.prompt import load_examples, program_messages, system_prompt, task_query
-from roboscript.codegen.sandbox import execute
+from roboscript.codegen.sandbox import Limits, execute
 from roboscript.llm import make_llm
 
 
@@ -36,7 +37,7 @@ from roboscript.llm import make_llm
         ("open_gripper(1.0)", Outcome.BAD_ARGUMENTS, "too many positional arguments"),
         ("def f(a):\n    return a\nf(1, 2)", Outcome.BAD_ARGUMENTS, "too many positional arguments"),
         ("x = np.linalg.nrm([1, 2])", Outcome.UNKNOWN_FUNCTION, "did you mean norm"),
-        ("import random", Outcome.FORBIDDEN_CONSTRUCT, "may import only numpy, math, typing"),
+        ("import copy", Outcome.FORBIDDEN_CONSTRUCT, "may import only numpy, math, typing, time, random"),
         ("move_to_pose(Pose(", Outcome.SYNTAX, "SyntaxError"),
     ],
 )
@@ -54,11 +55,15 @@ def test_habits_of_llms_that_do_no_harm_are_accepted_and_run():
         "def dist(a, b) -> Optional[float]:\n    if (d := norm(np.array(a) - np.array(b))) > 0:\n"
         "        return float(d)\n    return None\n\n\n"
         "print(bump(2), round(math.cos(pi), 3), sqrt(4.0), dist([0, 0], [3, 4]), numpy.linalg.norm([1, 0]))\n"
+        "import time\nimport random\ntime.sleep(0.01)\nrandom.seed(3)\nassert 0 <= random.uniform(0, 1) <= 1\n"
+        "for object in ['apple']:\n    print(object)\n"
     )
     assert check_program(program) == []
     result = execute(program, {})
     assert result.outcome is Outcome.OK, result.error
-    assert result.output == "[2] -1.0 2.0 5.0 1.0\n"
+    assert result.output == "[2] -1.0 2.0 5.0 1.0\napple\n"
+    contained = run_program(program, {}, Limits(timeout=10.0))  # in a confined process, as trials run it
+    assert contained.outcome is Outcome.OK and contained.output == result.output, contained.error
 
 
 @pytest.mark.parametrize(
@@ -85,7 +90,7 @@ def test_an_import_the_guard_would_refuse_fails_at_run_time_too():
     importer = program_importer()
     assert importer("math").sqrt(9.0) == 3.0
     assert importer("numpy.linalg", fromlist=("norm",)).norm([3.0, 4.0]) == 5.0
-    with pytest.raises(ImportError, match="may import only numpy, math, typing; 'os' is not among them"):
+    with pytest.raises(ImportError, match="may import only numpy, math, typing, time, random; 'os' is not among them"):
         importer("os")
     with pytest.raises(ImportError, match=r"'numpy\.ctypeslib'"):
         importer("numpy.ctypeslib", fromlist=("x",))

@@ -12,7 +12,7 @@ import ast
 from dataclasses import dataclass
 
 from roboscript.codegen.checked_calls import uncalled_checked_methods
-from roboscript.codegen.program_classes import class_findings
+from roboscript.codegen.program_classes import RESERVED, bindings, class_findings
 from roboscript.codegen.program_imports import import_violations
 
 ALLOWED_NODES: tuple[type[ast.AST], ...] = (
@@ -82,6 +82,9 @@ class Violation:
 def find_violations(tree: ast.AST) -> list[Violation]:
     """Every forbidden construct in ``tree``, in the order they appear."""
     classes = class_findings(tree)  # what a program's own classes may hold beyond the rules below
+    # A builtin's name the program binds is its own variable (for object in objects:): the builtin is not among a
+    # program's builtins, so where the binding does not reach, the name is unbound. Not those that are there.
+    own_names = set(bindings(tree)) & FORBIDDEN_NAMES - RESERVED
     found = [Violation(line, message) for line, message in classes.violations]
     for node in ast.walk(tree):
         line = getattr(node, "lineno", 0)
@@ -98,7 +101,7 @@ def find_violations(tree: ast.AST) -> list[Violation]:
             continue
         elif isinstance(node, ast.Attribute) and _forbidden_attribute(node):
             found.append(Violation(line, f"the attribute .{node.attr} is not allowed"))
-        elif isinstance(node, ast.Name) and (node.id.startswith("__") or node.id in FORBIDDEN_NAMES):
+        elif isinstance(node, ast.Name) and (node.id.startswith("__") or node.id in FORBIDDEN_NAMES - own_names):
             found.append(Violation(line, f"the name {node.id!r} is not allowed"))
         elif isinstance(node, _NAMED) and _name_of(node).startswith("__") and id(node) not in classes.allowed:
             # def __f, f(__x=1), except E as __b, class __C; a class's __init__ is allowed

@@ -77,14 +77,15 @@ class ClassFindings:
 def class_findings(tree: ast.Module) -> ClassFindings:
     """What the program's classes may and may not hold (:class:`ClassFindings`)."""
     found = ClassFindings()
-    bindings = _bindings(tree)
-    for name in sorted(RESERVED & bindings.keys()):
-        found.violations.append((bindings[name][0], f"the name {name!r} is reserved: a program may not bind it"))
-    # The bases the guard can vouch for: classes the module defines once, at its top, and binds no other way.
+    bound = bindings(tree)
+    for name in sorted(RESERVED & bound.keys()):
+        found.violations.append((bound[name][0], f"the name {name!r} is reserved: a program may not bind it"))
+    # The bases the guard can vouch for: classes the module defines once, at its top, and binds no other way; the
+    # builtin ones the program does not bind (object is dropped from bases before the program runs, bound or not).
     own = {
-        node.name for node in tree.body if isinstance(node, ast.ClassDef) and bindings[node.name][1] == 1
+        node.name for node in tree.body if isinstance(node, ast.ClassDef) and bound[node.name][1] == 1
     }
-    allowed_bases = own | BUILTIN_BASES - {n for n in BUILTIN_BASES if n in bindings}
+    allowed_bases = own | BUILTIN_BASES - {n for n in BUILTIN_BASES - {'object'} if n in bound}
     for node in ast.walk(tree):
         if isinstance(node, ast.ClassDef):
             _check_class(node, allowed_bases, found)
@@ -168,7 +169,7 @@ def _is_private_of_self(node: ast.AST) -> bool:
     )
 
 
-def _bindings(tree: ast.AST) -> dict[str, tuple[int, int]]:
+def bindings(tree: ast.AST) -> dict[str, tuple[int, int]]:
     """Every name the program binds, however (assignment, loop, argument, function, class, handler, import): the
     line of its first binding and how many there are."""
     found: dict[str, tuple[int, int]] = {}

@@ -1,15 +1,18 @@
 """The imports a program may write though it needs none: ``import numpy as np``, ``import math``, ``from typing
-import List``. LLMs write them out of habit, told or not, and a program is no less correct for them.
+import List``, ``import time``. LLMs write them out of habit, told or not, and a program is no less correct for them.
 
 ``numpy`` is the program's own ``np`` (:mod:`roboscript.codegen.program_numpy`), ``math`` its functions and
-constants, ``typing`` the names type hints use; no module object is handed over. Any other import, a relative one
-or ``import *`` is refused by the guard, with what would be accepted.
+constants, ``typing`` the names type hints use, ``time`` its clocks and ``sleep`` (a program waiting for something
+to settle: the wait counts against its time limit), ``random`` its draws; no module object is handed over. Any
+other import, a relative one or ``import *`` is refused by the guard, with what would be accepted.
 """
 
 from __future__ import annotations
 
 import ast
 import math
+import random
+import time
 import typing
 from collections.abc import Callable
 
@@ -19,21 +22,30 @@ TYPING_NAMES = (
     "Any", "Callable", "Dict", "FrozenSet", "Iterable", "Iterator", "List", "Mapping", "Optional", "Sequence", "Set",
     "Tuple", "Union",
 )  # fmt: skip
-IMPORTABLE = ("numpy", "math", "typing")
+TIME_NAMES = ("sleep", "time", "monotonic", "perf_counter")
+RANDOM_NAMES = ("random", "uniform", "randint", "randrange", "choice", "choices", "shuffle", "sample", "gauss", "seed")
+IMPORTABLE = ("numpy", "math", "typing", "time", "random")
 
 
 def _math() -> ProgramModule:
     return ProgramModule(**{n: getattr(math, n) for n in dir(math) if not n.startswith("_")})
 
 
-def _typing() -> ProgramModule:
-    return ProgramModule(**{n: getattr(typing, n) for n in TYPING_NAMES})
+def _members(module: object, names: tuple[str, ...]) -> ProgramModule:
+    return ProgramModule(**{n: getattr(module, n) for n in names})
 
 
 def program_importer(np: ProgramModule | None = None) -> Callable[..., ProgramModule]:
     """The ``__import__`` of a program's builtins: ``numpy`` (and its submodules ``linalg`` and ``random``) gives
-    ``np``, ``math`` and ``typing`` namespaces of their public names; anything else an ``ImportError``."""
-    modules = {"numpy": np if np is not None else program_numpy(), "math": _math(), "typing": _typing()}
+    ``np``; ``math``, ``typing``, ``time`` and ``random`` namespaces of the names listed; anything else an
+    ``ImportError``."""
+    modules = {
+        "numpy": np if np is not None else program_numpy(),
+        "math": _math(),
+        "typing": _members(typing, TYPING_NAMES),
+        "time": _members(time, TIME_NAMES),
+        "random": _members(random.Random(), RANDOM_NAMES),  # a generator of the program's own
+    }
 
     def importer(name, globals=None, locals=None, fromlist=(), level=0):  # the builtin __import__'s signature
         if level != 0 or not _importable(str(name)):
