@@ -47,7 +47,8 @@ def test_the_checker_names_each_problem_with_its_category_and_line(program, outc
 
 
 def test_habits_of_llms_that_do_no_harm_are_accepted_and_run():
-    # Told not to import, LLMs still write `import numpy as np`; some keep a counter with `global`, test with :=.
+    # Told not to import, LLMs still write `import numpy as np`; some keep a counter with `global`, test with :=,
+    # run main() under `if __name__ == "__main__":`.
     program = (
         "import numpy as np\nimport math\nfrom math import pi, sqrt\nfrom typing import List, Optional\n"
         "import numpy.linalg\nfrom numpy.linalg import norm\ncounter = 0\n\n\n"
@@ -57,11 +58,12 @@ def test_habits_of_llms_that_do_no_harm_are_accepted_and_run():
         "print(bump(2), round(math.cos(pi), 3), sqrt(4.0), dist([0, 0], [3, 4]), numpy.linalg.norm([1, 0]))\n"
         "import time\nimport random\ntime.sleep(0.01)\nrandom.seed(3)\nassert 0 <= random.uniform(0, 1) <= 1\n"
         "for object in ['apple']:\n    print(object)\n"
+        "def main():\n    print('main')\n\n\nif __name__ == '__main__':\n    main()\n"
     )
     assert check_program(program) == []
     result = execute(program, {})
     assert result.outcome is Outcome.OK, result.error
-    assert result.output == "[2] -1.0 2.0 5.0 1.0\napple\n"
+    assert result.output == "[2] -1.0 2.0 5.0 1.0\napple\nmain\n"
     contained = run_program(program, {}, Limits(timeout=10.0))  # in a confined process, as trials run it
     assert contained.outcome is Outcome.OK and contained.output == result.output, contained.error
 

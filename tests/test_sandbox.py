@@ -53,6 +53,7 @@ HOSTILE = [
     ("class X:\n    @print\n    def f(self):\n        pass", FORBIDDEN, "decorators are not allowed"),
     ("@staticmethod\ndef f():\n    pass", FORBIDDEN, "decorators are not allowed"),
     ("class __X:\n    pass", FORBIDDEN, "'__X' is not allowed"),
+    ("__name__ = 'x'", FORBIDDEN, "'__name__' is not allowed"),
     ("class E(RuntimeError):\n    robot_failure = True\nraise E('faked')", RUNTIME, "E: faked"),
     ("async def f():\n    pass", FORBIDDEN, "async code is not allowed"),
     ("def f():\n    yield 1", FORBIDDEN, "generators (yield) are not allowed"),

@@ -101,6 +101,8 @@ def find_violations(tree: ast.AST) -> list[Violation]:
             continue
         elif isinstance(node, ast.Attribute) and _forbidden_attribute(node):
             found.append(Violation(line, f"the attribute .{node.attr} is not allowed"))
+        elif isinstance(node, ast.Name) and node.id in READABLE_NAMES and isinstance(node.ctx, ast.Load):
+            continue
         elif isinstance(node, ast.Name) and (node.id.startswith("__") or node.id in FORBIDDEN_NAMES - own_names):
             found.append(Violation(line, f"the name {node.id!r} is not allowed"))
         elif isinstance(node, _NAMED) and _name_of(node).startswith("__") and id(node) not in classes.allowed:
@@ -125,6 +127,9 @@ def find_violations(tree: ast.AST) -> list[Violation]:
     ]
     return sorted(found, key=lambda v: v.line)
 
+
+# Dunder names a program may read: a string (a script's `if __name__ == "__main__":`).
+READABLE_NAMES = frozenset({"__name__"})
 
 # Dunder attributes a program may read: a string, and nothing to be reached from it (a defensive program's
 # messages name the function that failed, ``make_grasp.__name__``).

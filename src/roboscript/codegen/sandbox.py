@@ -24,7 +24,8 @@ from roboscript.codegen.program_imports import program_importer
 from roboscript.codegen.program_numpy import program_numpy
 
 PROGRAM_FILENAME = "<program>"
-PROGRAM_MODULE = "program"  # the module a program's own classes belong to
+# A program runs as a script does: `if __name__ == "__main__": main()` runs main(); its classes belong to it.
+PROGRAM_MODULE = "__main__"
 MAX_RECURSION = 200  # frames a program may stack on top of where it starts
 
 _SAFE_BUILTIN_NAMES = (
@@ -172,7 +173,7 @@ def prepare(program: str) -> types.CodeType | ExecutionResult:
 
 def program_scope(namespace: dict, output: io.StringIO) -> dict:
     """The globals a program runs in: ``namespace``, the program's ``np`` and the restricted builtins."""
-    # __name__: a class statement names the module its class is defined in.
+    # __name__: read by `if __name__ == "__main__":`, and by a class statement for its class's module.
     np = safe_numpy()
     return {**namespace, "np": np, "__builtins__": safe_builtins(output, np), "__name__": PROGRAM_MODULE}
 
