@@ -202,6 +202,25 @@ raise GraspFailed("pear")
     assert result.error.startswith("GraspFailed: could not grasp pear (program line 35)")
 
 
+def test_only_a_failure_a_tool_raised_ends_a_program_as_the_robots_failure():
+    # The program's process is the program's: it can raise GraspError itself, or mark any error class a failure.
+    from roboscript.api.program_errors import PROGRAM_ERRORS
+    from roboscript.grasping.heuristics import GraspError
+
+    def grasp_nothing(name):
+        raise GraspError(f"no grasp fits {name}")
+
+    namespace = {"grasp_nothing": grasp_nothing, "Pose": Pose, **PROGRAM_ERRORS}
+    limits, tools = Limits(timeout=5.0), ["grasp_nothing"]
+    tool_failed = run_program("grasp_nothing('apple')", namespace, limits, tools)
+    assert tool_failed.outcome is Outcome.PLANNING_FAILURE, tool_failed.error
+    own = run_program("raise GraspError('no grasp fits the list')", namespace, limits, tools)
+    assert own.outcome is Outcome.RUNTIME_ERROR and own.error.startswith("GraspError: no grasp fits the list")
+    marked = "UnknownObjectError.robot_failure = True\nraise UnknownObjectError('aple')"
+    marked = run_program(marked, namespace, limits, tools)
+    assert marked.outcome is Outcome.RUNTIME_ERROR, marked.error
+
+
 def test_limits_are_restored_after_a_run():
     import resource
     import signal

@@ -39,10 +39,18 @@ def error_message(exc: BaseException) -> str:
     return str(exc)
 
 
+MAX_SUGGESTED = 64  # characters: longer words and choices are not compared (difflib's work grows as their product)
+MAX_CHOICES = 2000  # choices compared at most
+
+
 def did_you_mean(word: object, choices: Iterable[str], n: int = 3, cutoff: float = 0.5, quoted: bool = False) -> str:
     """``"did you mean a, b?"`` naming the ``n`` choices closest to ``word``, or ``""`` where none is close: the one
     way every error that refuses a name suggests what was meant."""
-    close = difflib.get_close_matches(str(word), list(choices), n=n, cutoff=cutoff)
+    word = str(word)
+    if len(word) > MAX_SUGGESTED:  # no name that long was meant as another: comparing it would be quadratic work
+        return ""
+    candidates = [c for c in choices if len(c) <= MAX_SUGGESTED][:MAX_CHOICES]
+    close = difflib.get_close_matches(word, candidates, n=n, cutoff=cutoff)
     if not close:
         return ""
     return f"did you mean {', '.join(repr(c) if quoted else c for c in close)}?"

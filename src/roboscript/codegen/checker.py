@@ -71,15 +71,28 @@ def check_program(program: str, tools: Mapping[str, inspect.Signature] | None = 
         return [Finding(0, Outcome.SYNTAX, f"SyntaxError: the program cannot be checked: {type(exc).__name__}")]
     findings = [Finding(v.line, Outcome.FORBIDDEN_CONSTRUCT, v.message) for v in violations]
     if any(v.oversized for v in violations):  # binding its calls would be work without bound
-        return sorted(set(findings), key=lambda f: (f.line, f.message))
+        return _capped(sorted(set(findings), key=lambda f: (f.line, f.message)))
     try:
         findings += _call_findings(tree, tools)
     except (ValueError, TypeError, RecursionError) as exc:  # def f(a, a): parses, but no signature has it
         findings.append(Finding(0, Outcome.SYNTAX, f"SyntaxError: {_short(str(exc))}"))
-    return sorted({Finding(f.line, f.outcome, _short(f.message)) for f in findings}, key=lambda f: (f.line, f.message))
+    return _capped(sorted({Finding(f.line, f.outcome, _short(f.message)) for f in findings}, key=_order))
+
+
+def _order(finding: Finding) -> tuple[int, str]:
+    return finding.line, finding.message
+
+
+def _capped(found: list[Finding]) -> list[Finding]:
+    """The first :data:`MAX_FINDINGS`, and one that says how many more there were."""
+    if len(found) <= MAX_FINDINGS:
+        return found
+    left = found[MAX_FINDINGS]
+    return [*found[:MAX_FINDINGS], Finding(left.line, left.outcome, f"... and {len(found) - MAX_FINDINGS} more")]
 
 
 MAX_FINDING = 500  # characters of one finding's message
+MAX_FINDINGS = 50  # findings reported at most: the first ones say what is wrong, the rest only grow the report
 
 
 def _short(text: str) -> str:
@@ -91,7 +104,10 @@ def _call_findings(tree: ast.Module, tools: Mapping[str, inspect.Signature]) -> 
     defined = _defined_functions(tree)
     known = _callable_names(tree, tools)
     numpy = safe_numpy()
+    unknown: dict[str, str] = {}  # each unknown name's message, made once
     for call in (n for n in ast.walk(tree) if isinstance(n, ast.Call)):
+        if len(findings) >= MAX_FINDINGS:
+            break
         func = call.func
         if isinstance(func, ast.Name):
             name = func.id
@@ -100,8 +116,9 @@ def _call_findings(tree: ast.Module, tools: Mapping[str, inspect.Signature]) -> 
             elif name in tools:
                 findings += _bind(call, name, tools[name], aliases=True)
             elif name not in known:
-                suggestions = set(tools) | set(defined) | PROGRAM_BUILTINS
-                findings.append(Finding(call.lineno, Outcome.UNKNOWN_FUNCTION, _unknown(name, suggestions)))
+                if name not in unknown:
+                    unknown[name] = _unknown(name, set(tools) | set(defined) | PROGRAM_BUILTINS)
+                findings.append(Finding(call.lineno, Outcome.UNKNOWN_FUNCTION, unknown[name]))
         elif isinstance(func, ast.Attribute) and (path := _numpy_path(func)) is not None:
             target = numpy
             for part in path[1:]:

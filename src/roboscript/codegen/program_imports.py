@@ -28,31 +28,35 @@ IMPORTABLE = ("numpy", "math", "typing", "time", "random")
 
 
 def _math() -> ProgramModule:
-    return ProgramModule(**{n: getattr(math, n) for n in dir(math) if not n.startswith("_")})
+    return ProgramModule(__name__="math", **{n: getattr(math, n) for n in dir(math) if not n.startswith("_")})
 
 
-def _members(module: object, names: tuple[str, ...]) -> ProgramModule:
-    return ProgramModule(**{n: getattr(module, n) for n in names})
+def _members(name: str, module: object, names: tuple[str, ...]) -> ProgramModule:
+    return ProgramModule(__name__=name, **{n: getattr(module, n) for n in names})
 
 
 def program_importer(np: ProgramModule | None = None) -> Callable[..., ProgramModule]:
     """The ``__import__`` of a program's builtins: ``numpy`` (and its submodules ``linalg`` and ``random``) gives
     ``np``; ``math``, ``typing``, ``time`` and ``random`` namespaces of the names listed; anything else an
     ``ImportError``."""
+    np = np if np is not None else program_numpy()
+    # Every module by its full name, fixed now: what the importer hands out never depends on what a program did
+    # to a namespace since (it cannot change them either: ProgramModule).
     modules = {
-        "numpy": np if np is not None else program_numpy(),
+        "numpy": np,
+        "numpy.linalg": np.linalg,
+        "numpy.random": np.random,
         "math": _math(),
-        "typing": _members(typing, TYPING_NAMES),
-        "time": _members(time, TIME_NAMES),
-        "random": _members(random.Random(), RANDOM_NAMES),  # a generator of the program's own
+        "typing": _members("typing", typing, TYPING_NAMES),
+        "time": _members("time", time, TIME_NAMES),
+        "random": _members("random", random.Random(), RANDOM_NAMES),  # a generator of the program's own
     }
 
     def importer(name, globals=None, locals=None, fromlist=(), level=0):  # the builtin __import__'s signature
         if level != 0 or not _importable(str(name)):
             raise ImportError(f"a program may import only {', '.join(IMPORTABLE)}; {name!r} is not among them")
-        top, _, rest = str(name).partition(".")
         # import numpy.linalg binds numpy; from numpy.linalg import norm takes norm from the submodule
-        return getattr(modules[top], rest) if rest and fromlist else modules[top]
+        return modules[str(name)] if fromlist else modules[str(name).partition(".")[0]]
 
     return importer
 

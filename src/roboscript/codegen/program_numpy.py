@@ -43,11 +43,12 @@ class ObjectArrayError(UsageError, TypeError):
 
 def program_numpy() -> ProgramModule:
     """A fresh ``np`` namespace for one program."""
-    proxy = _namespace("np", np, NUMPY_NAMES)
-    proxy.ndarray = _ndarray_type()
-    proxy.linalg = _namespace("np.linalg", np.linalg, LINALG_NAMES)
-    proxy.random = _namespace("np.random", np.random, RANDOM_NAMES)
-    return proxy
+    submodules = {
+        "ndarray": _ndarray_type(),
+        "linalg": _namespace("np.linalg", np.linalg, LINALG_NAMES),
+        "random": _namespace("np.random", np.random, RANDOM_NAMES),
+    }
+    return _namespace("np", np, NUMPY_NAMES, submodules)
 
 
 def numpy_names() -> frozenset[str]:
@@ -55,26 +56,35 @@ def numpy_names() -> frozenset[str]:
     return frozenset((*NUMPY_NAMES, "ndarray", "linalg", "random"))
 
 
-def _namespace(name: str, module: types.ModuleType, names: tuple[str, ...]) -> types.SimpleNamespace:
-    members = {}
+def _namespace(
+    name: str, module: types.ModuleType, names: tuple[str, ...], extra: dict[str, object] | None = None
+) -> ProgramModule:
+    members: dict[str, object] = {"__name__": name, **(extra or {})}
     for member in names:
         if not hasattr(module, member):
             continue
         value = getattr(module, member)
         members[member] = value if member in SCALAR_TYPES or not callable(value) else _checked(value, member)
-    namespace = ProgramModule(**members)
-    namespace.__name__ = name
-    return namespace
+    return ProgramModule(**members)
 
 
 class ProgramModule(types.SimpleNamespace):
-    """A namespace made once: its ``__init__`` called again (through anything that reaches it) adds nothing, so
-    no attribute numpy honours (``__array_interface__``) can be planted on ``np`` or its submodules."""
+    """A namespace a program reads and cannot change: made once (its ``__init__`` called again refuses), no
+    attribute set or deleted. Nothing numpy honours (``__array_interface__``) can be planted on ``np``, and no
+    member replaced by an object of the program's (a function named after a real package, which ``from np.x
+    import y`` would look up in ``sys.modules``)."""
 
     def __init__(self, **members: object):
         if self.__dict__:
             raise TypeError("a program's module cannot be made again")
-        super().__init__(**members)
+        for key, value in members.items():
+            object.__setattr__(self, key, value)
+
+    def __setattr__(self, name: str, value: object) -> None:
+        raise AttributeError(f"{getattr(self, '__name__', 'this module')} cannot be changed: set {name!r} elsewhere")
+
+    def __delattr__(self, name: str) -> None:
+        raise AttributeError(f"{getattr(self, '__name__', 'this module')} cannot be changed")
 
 
 def _checked(function: Callable, name: str) -> Callable:
@@ -134,13 +144,12 @@ def _refuse_objects(result: object, name: str) -> None:
 
 
 def checked_astype(owner: object, *args, **kwargs) -> object:
-    """``owner.astype(*args, **kwargs)``; for an array, refusing object and record dtypes."""
-    if isinstance(owner, np.ndarray | np.generic):
-        _refuse_dtype_arguments(args, kwargs, "astype()")
-        result = owner.astype(*args, **kwargs)
-        _refuse_objects(result, "ndarray.astype")
-        return result
-    return owner.astype(*args, **kwargs)
+    """``owner.astype(*args, **kwargs)``, refusing object and record dtypes in its arguments and its result,
+    whatever ``owner`` is (an array, or a numpy type called with the array first: ``np.float64.astype(x, "V8")``)."""
+    _refuse_dtype_arguments(args, kwargs, "astype()")
+    result = owner.astype(*args, **kwargs)
+    _refuse_objects(result, "ndarray.astype")
+    return result
 
 
 class _ArrayType(type):

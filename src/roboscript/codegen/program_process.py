@@ -171,6 +171,10 @@ class _ToolSide:
         self.started: float | None = None
         self.confined = False  # what arrives after that may be the program's doing
         self.ran_in = f"process {process.pid}"
+        # The robot's failures the tools raised here, by error class: only such an error ends a program as a
+        # failure of the robot's, whatever the program's side says (it can raise GraspError itself, or mark any
+        # class a failure: it is the program's process).
+        self.failures: set[str] = set()
 
     @property
     def deadline(self) -> float:
@@ -239,6 +243,8 @@ class _ToolSide:
                 return channel.json_bytes({"timeout": True})
             except Exception as exc:
                 spec = protocol.exception_spec(exc, MAX_TOOL_ERROR)
+                if spec["failure"]:
+                    self.failures.add(spec["name"])
                 return channel.json_bytes({"raise": spec, "notices": noticed})
         try:
             return channel.json_bytes({"return": wire.to_tree(value, protocol.MAX_REPLY), "notices": noticed})
@@ -260,6 +266,8 @@ class _ToolSide:
         error = None if error is None else shortened(_printable(error), MAX_ERROR)
         if outcome is Outcome.TIMEOUT or (self.started is not None and time.monotonic() > self.deadline):
             outcome, error = Outcome.TIMEOUT, self._timeout_error("")
+        elif outcome is Outcome.PLANNING_FAILURE and (error or "").partition(":")[0] not in self.failures:
+            outcome = Outcome.RUNTIME_ERROR  # no tool failed so: the program's own error
         return self._result(outcome, error, output)
 
     def _kill_for_time(self) -> ExecutionResult:
