@@ -208,6 +208,22 @@ def test_helper_generation_is_bounded_and_cycle_safe():
     assert len(server.requests) == 3  # the program, a (which brought b along), c (no definition)
 
 
+def test_a_model_whose_every_helper_calls_new_names_is_asked_a_bounded_number_of_times():
+    from roboscript.codegen.agent import MAX_DEFINED
+
+    # The program calls ten names; each definition asked for calls ten new ones: 1 + 10 + 100 requests unbounded.
+    answers = [{"text": "```python\n" + "\n".join(f"f{i}()" for i in range(10)) + "\n```"}]
+    for i in range(10):
+        calls = "\n".join(f"    g{i}_{k}()" for k in range(10))
+        answers.append({"text": f"```python\ndef f{i}():\n{calls}\n```"})
+    answers.append({"text": "no code here"})
+    with ScriptedChatServer(answers) as server:
+        generation = CodeAgent(make_llm(f"openai:m@{server.url}"), examples=[], max_depth=3).write_program("q")
+    assert generation.helpers == [f"f{i}" for i in range(10)]
+    assert len(server.requests) == 1 + MAX_DEFINED
+    assert generation.unresolved  # what was left undefined is said, and the checker will refuse the program
+
+
 def test_a_model_that_cannot_be_reached_is_an_llm_error_trial():
     spec = TrialSpec("simple_0", "panda", 0, 0, program="", timeout=60, llm="openai:m@http://127.0.0.1:9/v1")
     (record,) = run_isolated([spec])

@@ -25,6 +25,9 @@ class Generation:
     repairs: int = 0  # rounds of repair used
 
 
+MAX_DEFINED = 12  # names the sub-agent is asked to define for one program at most
+
+
 class CodeAgent:
     """Writes programs with ``llm``. ``max_depth``: how many levels of helpers the sub-agent may generate;
     ``base_xy``: where the robot's base stands, told in the rules where known (:func:`system_prompt`)."""
@@ -58,7 +61,9 @@ class CodeAgent:
         self.define_missing(generation)
 
     def define_missing(self, generation: Generation) -> None:
-        """Adds definitions for called-but-undefined names, breadth first, up to ``max_depth`` levels."""
+        """Adds definitions for called-but-undefined names, breadth first, up to ``max_depth`` levels and
+        :data:`MAX_DEFINED` names in all (a model whose every answer calls new names would otherwise be asked
+        without end: K + K^2 + K^3 requests)."""
         asked: set[str] = set()
         for _ in range(self.max_depth):
             try:
@@ -68,6 +73,8 @@ class CodeAgent:
             if not missing:
                 return
             for site in missing:
+                if len(asked) >= MAX_DEFINED:
+                    break
                 asked.add(site.name)
                 messages = function_messages(site.name, site.source, generation.program)
                 text = self._ask(messages)
