@@ -216,6 +216,12 @@ def test_only_a_failure_a_tool_raised_ends_a_program_as_the_robots_failure():
     assert tool_failed.outcome is Outcome.PLANNING_FAILURE, tool_failed.error
     own = run_program("raise GraspError('no grasp fits the list')", namespace, limits, tools)
     assert own.outcome is Outcome.RUNTIME_ERROR and own.error.startswith("GraspError: no grasp fits the list")
+    # A failure a tool raised, caught, and the same class raised later for the program's own bug.
+    caught = "try:\n    grasp_nothing('apple')\nexcept GraspError:\n    pass\nraise GraspError('no grasp: [].pop()')"
+    caught = run_program(caught, namespace, limits, tools)
+    assert caught.outcome is Outcome.RUNTIME_ERROR, caught.error
+    reraised = run_program("try:\n    grasp_nothing('apple')\nexcept GraspError:\n    raise", namespace, limits, tools)
+    assert reraised.outcome is Outcome.PLANNING_FAILURE, reraised.error
     marked = "UnknownObjectError.robot_failure = True\nraise UnknownObjectError('aple')"
     marked = run_program(marked, namespace, limits, tools)
     assert marked.outcome is Outcome.RUNTIME_ERROR, marked.error

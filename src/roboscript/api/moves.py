@@ -21,7 +21,7 @@ from roboscript.names import kind_of
 from roboscript.notices import notice
 from roboscript.perception.base import Perception
 from roboscript.planning.contacts import ContactAllowances
-from roboscript.planning.errors import CartesianPathIncompleteError, IKError, PlanningError
+from roboscript.planning.errors import CartesianPathIncompleteError, IKError, PlanningError, TrackingError
 from roboscript.planning.motion import MotionPlanner
 
 EMPTY_GRIP = 0.002  # metres: fingers closed this far hold nothing
@@ -124,7 +124,23 @@ class Moves:
         follow it, never a planned way round (a path that leaves the line drags the hand against the joint), with
         a notice where that is short of ``distance`` (a drawer pulled 24 cm at the edge of the UR5e's reach)."""
         length = abs(distance)
-        moved = self.motion.retreat(unit * np.sign(distance), length, least=min(PULL_LEAST, length))
+        direction = unit * np.sign(distance)
+        start = self.motion.backend.tcp_pose().position
+        try:
+            moved = self.motion.retreat(direction, length, least=min(PULL_LEAST, length))
+        except TrackingError:
+            # The part stopped before the hand: a drawer at the end of its slide, which perception only guesses
+            # (a program pulling to the travel it was told, 2 cm past the stop). It stays where it stopped.
+            self.motion.hold_here()
+            moved = float((self.motion.backend.tcp_pose().position - start) @ direction)
+            if moved < min(PULL_LEAST, length):
+                raise
+            notice(
+                f"move_in_direction: moved {moved:.3f} m of {length:.3f} m holding {', '.join(parts)}: it stopped "
+                "there, at the end of its travel or against something"
+            )
+            self.contacts.withdraw_cleared(self.held)
+            return
         if moved <= 0.0:
             raise PlanningError(
                 f"move_in_direction: holding {', '.join(parts)}, the hand cannot move even {PULL_LEAST * 100:.0f} cm "

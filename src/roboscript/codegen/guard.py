@@ -46,6 +46,8 @@ FORBIDDEN_ATTRIBUTES = frozenset(
         "view", "tobytes", "tostring", "data", "base", "getfield", "setfield", "frombuffer", "fromstring", "cffi",
         "resize",
         "__array_interface__", "byte_bounds",
+        # numpy's random generators: the C struct behind one (its state and function pointers), and its lock
+        "capsule", "bit_generator", "lock",
     }
 )  # fmt: skip
 

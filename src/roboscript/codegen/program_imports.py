@@ -2,9 +2,10 @@
 import List``, ``import time``. LLMs write them out of habit, told or not, and a program is no less correct for them.
 
 ``numpy`` is the program's own ``np`` (:mod:`roboscript.codegen.program_numpy`), ``math`` its functions and
-constants, ``typing`` the names type hints use, ``time`` its clocks and ``sleep`` (a program waiting for something
-to settle: the wait counts against its time limit), ``random`` its draws; no module object is handed over. Any
-other import, a relative one or ``import *`` is refused by the guard, with what would be accepted.
+constants, ``typing`` the names type hints use (hints that mean nothing: :class:`TypeHint`), ``time`` its clocks
+and ``sleep`` (a program waiting for something to settle: the wait counts against its time limit), ``random`` its
+draws; no module object is handed over. Any other import, a relative one or ``import *`` is refused by the guard,
+with what would be accepted.
 """
 
 from __future__ import annotations
@@ -13,7 +14,6 @@ import ast
 import math
 import random
 import time
-import typing
 from collections.abc import Callable
 
 from roboscript.codegen.program_numpy import ProgramModule, program_numpy
@@ -28,11 +28,38 @@ IMPORTABLE = ("numpy", "math", "typing", "time", "random")
 
 
 def _math() -> ProgramModule:
-    return ProgramModule(__name__="math", **{n: getattr(math, n) for n in dir(math) if not n.startswith("_")})
+    return ProgramModule(__name__="<math>", **{n: getattr(math, n) for n in dir(math) if not n.startswith("_")})
 
 
 def _members(name: str, module: object, names: tuple[str, ...]) -> ProgramModule:
-    return ProgramModule(__name__=name, **{n: getattr(module, n) for n in names})
+    # Named so that no key of sys.modules starts with it: `from M import x`, x missing, looks up
+    # sys.modules[M.__name__ + ".x"] (`from typing import io` gave the real typing.io).
+    return ProgramModule(__name__=f"<{name}>", **{n: getattr(module, n) for n in names})
+
+
+class TypeHint:
+    """What ``typing``'s names are to a program: type hints that evaluate and mean nothing, ``List[int]`` and
+    ``Optional[Pose]`` included. The real aliases pass attribute assignment on to the classes behind them
+    (``Mapping.get = f`` replaced ``collections.abc.Mapping.get`` in the program's process)."""
+
+    __slots__ = ("name",)
+
+    def __init__(self, name: str):
+        object.__setattr__(self, "name", name)
+
+    def __getitem__(self, arguments: object) -> TypeHint:
+        return self
+
+    def __or__(self, other: object) -> TypeHint:
+        return self
+
+    __ror__ = __or__
+
+    def __setattr__(self, name: str, value: object) -> None:
+        raise AttributeError(f"typing.{self.name} cannot be changed")
+
+    def __repr__(self) -> str:
+        return f"typing.{self.name}"
 
 
 def program_importer(np: ProgramModule | None = None) -> Callable[..., ProgramModule]:
@@ -47,7 +74,7 @@ def program_importer(np: ProgramModule | None = None) -> Callable[..., ProgramMo
         "numpy.linalg": np.linalg,
         "numpy.random": np.random,
         "math": _math(),
-        "typing": _members("typing", typing, TYPING_NAMES),
+        "typing": ProgramModule(__name__="<typing>", **{n: TypeHint(n) for n in TYPING_NAMES}),
         "time": _members("time", time, TIME_NAMES),
         "random": _members("random", random.Random(), RANDOM_NAMES),  # a generator of the program's own
     }

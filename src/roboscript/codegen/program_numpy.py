@@ -64,6 +64,8 @@ def _namespace(
         if not hasattr(module, member):
             continue
         value = getattr(module, member)
+        if module is np.random and member in SEEDED:
+            value = _seeded(value, member)
         members[member] = value if member in SCALAR_TYPES or not callable(value) else _checked(value, member)
     return ProgramModule(**members)
 
@@ -85,6 +87,31 @@ class ProgramModule(types.SimpleNamespace):
 
     def __delattr__(self, name: str) -> None:
         raise AttributeError(f"{getattr(self, '__name__', 'this module')} cannot be changed")
+
+
+# Take a seed: numpy also takes a bit generator there, or anything with a ``capsule`` attribute, whose C struct it
+# copies (state and function pointers: a freed generator's, refilled with the program's bytes, ran native code).
+SEEDED = frozenset(("default_rng", "seed"))
+
+
+def _seeded(function: Callable, name: str) -> Callable:
+    """``function`` taking a seed only: None, an int, or a list of ints."""
+
+    @functools.wraps(function)
+    def call(seed=None):
+        if not _plain_seed(seed):
+            raise TypeError(f"np.random.{name}(): a seed is None, an int or a list of ints, not {type(seed).__name__}")
+        return function(seed)
+
+    return call
+
+
+def _plain_seed(seed: object) -> bool:
+    if seed is None or (isinstance(seed, int | np.integer) and not isinstance(seed, bool)):
+        return True
+    if isinstance(seed, np.ndarray):
+        return seed.dtype.kind in "iu"
+    return isinstance(seed, list | tuple) and all(isinstance(v, int | np.integer) for v in seed)
 
 
 def _checked(function: Callable, name: str) -> Callable:

@@ -161,6 +161,9 @@ def _start(there: socket.socket) -> subprocess.Popen:
         raise SandboxSetupError(f"cannot start a program's process: {exc}") from exc
 
 
+FAILURE_PREFIX = 120  # characters of a failure's "Name: message" that must match one a tool raised
+
+
 class _ToolSide:
     """Serves the program's tool calls until it reports, dies, breaks the protocol or runs out of time."""
 
@@ -171,9 +174,9 @@ class _ToolSide:
         self.started: float | None = None
         self.confined = False  # what arrives after that may be the program's doing
         self.ran_in = f"process {process.pid}"
-        # The robot's failures the tools raised here, by error class: only such an error ends a program as a
-        # failure of the robot's, whatever the program's side says (it can raise GraspError itself, or mark any
-        # class a failure: it is the program's process).
+        # The robot's failures the tools raised here, as the program sees them ("GraspError: no grasp fits..."):
+        # only such an error ends a program as a failure of the robot's, whatever the program's side says (it can
+        # raise GraspError itself for its own bug, or mark any class a failure: it is the program's process).
         self.failures: set[str] = set()
 
     @property
@@ -244,7 +247,7 @@ class _ToolSide:
             except Exception as exc:
                 spec = protocol.exception_spec(exc, MAX_TOOL_ERROR)
                 if spec["failure"]:
-                    self.failures.add(spec["name"])
+                    self.failures.add(f"{spec['name']}: {spec['message']}"[:FAILURE_PREFIX])
                 return channel.json_bytes({"raise": spec, "notices": noticed})
         try:
             return channel.json_bytes({"return": wire.to_tree(value, protocol.MAX_REPLY), "notices": noticed})
@@ -266,7 +269,7 @@ class _ToolSide:
         error = None if error is None else shortened(_printable(error), MAX_ERROR)
         if outcome is Outcome.TIMEOUT or (self.started is not None and time.monotonic() > self.deadline):
             outcome, error = Outcome.TIMEOUT, self._timeout_error("")
-        elif outcome is Outcome.PLANNING_FAILURE and (error or "").partition(":")[0] not in self.failures:
+        elif outcome is Outcome.PLANNING_FAILURE and not any((error or "").startswith(f) for f in self.failures):
             outcome = Outcome.RUNTIME_ERROR  # no tool failed so: the program's own error
         return self._result(outcome, error, output)
 

@@ -511,6 +511,14 @@ class MotionPlanner:
         self.execute(line.waypoints)
         return line.fraction * distance
 
+    def hold_here(self) -> np.ndarray:
+        """Holds the arm where it stands: after a motion blocked short of its end the controller still drives
+        toward that end (against a drawer's stop). Returns the configuration."""
+        q = self.sync()
+        robot = self.backend.robot
+        self.backend.execute_trajectory(time_parameterize(np.array([q, q]), robot.max_velocity, robot.max_acceleration))
+        return q
+
     def reach_along(self, q: np.ndarray, direction: np.ndarray, distance: float) -> float:
         """How far, up to ``distance``, the TCP of the arm at ``q`` could move straight along ``direction`` (the
         hand kept as it is) within the arm's reach: IK and continuity only, collisions not checked (a question
