@@ -34,13 +34,18 @@ def folders(styles: list[str]) -> list[tuple[str, str, Path]]:
     return out
 
 
+ROOT = CORPUS.parents[2]
+
+
 def run(folder: Path, suite: str, robot: str, perception: str, trials: int, jobs: int, out: Path) -> Path:
-    """Runs (or resumes) one folder's programs; returns the run directory."""
+    """Runs (or resumes) one folder's programs; returns the run directory. The policy names the folder from the
+    checkout's root, so that a run directory copied to another machine or checkout resumes there."""
     tasks = ",".join(sorted(p.stem for p in folder.glob("*.py")))
-    command = [sys.executable, "-m", "roboscript.cli", "bench", "--suite", suite, "--policy", f"programs:{folder}"]
+    policy = f"programs:{folder.relative_to(ROOT)}"
+    command = [sys.executable, "-m", "roboscript.cli", "bench", "--suite", suite, "--policy", policy]
     command += ["--tasks", tasks, "--robot", robot, "--perception", perception, "--trials", str(trials)]
-    command += ["--jobs", str(jobs), "--out", str(out)]
-    subprocess.run(command, check=False, stdout=subprocess.DEVNULL)
+    command += ["--jobs", str(jobs), "--out", str(out.resolve())]
+    subprocess.run(command, check=False, stdout=subprocess.DEVNULL, cwd=ROOT)
     return out
 
 

@@ -13,6 +13,7 @@ from roboscript.api.program_errors import PROGRAM_ERRORS
 from roboscript.api.signature import ALIASES
 from roboscript.codegen.guard import find_violations
 from roboscript.codegen.outcomes import Outcome
+from roboscript.codegen.program_numpy import ProgramModule
 from roboscript.codegen.sandbox import MAX_PROGRAM, PROGRAM_BUILTINS, parse_program, safe_numpy, shortened
 from roboscript.errors import did_you_mean
 
@@ -76,6 +77,8 @@ def check_program(program: str, tools: Mapping[str, inspect.Signature] | None = 
         findings += _call_findings(tree, tools)
     except (ValueError, TypeError, RecursionError) as exc:  # def f(a, a): parses, but no signature has it
         findings.append(Finding(0, Outcome.SYNTAX, f"SyntaxError: {_short(str(exc))}"))
+    except Exception as exc:  # hostile text must not crash the trial's process: it is refused, not run
+        findings.append(Finding(0, Outcome.SYNTAX, f"SyntaxError: the program cannot be checked: {type(exc).__name__}"))
     return _capped(sorted({Finding(f.line, f.outcome, _short(f.message)) for f in findings}, key=_order))
 
 
@@ -122,9 +125,14 @@ def _call_findings(tree: ast.Module, tools: Mapping[str, inspect.Signature]) -> 
         elif isinstance(func, ast.Attribute) and (path := _numpy_path(func)) is not None:
             target = numpy
             for part in path[1:]:
-                parent, target = target, getattr(target, part, None)
+                # Only the program's own namespaces are looked into, by their members: a getattr walk past them ran
+                # numpy's properties in this, the trial's, process (np.random.rand.__wrapped__.__self__..., one of
+                # which raised ImportError here), and the guard reports what starts with an underscore anyway.
+                if not isinstance(target, ProgramModule) or part.startswith("_"):
+                    break
+                parent, target = target, vars(target).get(part)
                 if target is None:
-                    names = [n for n in getattr(parent, "__dict__", {}) if not n.startswith("_")]
+                    names = [n for n in vars(parent) if not n.startswith("_")]
                     message = f"np.{'.'.join(path[1:])} is not available to programs" + _closest(part, names)
                     findings.append(Finding(call.lineno, Outcome.UNKNOWN_FUNCTION, message))
                     break
