@@ -124,16 +124,16 @@ class Moves:
         follow it, never a planned way round (a path that leaves the line drags the hand against the joint), with
         a notice where that is short of ``distance`` (a drawer pulled 24 cm at the edge of the UR5e's reach)."""
         length = abs(distance)
-        direction = unit * np.sign(distance)
+        direction, least = unit * np.sign(distance), min(PULL_LEAST, length)
         start = self.motion.backend.tcp_pose().position
         try:
-            moved = self.motion.retreat(direction, length, least=min(PULL_LEAST, length))
+            moved = self.motion.retreat(direction, length, least=least)
         except TrackingError:
             # The part stopped before the hand: a drawer at the end of its slide, which perception only guesses
             # (a program pulling to the travel it was told, 2 cm past the stop). It stays where it stopped.
             self.motion.hold_here()
             moved = float((self.motion.backend.tcp_pose().position - start) @ direction)
-            if moved < min(PULL_LEAST, length):
+            if moved < least:
                 raise
             notice(
                 f"move_in_direction: moved {moved:.3f} m of {length:.3f} m holding {', '.join(parts)}: it stopped "

@@ -72,7 +72,7 @@ def check_program(program: str, tools: Mapping[str, inspect.Signature] | None = 
         return [Finding(0, Outcome.SYNTAX, f"SyntaxError: the program cannot be checked: {type(exc).__name__}")]
     findings = [Finding(v.line, Outcome.FORBIDDEN_CONSTRUCT, v.message) for v in violations]
     if any(v.oversized for v in violations):  # binding its calls would be work without bound
-        return _capped(sorted(set(findings), key=lambda f: (f.line, f.message)))
+        return _capped(sorted(set(findings), key=_order))
     try:
         findings += _call_findings(tree, tools)
     except (ValueError, TypeError, RecursionError) as exc:  # def f(a, a): parses, but no signature has it

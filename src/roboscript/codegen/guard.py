@@ -83,10 +83,11 @@ class Violation:
 
 def find_violations(tree: ast.AST) -> list[Violation]:
     """Every forbidden construct in ``tree``, in the order they appear."""
-    classes = class_findings(tree)  # what a program's own classes may hold beyond the rules below
+    bound = bindings(tree)
+    classes = class_findings(tree, bound)  # what a program's own classes may hold beyond the rules below
     # A builtin's name the program binds is its own variable (for object in objects:): the builtin is not among a
     # program's builtins, so where the binding does not reach, the name is unbound. Not those that are there.
-    own_names = set(bindings(tree)) & FORBIDDEN_NAMES - RESERVED
+    own_names = set(bound) & FORBIDDEN_NAMES - RESERVED
     found = [Violation(line, message) for line, message in classes.violations]
     for node in ast.walk(tree):
         line = getattr(node, "lineno", 0)

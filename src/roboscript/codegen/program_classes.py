@@ -74,10 +74,10 @@ class ClassFindings:
     violations: list[tuple[int, str]] = field(default_factory=list)
 
 
-def class_findings(tree: ast.Module) -> ClassFindings:
-    """What the program's classes may and may not hold (:class:`ClassFindings`)."""
+def class_findings(tree: ast.Module, bound: dict[str, tuple[int, int]]) -> ClassFindings:
+    """What the program's classes may and may not hold (:class:`ClassFindings`); ``bound``: its
+    :func:`bindings`."""
     found = ClassFindings()
-    bound = bindings(tree)
     for name in sorted(RESERVED & bound.keys()):
         found.violations.append((bound[name][0], f"the name {name!r} is reserved: a program may not bind it"))
     # The bases the guard can vouch for: classes the module defines once, at its top, and binds no other way; the

@@ -25,10 +25,7 @@ TYPING_NAMES = (
 TIME_NAMES = ("sleep", "time", "monotonic", "perf_counter")
 RANDOM_NAMES = ("random", "uniform", "randint", "randrange", "choice", "choices", "shuffle", "sample", "gauss", "seed")
 IMPORTABLE = ("numpy", "math", "typing", "time", "random")
-
-
-def _math() -> ProgramModule:
-    return ProgramModule(__name__="<math>", **{n: getattr(math, n) for n in dir(math) if not n.startswith("_")})
+SUBMODULES = ("numpy.linalg", "numpy.random")  # the only dotted names a program may import
 
 
 def _members(name: str, module: object, names: tuple[str, ...]) -> ProgramModule:
@@ -73,7 +70,7 @@ def program_importer(np: ProgramModule | None = None) -> Callable[..., ProgramMo
         "numpy": np,
         "numpy.linalg": np.linalg,
         "numpy.random": np.random,
-        "math": _math(),
+        "math": _members("math", math, tuple(n for n in dir(math) if not n.startswith("_"))),
         "typing": ProgramModule(__name__="<typing>", **{n: TypeHint(n) for n in TYPING_NAMES}),
         "time": _members("time", time, TIME_NAMES),
         "random": _members("random", random.Random(), RANDOM_NAMES),  # a generator of the program's own
@@ -107,5 +104,4 @@ def import_violations(node: ast.Import | ast.ImportFrom) -> list[str]:
 
 
 def _importable(module: str) -> bool:
-    top, _, rest = module.partition(".")
-    return top in IMPORTABLE and (not rest or (top == "numpy" and rest in ("linalg", "random")))
+    return module in IMPORTABLE or module in SUBMODULES
