@@ -188,6 +188,16 @@ def test_in_full_perception_a_doors_hinge_is_the_one_told_while_it_was_shut():
     assert record.success, (record.error, record.checks)
 
 
+def test_in_full_perception_a_cube_beside_a_footed_bowl_is_taken_level_under_the_bowls_rim():
+    # The bowl was filled down to the table under its rim, walling in the cube a few millimetres from its foot: no
+    # level grasp was left, and the cube could not go in behind the door. The cameras see the table under the rim.
+    program = (CORPUS / "helpers" / "generated" / "into_cupboard.gen_090.py").read_text()
+    spec = TrialSpec("into_cupboard.gen_090", "panda", 0, 1, program, suite="generated", perception="full")
+    record = run_trial(spec)
+    assert record.success, (record.error, record.checks)
+    assert "grasps it from above" not in record.output
+
+
 def test_a_low_thing_gripped_tilted_down_goes_into_the_compartment_with_the_hand_levelled():
     # The UR5e takes the wooden bar (4 cm high) from the side tilted 52 degrees down; pitched like that, the wrist
     # meets the panel over the compartment at every spot.

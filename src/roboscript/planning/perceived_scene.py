@@ -18,6 +18,7 @@ import numpy as np
 from roboscript.geometry import Box3D, Transform
 from roboscript.perception.base import Perception, outside, within
 from roboscript.perception.carcass import carcass_facing, carcass_panels
+from roboscript.perception.carving import SHELL, seen_through
 from roboscript.perception.memory import remembered
 from roboscript.planning.occupancy import VOXEL, occupied_boxes
 from roboscript.planning.scene import PlanningScene
@@ -116,10 +117,18 @@ def sort_points(
     return SceneContents(dict(objects), fixed)
 
 
-def filled_below(points: np.ndarray, floor: float, step: float = OBJECT_VOXEL / 2) -> np.ndarray:
+def filled_below(
+    points: np.ndarray,
+    floor: float,
+    step: float = OBJECT_VOXEL / 2,
+    seen_free: Callable[[np.ndarray], np.ndarray] | None = None,
+) -> np.ndarray:
     """``points`` with each column of them filled down to ``floor``: an object resting on something is solid
     under the surfaces seen from above (its sides and underside are often out of every camera's sight, and a
-    finger must not pass under a banana's seen top). A bowl's inside is filled only below its seen bottom."""
+    finger must not pass under a banana's seen top). A bowl's inside is filled only below its seen bottom.
+    ``seen_free`` (fill points -> mask) tells the fill a camera saw through, which is left out more than
+    :data:`~roboscript.perception.carving.SHELL` below the column's lowest seen point (the gap under a footed
+    bowl's rim: :mod:`roboscript.perception.carving`)."""
     points = np.asarray(points, dtype=float).reshape(-1, 3)
     if len(points) == 0:
         return points
@@ -127,13 +136,23 @@ def filled_below(points: np.ndarray, floor: float, step: float = OBJECT_VOXEL / 
     keys, inverse = np.unique(columns, axis=0, return_inverse=True)
     lowest = np.full(len(keys), np.inf)
     np.minimum.at(lowest, inverse.reshape(-1), points[:, 2])
-    fill = []
+    fill, depth_below = [], []
     for (i, j), low in zip(keys, lowest, strict=True):
         heights = np.arange(floor, low, step)
         if len(heights):
             xy = (np.array([i, j]) + 0.5) * step
             fill.append(np.column_stack([np.full(len(heights), xy[0]), np.full(len(heights), xy[1]), heights]))
-    return np.vstack([points, *fill]) if fill else points
+            depth_below.append(low - heights)
+    if not fill:
+        return points
+    filled = np.vstack(fill)
+    if seen_free is not None:
+        deep = np.concatenate(depth_below) > SHELL
+        if deep.any():
+            drop = np.zeros(len(filled), dtype=bool)
+            drop[deep] = seen_free(filled[deep])
+            filled = filled[~drop]
+    return np.vstack([points, filled])
 
 
 def carcasses(perception: Perception) -> dict[str, np.ndarray]:
@@ -211,9 +230,7 @@ class PerceivedSceneSource:
             hidden = perception.last_masks()
             scene_points = np.vstack([scene_points, remembered(np.vstack(list(self._memory.values())), frames, hidden)])
         object_boxes = {name: perception.box(name) for name in objects}
-        object_points = {
-            name: filled_below(perception.points(name).points, float(object_boxes[name].lower[2])) for name in objects
-        }
+        object_points = {name: self._filled(name, object_boxes[name], frames) for name in objects}
         parts = {name: perception.box(name) for name in perception.furniture()}
         contents = sort_points(scene_points, object_points, object_boxes, parts)
         # Only fixed surfaces are remembered: an object's are where it was, and it may be carried off.
@@ -222,6 +239,16 @@ class PerceivedSceneSource:
         for name, panels in carcasses(perception).items():
             fixed[name] = np.vstack([fixed.get(name, np.zeros((0, 3))), within_reach(panels, self.mount)])
         return SceneContents(contents.objects, fixed)
+
+    def _filled(self, name: str, box: Box3D, frames: list) -> np.ndarray:
+        """An object's seen points filled down to its underside, less the fill the last look's views saw through."""
+        surface = self.perception.points(name).points
+        hidden = self.perception.last_masks() if frames else []
+
+        def seen_free(fill: np.ndarray) -> np.ndarray:
+            return seen_through(fill, surface, frames, hidden)
+
+        return filled_below(surface, float(box.lower[2]), seen_free=seen_free if frames else None)
 
     def state(self) -> np.ndarray:
         """The scene's ``qpos``: objects where they were seen, the robot's joints as read."""
