@@ -227,3 +227,27 @@ def test_a_motion_into_the_compartment_is_planned_to_its_mouth_and_goes_in_along
         motion.move_to_pose(pose)
         assert np.allclose(planned[0][0], way_in[0])  # planned to the mouth, not into the compartment
         assert np.linalg.norm(backend.tcp_pose().position - pose.position) < 0.01
+
+
+def test_a_position_behind_a_door_goes_to_the_compartments_nearest_spot_and_backs_out_of_the_front():
+    # measured/into_cupboard.gen_084 asked for a spot 15 cm deep in the compartment with the door as receptacle:
+    # taken as a spot on a table, to be left upward under the panel above, no path reached it in full perception.
+    from roboscript.api.compartments import open_side
+    from roboscript.api.place_requests import PlacementError, PlaceRequests
+    from roboscript.assembly import build_perception
+
+    with MujocoBackend(parse_world(_cupboard(door_open=90)), robot="panda", settle=0.3) as backend:
+        perception = build_perception(backend, "gt")
+        requests = PlaceRequests(perception, backend.base_pose().position[:2])
+        inside = backend.ground_truth.holding_box("cabinet.door_0")
+        rotation = np.column_stack([[0.0, 0.0, 1.0], [1.0, 0.0, 0.0], [0.0, 1.0, 0.0]])  # level, into the cabinet
+        tcp = Transform.from_rotation(np.array([0.0, 0.2, 1.0]), rotation)
+        target = np.array([inside.center[0] + 0.05, inside.center[1], inside.upper[2]])
+        request = requests.spots("red_block", "cabinet.door_0", target, tcp)
+        receptacle = perception.receptacle("cabinet.door_0")
+        assert np.allclose(request.retreat, open_side(receptacle))
+        distances = [np.linalg.norm(s.center[:2] - target[:2]) for s in request.spots]
+        assert distances == sorted(distances) and distances[0] < 0.02 and distances[-1] <= 0.15
+        assert all(inside.lower[2] < s.center[2] < inside.upper[2] for s in request.spots)
+        with pytest.raises(PlacementError, match="nearest free spot in it is"):
+            requests.spots("red_block", "cabinet.door_0", target + np.array([0.0, -0.6, 0.0]), tcp)

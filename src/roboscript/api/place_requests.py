@@ -84,6 +84,8 @@ class PlaceRequests:
         go: free spots in or on ``receptacle_name`` (``'table'``: aside on the table; a door: the compartment
         behind it), or the nearest free ones to ``position`` (on that receptacle where one is named, else on
         whatever is under it), nearest first; with the words that say where, for errors."""
+        if position is not None and receptacle_name is not None and kind_of(receptacle_name) == "door":
+            return self._compartment_near(name, receptacle_name, np.asarray(position, dtype=float), tcp)
         if position is not None:
             target = np.asarray(position, dtype=float)
             on = "" if receptacle_name is None else f" on {receptacle_name!r}"
@@ -130,6 +132,24 @@ class PlaceRequests:
                 f"{size[2] * 100:.0f} cm); it holds {', '.join(inside) or 'nothing'}"
             )
         return PlaceRequest(spots, f"in {receptacle.name!r}", retreat=compartments.open_side(receptacle))
+
+    def _compartment_near(self, name: str, door: str, target: np.ndarray, tcp: Transform) -> PlaceRequest:
+        """A position behind a door: the compartment's free spots nearest it (in x and y; the floor decides the
+        height), within :data:`NEAREST_BOUND`. The hand goes in and backs out of the front as for the compartment
+        itself: a position deep in it is no spot on a table to leave upward (the panel above is in the way)."""
+        receptacle = self._receptacle(door, name)
+        others = [o for o in self.perception.objects() if o not in (name, door)]
+        request = self._compartment_request(name, receptacle, others, tcp)
+        spots = sorted(request.spots, key=lambda spot: distance_moved(spot, target))
+        near = [spot for spot in spots if distance_moved(spot, target) <= NEAREST_BOUND]
+        if not near:
+            raise PlacementError(
+                f"{np.round(target[:2], 3).tolist()} has no room for {name!r} within {NEAREST_BOUND * 100:.0f} cm "
+                f"in {door!r}: the nearest free spot in it is {distance_moved(spots[0], target) * 100:.0f} cm away, "
+                f"at {np.round(spots[0].center[:2], 3).tolist()}"
+            )
+        where = f"at {np.round(target, 3).tolist()} in {door!r} or within {NEAREST_BOUND * 100:.0f} cm of it"
+        return PlaceRequest(near, where, target, NEAR_SPACING, PLACE_IK_BUDGET_NEAR, retreat=request.retreat)
 
     def _spots_near(
         self, name: str, receptacle_name: str | None, target: np.ndarray, origin: np.ndarray | None = None
