@@ -3,7 +3,7 @@ prompt, the tool doc-strings, the few-shot examples and a task's query), per tem
 arm and perception mode.
 
 Run: python benchmarks/prompt_corpus.py [--robots panda,ur5e] [--perception gt,full] [--trials 10] [--jobs 2]
-                                        [--styles concise,...] [--out out/prompt_corpus]
+                                        [--styles concise,...] [--suites generated,paper] [--out out/prompt_corpus]
 
 ``tests/data/prompt_corpus/<style>/<suite>/<task_id>.py``: each style and suite runs as ``roboscript bench --suite
 <suite> --policy programs:<folder>`` into ``<out>/<robot>_<perception>/<style>_<suite>``, a run directory: an
@@ -24,11 +24,13 @@ from pathlib import Path
 CORPUS = Path(__file__).resolve().parents[1] / "tests" / "data" / "prompt_corpus"
 
 
-def folders(styles: list[str]) -> list[tuple[str, str, Path]]:
-    """``(style, suite, folder)`` of every folder of programs of the chosen styles."""
+def folders(styles: list[str], suites: list[str] | None = None) -> list[tuple[str, str, Path]]:
+    """``(style, suite, folder)`` of every folder of programs of the chosen styles (and suites: all by default)."""
     out = []
     for style in styles:
         for suite_folder in sorted((CORPUS / style).iterdir()):
+            if suites is not None and suite_folder.name not in suites:
+                continue
             if suite_folder.is_dir() and any(suite_folder.glob("*.py")):
                 out.append((style, suite_folder.name, suite_folder))
     return out
@@ -71,8 +73,12 @@ def main() -> None:
     parser.add_argument("--trials", type=int, default=10)
     parser.add_argument("--jobs", type=int, default=2)
     parser.add_argument("--styles", default=",".join(sorted(p.name for p in CORPUS.iterdir() if p.is_dir())))
+    parser.add_argument("--suites", default="generated,paper", help="the corpus's suites to run: generated, paper")
     parser.add_argument("--out", default="out/prompt_corpus")
     args = parser.parse_args()
+    suites = [s for s in args.suites.split(",") if s]
+    if not suites or set(suites) - {"generated", "paper"}:
+        parser.error(f"--suites takes generated, paper or both (comma-separated), got {args.suites!r}")
     styles = [s for s in args.styles.split(",") if s]
     unknown = [s for s in styles if not (CORPUS / s).is_dir()]
     if unknown:
@@ -81,7 +87,7 @@ def main() -> None:
     for robot in args.robots.split(","):
         for mode in args.perception.split(","):
             tally: dict[str, list[int]] = defaultdict(lambda: [0, 0])
-            for style, suite, folder in folders(styles):
+            for style, suite, folder in folders(styles, suites):
                 directory = Path(args.out) / f"{robot}_{mode}" / f"{style}_{suite}"
                 run(folder, suite, robot, mode, args.trials, args.jobs, directory)
                 for record in records(directory):
