@@ -84,15 +84,15 @@ class PlaceRequests:
         go: free spots in or on ``receptacle_name`` (``'table'``: aside on the table; a door: the compartment
         behind it), or the nearest free ones to ``position`` (on that receptacle where one is named, else on
         whatever is under it), nearest first; with the words that say where, for errors."""
+        others = [o for o in self.perception.objects() if o not in (name, receptacle_name)]
         if position is not None and receptacle_name is not None and kind_of(receptacle_name) == "door":
-            return self._compartment_near(name, receptacle_name, np.asarray(position, dtype=float), tcp)
+            return self._compartment_near(name, receptacle_name, others, np.asarray(position, dtype=float), tcp)
         if position is not None:
             target = np.asarray(position, dtype=float)
             on = "" if receptacle_name is None else f" on {receptacle_name!r}"
             where = f"at {np.round(target, 3).tolist()}{on} or within {NEAREST_BOUND * 100:.0f} cm of it"
             spots = self._spots_near(name, receptacle_name, target, origin)
             return PlaceRequest(spots, where, target, NEAR_SPACING, PLACE_IK_BUDGET_NEAR)
-        others = [o for o in self.perception.objects() if o not in (name, receptacle_name)]
         receptacle = self._receptacle(receptacle_name, name)
         if kind_of(receptacle.name) == "door":
             return self._compartment_request(name, receptacle, others, tcp)
@@ -133,12 +133,13 @@ class PlaceRequests:
             )
         return PlaceRequest(spots, f"in {receptacle.name!r}", retreat=compartments.open_side(receptacle))
 
-    def _compartment_near(self, name: str, door: str, target: np.ndarray, tcp: Transform) -> PlaceRequest:
+    def _compartment_near(
+        self, name: str, door: str, others: list[str], target: np.ndarray, tcp: Transform
+    ) -> PlaceRequest:
         """A position behind a door: the compartment's free spots nearest it (in x and y; the floor decides the
         height), within :data:`NEAREST_BOUND`. The hand goes in and backs out of the front as for the compartment
         itself: a position deep in it is no spot on a table to leave upward (the panel above is in the way)."""
         receptacle = self._receptacle(door, name)
-        others = [o for o in self.perception.objects() if o not in (name, door)]
         request = self._compartment_request(name, receptacle, others, tcp)
         spots = sorted(request.spots, key=lambda spot: distance_moved(spot, target))
         near = [spot for spot in spots if distance_moved(spot, target) <= NEAREST_BOUND]

@@ -17,7 +17,7 @@ from collections.abc import Sequence
 
 import numpy as np
 
-from roboscript.perception.matching import project
+from roboscript.perception.matching import pixel_depths
 from roboscript.robot_io import CameraFrame
 
 SHELL = 0.02  # metres below an object's lowest seen point in a column within which the fill is always kept
@@ -43,27 +43,14 @@ def seen_through(
     for frame, mask in zip(frames, hidden, strict=True):
         if frame.depth is None or not _shows_where_it_is(surface, frame, mask):
             continue
-        depth, z, informative = _depths(fill, frame, mask)
+        depth, z, informative = pixel_depths(fill, frame, mask)
         free |= informative & (depth > z + BEYOND)
     return free
 
 
 def _shows_where_it_is(surface: np.ndarray, frame: CameraFrame, mask: np.ndarray | None) -> bool:
-    depth, z, informative = _depths(surface, frame, mask)
+    depth, z, informative = pixel_depths(surface, frame, mask)
     if not informative.any():
         return False
     through = informative & (depth > z + SEEN_AGAIN)
     return 1.0 - np.count_nonzero(through) / np.count_nonzero(informative) >= LEAST_AGREEMENT
-
-
-def _depths(points: np.ndarray, frame: CameraFrame, mask: np.ndarray | None) -> tuple[np.ndarray, ...]:
-    """Per point: the view's depth at its pixel, its own depth from the camera, and whether the pixel says
-    anything (in the image, a finite depth, not the robot)."""
-    seen = project(points, frame)
-    inside = seen.u >= 0
-    depth = np.zeros(len(points))
-    depth[inside] = frame.depth[seen.v[inside], seen.u[inside]]
-    informative = inside & np.isfinite(depth) & (depth > 0)
-    if mask is not None:
-        informative[inside] &= ~mask[seen.v[inside], seen.u[inside]]
-    return depth, seen.z, informative

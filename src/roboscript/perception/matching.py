@@ -51,6 +51,22 @@ def project(points: np.ndarray, frame: CameraFrame, tolerance: float = VISIBILIT
     return Projection(u, v, seen, z)
 
 
+def pixel_depths(
+    points: np.ndarray, frame: CameraFrame, mask: np.ndarray | None = None
+) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """Per point: the view's depth at its pixel, the point's own depth from the camera, and whether the pixel says
+    anything (in the image, a finite positive depth, not among ``mask``'s pixels: the robot's, which say nothing of
+    what is behind them)."""
+    seen = project(points, frame)
+    inside = seen.u >= 0
+    depth = np.zeros(len(points))
+    depth[inside] = frame.depth[seen.v[inside], seen.u[inside]]
+    informative = inside & np.isfinite(depth) & (depth > 0)
+    if mask is not None:
+        informative[inside] &= ~mask[seen.v[inside], seen.u[inside]]
+    return depth, seen.z, informative
+
+
 def membership(projection: Projection, box: tuple[int, int, int, int]) -> np.ndarray:
     """The box's binary vector: visible points whose pixel lies in the box."""
     x0, y0, x1, y1 = box

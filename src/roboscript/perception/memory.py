@@ -12,7 +12,7 @@ from collections.abc import Sequence
 
 import numpy as np
 
-from roboscript.perception.matching import VISIBILITY_TOLERANCE, project
+from roboscript.perception.matching import VISIBILITY_TOLERANCE, pixel_depths
 from roboscript.robot_io import CameraFrame
 
 
@@ -31,12 +31,6 @@ def remembered(
     for frame, mask in zip(frames, hidden, strict=True):
         if frame.depth is None or not np.isfinite(frame.depth).any():
             continue
-        seen = project(old, frame, tolerance)
-        inside = seen.u >= 0
-        depth = np.zeros(len(old))
-        depth[inside] = frame.depth[seen.v[inside], seen.u[inside]]
-        informative = inside & np.isfinite(depth) & (depth > 0)
-        if mask is not None:
-            informative[inside] &= ~mask[seen.v[inside], seen.u[inside]]
-        keep &= ~(informative & (depth > seen.z - tolerance))  # seen through, or seen again
+        depth, z, informative = pixel_depths(old, frame, mask)
+        keep &= ~(informative & (depth > z - tolerance))  # seen through, or seen again
     return old[keep]

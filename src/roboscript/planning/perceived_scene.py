@@ -226,11 +226,11 @@ class PerceivedSceneSource:
         objects = perception.objects()
         scene_points = within_reach(perception.scene_points(), self.mount)
         frames = perception.last_frames()
+        hidden = perception.last_masks() if frames else []
         if frames and self._memory:
-            hidden = perception.last_masks()
             scene_points = np.vstack([scene_points, remembered(np.vstack(list(self._memory.values())), frames, hidden)])
         object_boxes = {name: perception.box(name) for name in objects}
-        object_points = {name: self._filled(name, object_boxes[name], frames) for name in objects}
+        object_points = {name: self._filled(name, object_boxes[name], frames, hidden) for name in objects}
         parts = {name: perception.box(name) for name in perception.furniture()}
         contents = sort_points(scene_points, object_points, object_boxes, parts)
         # Only fixed surfaces are remembered: an object's are where it was, and it may be carried off.
@@ -240,10 +240,10 @@ class PerceivedSceneSource:
             fixed[name] = np.vstack([fixed.get(name, np.zeros((0, 3))), within_reach(panels, self.mount)])
         return SceneContents(contents.objects, fixed)
 
-    def _filled(self, name: str, box: Box3D, frames: list) -> np.ndarray:
-        """An object's seen points filled down to its underside, less the fill the last look's views saw through."""
+    def _filled(self, name: str, box: Box3D, frames: list, hidden: list) -> np.ndarray:
+        """An object's seen points filled down to its underside, less the fill the last look's views (``hidden``:
+        their robot pixels) saw through."""
         surface = self.perception.points(name).points
-        hidden = self.perception.last_masks() if frames else []
 
         def seen_free(fill: np.ndarray) -> np.ndarray:
             return seen_through(fill, surface, frames, hidden)
