@@ -44,9 +44,15 @@ def _reader_groups(task, world: WorldSpec) -> dict[str, set[str]]:
     return groups
 
 
+def _says_what_moves(check) -> bool:
+    """A check of what the instruction asks to be done, not of what it implies stays as it was (negated, or an
+    object's own start)."""
+    return not check.negate and not (check.kind == "at" and check.start_of == check.subject)
+
+
 def _checked(task) -> dict[str, set[str]]:
     out: dict[str, set[str]] = {}
-    for check in task.checks:
+    for check in filter(_says_what_moves, task.checks):
         out.setdefault(check.target, set()).add(check.subject)
     return out
 
@@ -79,7 +85,7 @@ def test_every_other_generated_check_names_things_its_instruction_names():
         if task.id.startswith(collective):
             continue
         words = task.instruction.replace(" ", "_")
-        for check in task.checks:
+        for check in filter(_says_what_moves, task.checks):
             for name in (check.subject, check.target, check.start_of):
                 if name and not name.startswith("cabinet"):
                     assert name in words, (task.id, name, task.instruction)
@@ -90,7 +96,7 @@ def test_clear_table_checks_only_things_that_are_no_receptacles():
         if task.id.startswith("clear_table"):
             world = load_world(task.world)
             pickable = {o.name for o in world.objects if o.type.pickable}
-            assert {c.subject for c in task.checks} <= pickable
+            assert {c.subject for c in task.checks if _says_what_moves(c)} <= pickable
 
 
 def test_the_library_colours_are_those_the_names_say():

@@ -120,6 +120,8 @@ def _suite(**task) -> dict:
         ({"checks": [{"on": ["apple", "table"], "not": "yes"}]}, "field 'not' must be true or false"),
         ({"checks": [{"joint": "cabinet.drawer_1"}]}, "'joint' takes above: VALUE"),
         ({"checks": [{"at": "apple", "position": [0, 1]}]}, "field 'position' must be a list of 3 numbers"),
+        ({"checks": [{"at": "apple", "start_of": "apple", "within": 0}]}, "'within' is how near in metres, a number"),
+        ({"checks": [{"at": "apple", "start_of": "apple", "within": "5 cm"}]}, "field 'within' must be a finite"),
         ({"label": 3}, "field 'label' must be text, got int 3"),
     ],
 )
@@ -142,17 +144,21 @@ def test_a_suite_file_of_ones_own_runs_by_path(tmp_path):
         "      - in: [apple, footed_bowl]\n"
         "      - {on: [apple, table], not: true}\n"
         "      - {joint: cabinet.drawer_0, above: 0.1}\n"
+        "      - {at: footed_bowl, start_of: footed_bowl, within: 0.05}\n"
     )
     (task,) = load_suite(str(suite)).values()
     backend = MujocoBackend(task.world, settle=0.2)
     results = [c.evaluate(backend.ground_truth) for c in task.build_checks(backend.ground_truth)]
+    backend_bowl = backend.ground_truth.box("footed_bowl").center
     backend.close()
     assert [r.name for r in results] == [
         "in(apple, footed_bowl)",
         "not on(apple, table)",
         "joint(cabinet.drawer_0) > 0.1",
+        f"at(footed_bowl, [{', '.join(f'{v:.3f}' for v in backend_bowl)}]) within 0.05 m",
     ]
-    assert [r.passed for r in results] == [False, False, False]  # the apple is on the table, the drawer closed
+    # the apple is on the table, the drawer closed, the bowl where it was
+    assert [r.passed for r in results] == [False, False, False, True]
 
 
 def test_the_tasks_command_shows_the_original_queries():

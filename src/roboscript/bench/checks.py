@@ -2,9 +2,10 @@
 
 ``in(a, b)``: at least 80% of a's box volume inside b's box (a door's: its compartment's), both in b's own axes.
 ``on(a, b)``: a's bottom above b's bottom and at least 80% of a's footprint over b's. ``at(a, p)``: a's centre within
-0.1 m of p. ``joint(j) > x``: a drawer or door opened beyond x (metres or radians). ``near(a, b)``: a beside b, their
-footprints at most 8 cm apart and less than 20% of either's over the other's (neither on nor in the other). Any of
-them negated (the original's ``flag_not``): ``not in(a, b)``.
+0.1 m of p (or the check's own distance: ``at(a, p) within 0.05 m``). ``joint(j) > x``: a drawer or door opened
+beyond x (metres or radians). ``near(a, b)``: a beside b, their footprints at most 8 cm apart and less than 20% of
+either's over the other's (neither on nor in the other). Any of them negated (the original's ``flag_not``):
+``not in(a, b)``.
 """
 
 from __future__ import annotations
@@ -39,7 +40,8 @@ class CheckResult:
 
 @dataclass(frozen=True)
 class Check:
-    """One check of a task; ``kind`` is in/on/at/joint; ``negate``: it passes when the relation does not hold."""
+    """One check of a task; ``kind`` is in/on/near/at/joint; ``threshold``: how far a joint must be open, or how
+    near ``at`` must be (:data:`AT_TOLERANCE` where 0); ``negate``: it passes when the relation does not hold."""
 
     kind: str
     subject: str
@@ -52,6 +54,8 @@ class Check:
     def name(self) -> str:
         if self.kind == "at":
             text = f"at({self.subject}, [{', '.join(f'{v:.3f}' for v in self.point)}])"
+            if self.threshold:
+                text += f" within {self.threshold:g} m"
         elif self.kind == "joint":
             text = f"joint({self.subject}) > {self.threshold:g}"
         else:
@@ -88,7 +92,7 @@ class Check:
             )
         if self.kind == "at":
             distance = float(np.linalg.norm(gt.box(self.subject).center - np.asarray(self.point)))
-            return CheckResult(self.name, distance <= AT_TOLERANCE, f"{distance:.3f} m away")
+            return CheckResult(self.name, distance <= (self.threshold or AT_TOLERANCE), f"{distance:.3f} m away")
         if self.kind == "joint":
             value = gt.joint(self.subject).value
             return CheckResult(self.name, value > self.threshold, f"at {value:.3f}")
@@ -149,8 +153,8 @@ def on(a: str, b: str) -> Check:
     return Check("on", a, b)
 
 
-def at(a: str, point) -> Check:
-    return Check("at", a, point=tuple(float(v) for v in point))
+def at(a: str, point, within: float = 0.0) -> Check:
+    return Check("at", a, point=tuple(float(v) for v in point), threshold=within)
 
 
 def joint_above(part: str, threshold: float) -> Check:

@@ -16,6 +16,7 @@ A suite file names the suite and lists its tasks; each task names its world, giv
           - near: [apple, banana]              # beside it: at most 8 cm apart, not on it
           - {at: apple, start_of: banana}      # within 10 cm of where the banana was at the start
           - {at: apple, position: [0.1, 0.2, 0.86]}
+          - {at: banana, start_of: banana, within: 0.05}   # stayed within 5 cm of where it was
           - {joint: cabinet.drawer_1, above: 0.15}   # opened beyond 15 cm (radians for doors)
           - {on: [apple, white_ceramic_plate], not: true}   # the check must fail
 
@@ -65,12 +66,14 @@ class CheckSpec:
     position: tuple[float, float, float] | None = None  # at: a fixed point
     above: float = 0.0  # joint: opened beyond this (metres or radians)
     negate: bool = False
+    within: float = 0.0  # at: how near, in metres (the checks' default where 0)
 
     def resolve(self, gt: GroundTruth) -> Check:
         point = self.position
         if self.kind == "at" and self.start_of:
             point = tuple(float(v) for v in gt.box(self.start_of).center)
-        return Check(self.kind, self.subject, self.target, point, self.above, self.negate)
+        threshold = self.within if self.kind == "at" else self.above
+        return Check(self.kind, self.subject, self.target, point, threshold, self.negate)
 
     def describe(self) -> str:
         """The check in words of the file's form, e.g. ``in(apple, footed_bowl)``, ``at(apple, start of banana)``."""
@@ -78,7 +81,7 @@ class CheckSpec:
             text = f"{self.kind}({self.subject}, {self.target})"
         elif self.kind == "at":
             where = f"start of {self.start_of}" if self.start_of else str(list(self.position or ()))
-            text = f"at({self.subject}, {where})"
+            text = f"at({self.subject}, {where})" + (f" within {self.within:g} m" if self.within else "")
         else:
             text = f"joint({self.subject}) > {self.above:g}"
         return f"not {text}" if self.negate else text
@@ -192,7 +195,8 @@ def _parse_check(source: str, entry_name: str, data: Any, world: WorldSpec) -> C
             source, entry_name, f"a check names exactly one of {', '.join(CHECK_KINDS)}; got {sorted(map(str, data))}"
         )
     kind = kinds[0]
-    extra = {"in": set(), "on": set(), "near": set(), "at": {"start_of", "position"}, "joint": {"above"}}[kind]
+    at_fields = {"start_of", "position", "within"}
+    extra = {"in": set(), "on": set(), "near": set(), "at": at_fields, "joint": {"above"}}[kind]
     entry = _entry(source, entry_name, data, {kind, "not", *extra})
     negate = data.get("not", False)
     if not isinstance(negate, bool):
@@ -215,15 +219,18 @@ def _relation_check(entry: Reader, kind: str, world: WorldSpec, negate: bool) ->
 
 
 def _at_check(entry: Reader, kind: str, world: WorldSpec, negate: bool) -> CheckSpec:
-    """``{at: object, start_of: other}`` or ``{at: object, position: [x, y, z]}``."""
+    """``{at: object, start_of: other}`` or ``{at: object, position: [x, y, z]}``, optionally ``within: metres``."""
     objects = world.object_names()
     subject = _name_check(entry, entry.data["at"], objects, "objects")
     if ("start_of" in entry.data) == ("position" in entry.data):
         entry.fail("'at' takes either start_of: OBJECT (where it was at the start) or position: [x, y, z]")
+    within = entry.number("within") if "within" in entry.data else 0.0
+    if "within" in entry.data and not within > 0:
+        entry.fail(f"'within' is how near in metres, a number above 0, e.g. within: 0.05; got {within!r}")
     if "start_of" in entry.data:
         start = _name_check(entry, entry.data["start_of"], objects, "objects")
-        return CheckSpec(kind, subject, start_of=start, negate=negate)
-    return CheckSpec(kind, subject, position=entry.vector("position", (3,)), negate=negate)
+        return CheckSpec(kind, subject, start_of=start, negate=negate, within=within)
+    return CheckSpec(kind, subject, position=entry.vector("position", (3,)), negate=negate, within=within)
 
 
 def _joint_check(entry: Reader, kind: str, world: WorldSpec, negate: bool) -> CheckSpec:

@@ -29,16 +29,17 @@ from roboscript.generate.programs import (
     words,
 )
 from roboscript.generate.scene import DRAWER_HEIGHT_LIMIT, KINDS, Scene, fits, in_or_on, room_for
+from roboscript.generate.stays import DRAWER_SHUT, others, stays_out, stays_put, stays_shut
 from roboscript.objects.reading import said_colour, said_kind
 from roboscript.sim.world_file import ROBOT_BASE_XY
 
-DRAWER_SHUT = 0.03  # metres a drawer may stay out and count as closed
 NEAR_GAP = 0.03  # how far beside its target the oracle puts a thing (the `near` check allows 8 cm)
 
 
 @dataclass(frozen=True)
 class TemplateTask:
-    """One instance of a family: the instruction, the checks (in the task file's form) and the oracle program."""
+    """One instance of a family: the instruction, the checks (in the task file's form: what must be done, then
+    what must stay as it was, :mod:`roboscript.generate.stays`) and the oracle program."""
 
     family: str
     instruction: str
@@ -75,7 +76,8 @@ def into_container(scene: Scene, rng: np.random.Generator) -> TemplateTask | Non
     phrasings = ("put the {t} into the {c}", "place the {t} in the {c}", "move the {t} into the {c}")
     instruction = _say(rng, phrasings, t=thing, c=container)
     program = move_into(Program(instruction), thing, container)
-    return TemplateTask("into_container", instruction, (_put_into(scene, thing, container),), program.text())
+    checks = (_put_into(scene, thing, container), *stays_out(scene, container, others(scene, thing)))
+    return TemplateTask("into_container", instruction, checks, program.text())
 
 
 def onto_plate(scene: Scene, rng: np.random.Generator) -> TemplateTask | None:
@@ -93,7 +95,8 @@ def onto_plate(scene: Scene, rng: np.random.Generator) -> TemplateTask | None:
     phrasings = ("put the {t} on the {p}", "place the {t} onto the {p}", "set the {t} down on the {p}")
     instruction = _say(rng, phrasings, t=thing, p=plate)
     program = move_into(Program(instruction), thing, plate, onto=True)
-    return TemplateTask("onto_plate", instruction, ({"on": [thing, plate]},), program.text())
+    checks = ({"on": [thing, plate]}, *stays_out(scene, plate, others(scene, thing)))
+    return TemplateTask("onto_plate", instruction, checks, program.text())
 
 
 def into_drawer(scene: Scene, rng: np.random.Generator) -> TemplateTask | None:
@@ -118,7 +121,7 @@ def into_drawer(scene: Scene, rng: np.random.Generator) -> TemplateTask | None:
         f"The drawer is closed: pull it open by its handle ({handle}).", f"open_drawer({drawer!r}, {handle!r})"
     )
     move_into(program, thing, drawer)
-    checks = ({"joint": drawer, "above": 0.1}, {"in": [thing, drawer]})
+    checks = ({"joint": drawer, "above": 0.1}, {"in": [thing, drawer]}, *stays_shut(scene, [drawer]))
     return TemplateTask("into_drawer", instruction, checks, program.text())
 
 
@@ -142,7 +145,7 @@ def stack(scene: Scene, rng: np.random.Generator) -> TemplateTask | None:
         f"The {words(base)}'s top is where the {words(top)} goes.", f"base = get_object_center_position({base!r})"
     )
     move_to(program, top, "base", f"Pick up the {words(top)} and set it down on the {words(base)}.")
-    return TemplateTask("stack", instruction, ({"on": [top, base]},), program.text())
+    return TemplateTask("stack", instruction, ({"on": [top, base]}, *stays_put([base])), program.text())
 
 
 def swap(scene: Scene, rng: np.random.Generator) -> TemplateTask | None:
@@ -165,7 +168,8 @@ def swap(scene: Scene, rng: np.random.Generator) -> TemplateTask | None:
     move_into(program, a, "table").plan[-1] = f"Put the {words(a)} aside on the table, out of the way."
     move_to(program, b, f"{a}_position", f"Put the {words(b)} where the {words(a)} was.")
     move_to(program, a, f"{b}_position", f"Put the {words(a)} where the {words(b)} was.")
-    checks = ({"at": a, "start_of": b}, {"at": b, "start_of": a})
+    rest = [n for n in scene.placements if n not in (a, b)]
+    checks = ({"at": a, "start_of": b}, {"at": b, "start_of": a}, *stays_put(rest))
     return TemplateTask("swap", instruction, checks, program.text())
 
 
@@ -243,6 +247,10 @@ def sort(scene: Scene, rng: np.random.Generator) -> TemplateTask | None:
         for thing in group:
             move_into(program, thing, receptacle, onto=scene.type(receptacle).shape == "flat")
             checks.append(_put_into(scene, thing, receptacle))
+    say = said_colour if by == "colour" else said_kind
+    for key, _, receptacle in read:
+        # Things whose names say another colour or kind stay off; those whose names say none are left open.
+        checks += stays_out(scene, receptacle, [n for n in others(scene) if say(n) not in (None, key)])
     return TemplateTask(f"sort_by_{by}", instruction, tuple(checks), program.text())
 
 
@@ -268,7 +276,7 @@ def clear_table(scene: Scene, rng: np.random.Generator) -> TemplateTask | None:
     program = Program(instruction)
     for thing in things:
         move_into(program, thing, container)
-    checks = tuple(_put_into(scene, t, container) for t in things)
+    checks = (*(_put_into(scene, t, container) for t in things), *stays_put(scene.receptacles))
     return TemplateTask("clear_table", instruction, checks, program.text())
 
 
@@ -304,7 +312,7 @@ def next_to(scene: Scene, rng: np.random.Generator) -> TemplateTask | None:
         f"spot = spot_beside({target!r}, {thing!r}, {obstacles!r})",
     )
     move_to(program, thing, "spot", f"Pick up the {words(thing)} and put it down there.")
-    return TemplateTask("next_to", instruction, ({"near": [thing, target]},), program.text())
+    return TemplateTask("next_to", instruction, ({"near": [thing, target]}, *stays_put([target])), program.text())
 
 
 DOOR_OPEN = 0.7  # radians (40 degrees) past which a door counts as open
@@ -323,7 +331,8 @@ def open_door(scene: Scene, rng: np.random.Generator) -> TemplateTask | None:
     program.step(
         f"The door turns on its hinge: swing it open by its handle ({handle}).", f"open_door({door!r}, {handle!r})"
     )
-    return TemplateTask("open_door", instruction, ({"joint": door, "above": DOOR_OPEN},), program.text())
+    checks = ({"joint": door, "above": DOOR_OPEN}, *stays_shut(scene, [door]))
+    return TemplateTask("open_door", instruction, checks, program.text())
 
 
 def close_drawer(scene: Scene, rng: np.random.Generator) -> TemplateTask | None:
@@ -342,7 +351,7 @@ def close_drawer(scene: Scene, rng: np.random.Generator) -> TemplateTask | None:
         f"The {ordinal} drawer is pulled out: push it shut by its handle ({handle}).",
         f"close_drawer({drawer!r}, {handle!r})",
     )
-    checks = ({"joint": drawer, "above": DRAWER_SHUT, "not": True},)
+    checks = ({"joint": drawer, "above": DRAWER_SHUT, "not": True}, *stays_shut(scene, [drawer]))
     return TemplateTask("close_drawer", instruction, checks, program.text())
 
 
@@ -386,7 +395,7 @@ def into_cupboard(scene: Scene, rng: np.random.Generator) -> TemplateTask | None
         f"pick_from_side({thing!r})",
         f"put({thing!r}, parse_place_pose(object_name={thing!r}, receptacle_name={door!r}))",
     )
-    checks = ({"joint": door, "above": DOOR_OPEN}, {"in": [thing, door]})
+    checks = ({"joint": door, "above": DOOR_OPEN}, {"in": [thing, door]}, *stays_shut(scene, [door]))
     return TemplateTask("into_cupboard", instruction, checks, program.text())
 
 

@@ -90,8 +90,9 @@ def generate_tasks(
 # The template suites' version (docs/generation.md lists what each changed): 2 fixed three sorting tasks' checks to
 # what their words select, 3 added worlds of a cupboard and the families that open its door and close its drawers,
 # 4 worlds of a cupboard facing the robot and the family that puts things behind its door, 5 measures ``in`` in
-# the receptacle's own axes; the worlds, ids and instructions of earlier versions are kept.
-SUITE_VERSION = 5
+# the receptacle's own axes, 6 checks what the words imply stays as it was (:mod:`roboscript.generate.stays`); the
+# worlds, ids and instructions of earlier versions are kept.
+SUITE_VERSION = 6
 
 
 def write_suite(tasks: Sequence[GeneratedTask], folder: str | Path, name: str, description: str) -> Path:
