@@ -1,0 +1,167 @@
+# Task: put the wooden block on the brown box
+# Plan:
+# 1. Detect everything; note where the other things are (the brown box among them: it must stay put).
+# 2. Grasp the wooden block from above across its narrower side (the adaptive grasp if that does not fit or the
+#    fingers close on nothing), lift it well clear.
+# 3. Place it on top of the brown box (stacking on its flat top), release it, move up.
+# 4. Look again: the block's bottom must rest on the box's top with its middle over the box; if not, pick it
+#    up again and place it at the middle of the box's top.
+# 5. Check nothing else has moved.
+ROBOT_ERRORS = (FailureError, GraspError, PlacementError, ReceptacleFullError, CompartmentError, PlanningError, IKError)
+FIXTURE_WORDS = ('plate', 'saucer', 'bowl', 'basket')  # these stay where they are
+
+
+def vec(values):
+    # A plain list of floats for the tools' vector arguments.
+    return [float(v) for v in values]
+
+
+def approach_axis(pose):
+    # The gripper's approach (z) axis from its quaternion.
+    x, y, z, w = pose.orientation.x, pose.orientation.y, pose.orientation.z, pose.orientation.w
+    return np.array([2 * (x * z + w * y), 2 * (y * z - w * x), 1 - 2 * (x * x + y * y)])
+
+
+def move_if_possible(axis, distance):
+    # A lift or retreat whose failure does no harm.
+    try:
+        move_in_direction(vec(axis), distance)
+    except ROBOT_ERRORS:
+        pass
+
+
+def back_off(distance):
+    # Straight back along the hand's approach axis.
+    move_if_possible(-approach_axis(get_gripper_pose()), distance)
+
+
+def things_on_table():
+    # Every name but the table and the furniture with its parts.
+    return [n for n in get_object_name_list() if n != 'table' and not n.startswith('cabinet')]
+
+
+def xy_inside(point, box, margin):
+    # Whether point's x, y lie within the box's x, y extent (widened by margin).
+    return bool(box[0] - margin <= point[0] <= box[3] + margin and box[1] - margin <= point[1] <= box[4] + margin)
+
+
+def positions(names):
+    # Copies of the present centres (call detect_objects() first).
+    return {n: np.array(get_object_center_position(n), dtype=float) for n in names}
+
+
+def report_moved(before, tolerance=0.03):
+    # Look again and name anything the task did not mention that has moved.
+    detect_objects()
+    moved = []
+    for n, p in before.items():
+        now = get_object_center_position(n)
+        if np.hypot(now[0] - p[0], now[1] - p[1]) > tolerance:
+            moved.append(n)
+    if moved:
+        print('[warning] moved though the task did not ask for it: ' + ', '.join(moved))
+    return moved
+
+
+def default_grasps(name):
+    # The grasp follows the shape: mugs and cups by rim or handle (adaptive grasp, from above); compact things
+    # (blocks, cubes, boxes, balls, bottles, cans, fruit) from above across their narrower side. The other kind
+    # follows if the first does not fit (wider than the opening) or closes on nothing.
+    top = ('from above', lambda: parse_central_lift_grasp_pose(object_name=name, description='center'))
+    adaptive = ('adaptive', lambda: parse_adaptive_shape_grasp_pose(object_name=name, preferred_approach_direction=[0, 0, -1]))
+    if 'mug' in name or 'cup' in name:
+        return [adaptive, top]
+    return [top, adaptive]
+
+
+def pick(name, grasps):
+    # Try the grasp kinds in order; one that does not fit, cannot be reached or closes on nothing is followed
+    # by the next. Once held, lift 10 cm more (attach_object already lifts 5 cm).
+    problems = []
+    for label, make_pose in grasps:
+        detect_objects(object_list=[name])
+        try:
+            pose = make_pose()
+        except ROBOT_ERRORS as error:
+            problems.append('%s: %s' % (label, error))
+            continue
+        open_gripper()
+        try:
+            grasp(pose)
+            close_gripper()
+            attach_object(name)
+        except ROBOT_ERRORS as error:
+            problems.append('%s: %s' % (label, error))
+            open_gripper()
+            back_off(0.1)
+            continue
+        move_if_possible([0, 0, 1], 0.1)
+        return
+    raise RuntimeError('could not pick up %s (%s)' % (name, '; '.join(problems)))
+
+
+def release(name, retreat_up=True):
+    # Let go, tell the planner, move away (up, or back out the way the hand came).
+    open_gripper()
+    detach_object(name)
+    if retreat_up:
+        move_if_possible([0, 0, 1], 0.1)
+    else:
+        back_off(0.1)
+
+
+def set_down(name, options, retreat_up=True):
+    # options: (receptacle, position) pairs tried in order; True once the held object is let go.
+    for receptacle, position in options:
+        spot = None if position is None else vec(position)
+        try:
+            move_to_pose(parse_place_pose(object_name=name, receptacle_name=receptacle, position=spot))
+        except ROBOT_ERRORS:
+            continue
+        release(name, retreat_up)
+        return True
+    return False
+
+
+def set_back(name, home):
+    # It cannot go where asked: put it back where it was (or aside on the table) rather than hold it.
+    if not set_down(name, [(None, home), ('table', None)]):
+        raise RuntimeError('%s is still held: it can be set down neither as asked nor back where it was' % name)
+
+
+def transfer(name, options, holds, grasps=None, retreat_up=True):
+    # Pick `name` up and set it down by the first workable (receptacle, position) option; holds(), after a
+    # fresh look, says whether the result is right. If not, once more another way: pick it up again with the
+    # next grasp kind first and the next option first.
+    for attempt in range(2):
+        detect_objects()
+        home = np.array(get_object_center_position(name), dtype=float)
+        kinds = grasps if grasps is not None else default_grasps(name)
+        g = attempt % len(kinds)
+        pick(name, kinds[g:] + kinds[:g])
+        o = attempt % len(options)
+        if not set_down(name, options[o:] + options[:o], retreat_up):
+            set_back(name, home)
+            raise RuntimeError('could not set %s down as asked: no reachable free place' % name)
+        detect_objects()
+        if holds():
+            return
+    raise RuntimeError('%s is not where it was asked to go, even after a second try' % name)
+
+
+BLOCK, BOX = 'wooden_block', 'brown_box'
+
+
+def on_box():
+    centre = get_object_center_position(BLOCK)
+    block = get_3d_bbox(BLOCK)
+    box = get_3d_bbox(BOX)
+    return xy_inside(centre, box, 0.0) and bool(abs(block[2] - box[5]) <= 0.03)
+
+
+detect_objects()
+things_before = positions([n for n in things_on_table() if n != BLOCK])
+box_mid = get_object_center_position(BOX)
+box_top_middle = [box_mid[0], box_mid[1], get_3d_bbox(BOX)[5]]
+transfer(BLOCK, [(BOX, None), (BOX, box_top_middle)], on_box)
+report_moved(things_before)
