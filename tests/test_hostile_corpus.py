@@ -64,6 +64,7 @@ def _answers() -> dict:
         "get_3d_bbox": np.array([0.45, -0.05, 0.0, 0.55, 0.05, 0.1]),
         "get_object_joint_info": joint,
         "get_plane_normal": np.array([1.0, 0.0, 0.0]),
+        "is_object_in": False,
         "parse_central_lift_grasp_pose": pose,
         "parse_horizontal_grasp_pose": pose,
         "parse_adaptive_shape_grasp_pose": pose,

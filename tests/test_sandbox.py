@@ -61,6 +61,11 @@ HOSTILE = [
     ("m = print.__self__", FORBIDDEN, ".__self__"),
     ("def f():\n    pass\nf.__name__ = 'g'", FORBIDDEN, ".__name__"),  # read only
     ("n = np.__name__.__class__", FORBIDDEN, ".__class__"),
+    ("t = type", FORBIDDEN, "'type' is not allowed"),  # type only as type(x).__name__
+    ("C = type('C', (), {}).__name__", FORBIDDEN, "'type' is not allowed"),
+    ("m = type(type(1)).__name__", FORBIDDEN, "'type' is not allowed"),
+    ("m = type(1).mro()", FORBIDDEN, ".mro"),
+    ("d = type(1).__dict__", FORBIDDEN, ".__dict__"),
     ("g = Pose.__init__.__globals__", FORBIDDEN, ".__init__"),
     ("d = vars(np)", FORBIDDEN, "'vars' is not allowed"),
     ("breakpoint()", FORBIDDEN, "'breakpoint' is not allowed"),
@@ -321,6 +326,20 @@ def test_a_time_limit_stretches_with_the_machines_load_up_to_a_cap(monkeypatch):
     assert Limits(timeout=10.0).scaled_to_load().timeout == 40.0  # an endless loop still ends
     monkeypatch.setattr(os, "getloadavg", lambda: (0.1, 0.0, 0.0))
     assert Limits(timeout=10.0).scaled_to_load().describe() == "10 s limit"
+
+
+def test_a_program_may_name_an_errors_class_in_its_message_and_reach_nothing_from_it():
+    program = (
+        "try:\n    x = [1][2]\nexcept Exception as e:\n    print(f'{type(e).__name__}: {e}')\n"
+        "print(type(np.zeros(2)).__name__, type(1.5).__name__)\n"
+    )
+    result = execute(program, {}, Limits(timeout=5))
+    assert result.outcome is Outcome.OK and result.error is None
+    assert result.output == "IndexError: list index out of range\nndarray float\n"
+    # What type(x) gives at run time is the name and nothing else: no class to call or climb.
+    from roboscript.codegen.sandbox import type_name
+
+    assert type_name(ValueError("x")).__name__ == "ValueError" and not callable(type_name(1))
 
 
 def test_a_program_may_read_a_functions_name_for_its_messages():

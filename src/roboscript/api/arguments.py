@@ -65,6 +65,20 @@ def direction(value: object, field: str) -> np.ndarray:
     return array / norm
 
 
+def names(value: object, field: str) -> list[str]:
+    """A list of names (a single string is refused: it would be read letter by letter)."""
+    if isinstance(value, str) or not isinstance(value, (list, tuple)) or not all(isinstance(n, str) for n in value):
+        raise ArgumentTypeError(f"{field} must be a list of names, e.g. ['apple', 'bowl'], got {value!r}")
+    return list(value)
+
+
+def whole(value: object, field: str, least: int, most: int) -> int:
+    """A whole number within ``[least, most]``."""
+    if isinstance(value, bool) or not isinstance(value, (int, np.integer)) or not least <= value <= most:
+        raise ArgumentError(f"{field} must be a whole number in [{least}, {most}], got {value!r}")
+    return int(value)
+
+
 def one_of(value: object, field: str, choices: tuple[str, ...]) -> str:
     """One of ``choices``."""
     if value not in choices:

@@ -15,6 +15,7 @@ from typing import TYPE_CHECKING, Protocol
 
 import numpy as np
 
+from roboscript.api.arguments import ArgumentError
 from roboscript.geometry import Transform
 
 if TYPE_CHECKING:
@@ -63,6 +64,14 @@ class Held:
 
     def __bool__(self) -> bool:
         return bool(self._names)
+
+    def require(self, name: str, tool: str) -> None:
+        """Raises :class:`ArgumentError` naming what the hand holds unless it holds ``name`` (``tool`` needs it)."""
+        if name not in self:
+            raise ArgumentError(
+                f"{tool} needs {name!r} in the gripper (it holds {', '.join(self.names) or 'nothing'}): "
+                f"grasp it, close_gripper() and attach_object({name!r}) first"
+            )
 
     def taken_from(self, name: str) -> np.ndarray | None:
         """Where (x, y) the hand took ``name``, while it holds it; None for what it does not hold."""

@@ -187,3 +187,10 @@ def pose_argument(value: object, field: str) -> Transform:
         )
     within_world(value.position_array(), field)
     return value.to_transform()
+
+
+def pose_list(value: object, field: str) -> list[Transform]:
+    """A tool's non-empty list of Poses as transforms (:func:`pose_argument` each)."""
+    if isinstance(value, Pose) or not isinstance(value, (list, tuple)) or not value:
+        raise ArgumentTypeError(f"{field} must be a non-empty list of Pose, got {type(value).__name__}")
+    return [pose_argument(p, f"{field}[{i}]") for i, p in enumerate(value)]

@@ -27,6 +27,7 @@ DOOR_OPEN_ENOUGH = math.radians(40)  # a door opened less than this closes its c
 CLOSED_DRAWER = 0.04  # metres: a drawer's reachable interior shorter than this is closed
 FLAT_RIM = 0.03  # metres: a receptacle whose rim stands less than this above its floor is a plate or a saucer
 PLATE_EDGE = 0.015  # metres kept inside a plate's outline by what is set down on it (its rim rises there)
+RESTS_ON = 0.03  # metres a thing's bottom may stand off a surface it rests on (a plate's rim, a sagging liner)
 
 
 def top_face(perception: Perception, name: str) -> Receptacle | None:
@@ -189,3 +190,37 @@ def _bears(center: np.ndarray, yaw: float, half_box: np.ndarray, point: np.ndarr
         return True
     overlap = np.clip(np.minimum(half_box, local + half) - np.maximum(-half_box, local - half), 0, None)
     return bool(np.prod(overlap) >= 0.5 * np.prod(2 * np.asarray(half)))
+
+
+def stands_in(perception: Perception, name: str, receptacle_name: str) -> bool:
+    """Whether ``name`` stands in or on ``receptacle_name``: its middle over what the receptacle holds things in or
+    on (a plate's whole top; a basket's inside in its own axes, whose world-aligned box has empty corners where a
+    thing beside a turned basket stands), its bottom no lower than that floor and, within walls, no higher than
+    their top, else within :data:`RESTS_ON` of the surface. On the table means on it itself, not in or on
+    something that stands there."""
+    box = perception.box(name)
+    if receptacle_name == TABLE:  # on the table itself, not in or on something standing there
+        bottom = float(box.lower[2])
+        others = [o for o in perception.objects() if o != name]
+        return abs(bottom - floor_of(table_top(perception))) <= RESTS_ON and not any(
+            _under(perception, o, box.center[:2], bottom) for o in others
+        )
+    region = holds(perception, receptacle_name)
+    if region is None:
+        return False
+    if not contains_xy(whole_surface(perception, region) or region, box.center[:2]):
+        return False
+    floor, bottom = floor_of(region), float(box.lower[2])
+    if has_walls(perception, region):
+        top = float(region.frame.apply(np.array([[0.0, 0.0, region.upper[2]]]))[0, 2])
+        return floor - RESTS_ON <= bottom <= top
+    return floor - RESTS_ON <= bottom <= floor + RESTS_ON
+
+
+def _under(perception: Perception, name: str, point_xy: np.ndarray, bottom: float) -> bool:
+    """Whether what ``name`` holds things in or on lies under ``point_xy`` no higher than ``bottom`` (so that a
+    thing there with its bottom at that height stands in or on it)."""
+    region = holds(perception, name)
+    if region is None:
+        return False
+    return floor_of(region) <= bottom + 0.005 and contains_xy(whole_surface(perception, region) or region, point_xy)

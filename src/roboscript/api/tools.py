@@ -11,16 +11,17 @@ from collections.abc import Sequence
 
 import numpy as np
 
-from roboscript.api.arguments import ArgumentError, ArgumentTypeError, direction, one_of, optional, real, vector
+from roboscript.api.arguments import ArgumentError, direction, names, one_of, optional, real, vector, whole
 from roboscript.api.held import Held, PerceptionFollower, PlanningFollower
 from roboscript.api.joints import JOINT_TYPES, joint_report
 from roboscript.api.moves import Moves
 from roboscript.api.placement import Placer
-from roboscript.api.pose import Pose, pose_argument
+from roboscript.api.pose import Pose, pose_argument, pose_list
 from roboscript.api.program_errors import PROGRAM_ERRORS
 from roboscript.api.retreats import Retreats
 from roboscript.api.signature import tool
 from roboscript.api.spots import DROP
+from roboscript.api.supports import stands_in
 from roboscript.api.touching import Touching, grasp_family
 from roboscript.backends.base import Backend
 from roboscript.grasping.choice import GraspChooser
@@ -40,7 +41,8 @@ class ToolAPI:
 
     TOOL_NAMES = (
         "get_object_name_list", "detect_objects", "get_object_center_position", "get_object_pose", "get_3d_bbox",
-        "get_object_joint_info", "get_plane_normal", "parse_central_lift_grasp_pose", "parse_horizontal_grasp_pose",
+        "get_object_joint_info", "get_plane_normal", "is_object_in", "parse_central_lift_grasp_pose",
+        "parse_horizontal_grasp_pose",
         "parse_adaptive_shape_grasp_pose", "open_gripper", "close_gripper", "get_gripper_pose", "move_to_pose",
         "move_in_direction", "generate_arc_path_around_joint", "follow_path", "grasp", "parse_place_pose",
         "attach_object", "detach_object",
@@ -82,13 +84,7 @@ class ToolAPI:
     def detect_objects(self, object_list: Sequence[str] | None = None) -> None:
         """Looks with the cameras and updates what is known about these names (all if None); returns None.
         Call it first, and again after something moved that you will measure anew (a drawer you pulled open)."""
-        if object_list is not None:
-            if isinstance(object_list, str) or not all(isinstance(n, str) for n in object_list):
-                raise ArgumentTypeError(
-                    f"object_list must be a list of names, e.g. ['apple', 'bowl'], got {object_list!r}"
-                )
-            object_list = list(object_list)
-        self.perception.detect(object_list)
+        self.perception.detect(optional(names, object_list, "object_list"))
         self.motion.world_changed()
 
     @tool
@@ -126,6 +122,14 @@ class ToolAPI:
         """Outward unit normal (``np.array``, 3) of the object's flat face nearest ``position``; at a drawer's or
         door's front it points out of the cabinet."""
         return self.perception.plane_normal(self._name(object_name), vector(position, "position"))
+
+    @tool
+    def is_object_in(self, object_name: str, receptacle_name: str) -> bool:
+        """True when ``object_name`` stands in or on ``receptacle_name`` (a bowl, basket, open drawer or the
+        compartment behind a door; a plate, a flat top, ``'table'``), judged in the receptacle's own axes: a thing
+        beside a turned basket may lie within its world-aligned box, yet is not in it. False for what is held."""
+        name, receptacle = self._name(object_name), self._name(receptacle_name)
+        return name != receptacle and name not in self.held and stands_in(self.perception, name, receptacle)
 
     # --- grasps ----------------------------------------------------------------------------------------------
 
@@ -214,20 +218,16 @@ class ToolAPI:
         ``follow_path``."""
         start, axis = pose_argument(current_pose, "current_pose"), direction(joint_axis, "joint_axis")
         pivot = vector(joint_position, "joint_position")
-        if isinstance(n, bool) or not isinstance(n, (int, np.integer)) or not 1 <= n <= 1000:
-            raise ArgumentError(f"n must be a whole number of waypoints in [1, 1000], got {n!r}")
-        angle = real(angle, "angle")
+        n, angle = whole(n, "n", 1, 1000), real(angle, "angle")
         if abs(angle) > 360:
             raise ArgumentError(f"angle is in degrees and must be within [-360, 360], got {angle}")
-        return [Pose.from_transform(t) for t in arc_poses(start, axis, pivot, int(n), math.radians(angle))]
+        return [Pose.from_transform(t) for t in arc_poses(start, axis, pivot, n, math.radians(angle))]
 
     @tool
     def follow_path(self, path: Sequence[Pose]) -> None:
         """Moves the TCP through the list of Poses, in order, as one Cartesian path, carrying what is attached; a
         door held swings as far along it as the arm reaches (a ``[notice]`` line says how far, if short)."""
-        if isinstance(path, Pose) or not isinstance(path, (list, tuple)) or not path:
-            raise ArgumentTypeError(f"path must be a non-empty list of Pose, got {type(path).__name__}")
-        self.moves.along([pose_argument(p, f"path[{i}]") for i, p in enumerate(path)])
+        self.moves.along(pose_list(path, "path"))
 
     @tool
     def grasp(self, grasp_pose: Pose) -> None:
@@ -261,11 +261,7 @@ class ToolAPI:
             raise ArgumentError(
                 "give receptacle_name (e.g. 'plate', 'cabinet.drawer_1', 'table'), position [x, y, z], or both"
             )
-        if name not in self.held:
-            raise ArgumentError(
-                f"parse_place_pose needs {name!r} in the gripper (it holds {', '.join(self.held.names) or 'nothing'}): "
-                f"grasp it, close_gripper() and attach_object({name!r}) first"
-            )
+        self.held.require(name, "parse_place_pose")
         receptacle = None if receptacle_name is None else self._name(receptacle_name)
         target = None if position is None else vector(position, "position")
         return Pose.from_transform(self.placer.place_pose(name, receptacle, target, self.backend.tcp_pose()))

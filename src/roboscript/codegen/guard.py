@@ -88,6 +88,7 @@ def find_violations(tree: ast.AST) -> list[Violation]:
     # A builtin's name the program binds is its own variable (for object in objects:): the builtin is not among a
     # program's builtins, so where the binding does not reach, the name is unbound. Not those that are there.
     own_names = set(bound) & FORBIDDEN_NAMES - RESERVED
+    type_names = _type_names(tree)
     found = [Violation(line, message) for line, message in classes.violations]
     for node in ast.walk(tree):
         line = getattr(node, "lineno", 0)
@@ -104,7 +105,9 @@ def find_violations(tree: ast.AST) -> list[Violation]:
             continue
         elif isinstance(node, ast.Attribute) and _forbidden_attribute(node):
             found.append(Violation(line, f"the attribute .{node.attr} is not allowed"))
-        elif isinstance(node, ast.Name) and node.id in READABLE_NAMES and isinstance(node.ctx, ast.Load):
+        elif isinstance(node, ast.Name) and (
+            (node.id in READABLE_NAMES and isinstance(node.ctx, ast.Load)) or id(node) in type_names
+        ):
             continue
         elif isinstance(node, ast.Name) and (node.id.startswith("__") or node.id in FORBIDDEN_NAMES - own_names):
             found.append(Violation(line, f"the name {node.id!r} is not allowed"))
@@ -137,6 +140,25 @@ READABLE_NAMES = frozenset({"__name__"})
 # Dunder attributes a program may read: a string, and nothing to be reached from it (a defensive program's
 # messages name the function that failed, ``make_grasp.__name__``).
 READABLE_DUNDERS = frozenset({"__name__"})
+
+
+def _type_names(tree: ast.AST) -> set[int]:
+    """The ``type`` names that stand in ``type(x).__name__``, the one use of ``type`` a program has: the class's
+    name in a message (``f"{type(e).__name__}: {e}"``); any other use of the name is refused, and at run time
+    ``type`` gives nothing but that name (:func:`roboscript.codegen.sandbox.type_name`)."""
+    out = set()
+    for node in ast.walk(tree):
+        call = node.value if isinstance(node, ast.Attribute) and node.attr == "__name__" else None
+        if (
+            isinstance(call, ast.Call)
+            and isinstance(call.func, ast.Name)
+            and call.func.id == "type"
+            and len(call.args) == 1
+            and not isinstance(call.args[0], ast.Starred)
+            and not call.keywords
+        ):
+            out.add(id(call.func))
+    return out
 
 
 def _forbidden_attribute(node: ast.Attribute) -> bool:

@@ -39,6 +39,17 @@ FUNCTION_RULES = """You write one Python function for a robot program, using the
 Answer with one Python code block holding the function's definition (and any helpers it needs), nothing else."""
 
 
+def _kinds_of(root: str) -> str:
+    """The program errors under the one named ``root``, each with the one it is a kind of where that is not
+    ``root`` (``IKError is a PlanningError``)."""
+    kinds = []
+    for name, cls in PROGRAM_ERRORS.items():
+        if name != root and issubclass(cls, PROGRAM_ERRORS[root]):
+            parent = next(b.__name__ for b in cls.__mro__[1:] if b.__name__ in PROGRAM_ERRORS)
+            kinds.append(name if parent == root else f"{name} is a {parent}")
+    return ", ".join(kinds)
+
+
 def tool_reference() -> str:
     """Every tool as ``def name(args):`` with its doc-string, in the API's order."""
     blocks = []
@@ -50,8 +61,8 @@ def tool_reference() -> str:
     pose = "Pose(): a pose with .position.x/.y/.z and .orientation.x/.y/.z/.w (a unit quaternion), all assignable."
     errors = (
         f"Errors a program may catch by name: {', '.join(PROGRAM_ERRORS)}; FailureError is any the robot could not "
-        "do, UsageError any call that was wrong. A program that gives up raises one with a message, e.g. "
-        "raise PlacementError('no free spot on the plate')."
+        f"do ({_kinds_of('FailureError')}), UsageError any call that was wrong ({_kinds_of('UsageError')}). A program "
+        "that gives up raises one with a message, e.g. raise PlacementError('no free spot on the plate')."
     )
     return "\n\n".join(blocks) + "\n\n# " + pose + "\n# " + errors
 

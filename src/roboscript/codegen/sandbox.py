@@ -36,7 +36,7 @@ _SAFE_BUILTIN_NAMES = (
     "StopIteration", "TypeError", "ValueError", "ZeroDivisionError", "NotImplementedError",
 )  # fmt: skip
 
-PROGRAM_BUILTINS = frozenset((*_SAFE_BUILTIN_NAMES, "print"))  # every builtin name a program may call
+PROGRAM_BUILTINS = frozenset((*_SAFE_BUILTIN_NAMES, "print", "type"))  # every builtin name a program may call
 
 
 def safe_numpy() -> types.SimpleNamespace:
@@ -49,9 +49,16 @@ def safe_builtins(output: io.StringIO, np: types.SimpleNamespace | None = None) 
     allowed = {name: getattr(builtins, name) for name in _SAFE_BUILTIN_NAMES}
     allowed["__import__"] = program_importer(np)
     allowed["print"] = lambda *args, sep=" ", end="\n", **_: output.write(sep.join(map(str, args)) + end)
+    allowed["type"] = type_name
     allowed.update(helpers())
     allowed.update(class_builtins())
     return allowed
+
+
+def type_name(value: object) -> types.SimpleNamespace:
+    """What ``type(value)`` gives a program: the name of its class as ``.__name__`` and nothing else (the guard
+    lets ``type`` stand only in ``type(x).__name__``; a class itself would reach ``type`` and so new classes)."""
+    return types.SimpleNamespace(__name__=builtins.type(value).__name__)
 
 
 class ProgramTimeout(BaseException):  # not an Exception, so that a program's ``except Exception`` cannot hide it

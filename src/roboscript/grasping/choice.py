@@ -178,7 +178,8 @@ class GraspChooser:
         """The first candidate whose grasp and pre-grasp poses have collision-free IK (the gripper may touch the
         object itself); each is also tried turned half a turn about its approach axis. A handle's grasp should
         also be able to open its drawer or door (:meth:`_opening_reach`): the wrist turned near its limit on one
-        of the two turns cannot follow a door's arc."""
+        of the two turns cannot follow a door's arc; and its open fingers should come in clear of the part's front
+        (:meth:`_clear_of_panel`), or they push a door swung wide away on the way to its handle."""
         q = self.motion.sync()
         errors: list[tuple[int, str]] = []  # (how far the grasp got: 0 no IK ... 4 no path, why not further)
         fallback: Transform | None = None
@@ -187,6 +188,7 @@ class GraspChooser:
         little_pull: tuple[float, Transform, str] | None = None
         walled: Transform | None = None
         short_approach: Transform | None = None
+        pushes: Transform | None = None
         with self.contacts.touching(self.contacts.not_yet_allowed([name], self.held())):
             for candidate in candidates:
                 for pose in (candidate, candidate.compose(FLIP)):
@@ -207,6 +209,12 @@ class GraspChooser:
                         errors.append((1, "the straight approach from the pre-grasp pose is blocked on every branch"))
                         continue
                     approach, pulled, why = self._branch_that_opens(name, pose, options)
+                    if handle and not self._clear_of_panel(name, approach):
+                        # The open fingers come at the bar across the door's or drawer's front and would push it
+                        # (a door swung 75 degrees, taken from far round): kept, in case every grasp does.
+                        errors.append((2, "the open fingers would push its door or drawer on the way in"))
+                        pushes = pushes or pose
+                        continue
                     if why:
                         errors.append((2, why))
                         if pulled >= PULL_LEAST and (short_pull is None or pulled > short_pull[0]):
@@ -238,6 +246,8 @@ class GraspChooser:
             # straight, where the last resort below does not.
             notice(f"{kind} grasp of {name!r}: {little_pull[2]}; no grasp opens it further")
             return little_pull[1]
+        if pushes is not None:  # the door or drawer would be pushed: a TrackingError unless it gives way
+            return pushes
         if fallback is not None:
             return fallback
         # The failure of the grasp that got furthest says most: a handle's head-on grasp is reached, but its door
@@ -247,6 +257,20 @@ class GraspChooser:
             f"none of the {len(candidates)} {kind} grasps of {name!r} (each also turned half a turn) can be reached "
             f"without collision; the nearest to it: {nearest}",
         )
+
+    def _clear_of_panel(self, name: str, line: np.ndarray) -> bool:
+        """Whether the gripper moves in along ``line`` (joint waypoints) to the handle ``name`` without touching the
+        front of the part it opens: the grasp may touch the whole part (what moves with the handle), but only the
+        bar is to be gripped."""
+        panels = [p for p in self.contacts.family(name) if kind_of(p) != "handle"]
+        scene = self.motion.scene
+        for panel in panels:
+            scene.allow("gripper", panel, False)
+        try:
+            return all(scene.is_valid(q) for q in line)
+        finally:
+            for panel in panels:
+                scene.allow("gripper", panel)
 
     def _branch_that_opens(
         self, name: str, pose: Transform, options: list[tuple[np.ndarray, np.ndarray | None]]

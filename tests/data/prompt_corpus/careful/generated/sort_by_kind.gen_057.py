@@ -1,20 +1,18 @@
 # Task: sort the objects on the table by kind: put the boxes into the basket
 # Plan:
-# 1. Detect everything. The boxes are the things whose names end in '_box' (red_box, gelatin_box); nothing
-#    else goes into the basket, and the plates, saucers and basket stay where they are.
-# 2. Leave out any box already in the basket; take the rest topmost first.
-# 3. For each box: look again, grasp it from above across its narrower side (the adaptive grasp if it is
-#    wider than the opening or the fingers close on nothing), lift it, place it into the basket, release it
-#    and move up.
-# 4. Look again: it must lie in the basket. If not, pick it up again and place it at the basket's middle.
-# 5. At the end check every box is in the basket and that nothing else has moved.
-ROBOT_ERRORS = (FailureError, GraspError, PlacementError, ReceptacleFullError, CompartmentError, PlanningError, IKError)
-FIXTURE_WORDS = ('plate', 'saucer', 'bowl', 'basket')  # these stay where they are
-
-
-def vec(values):
-    # A plain list of floats for the tools' vector arguments.
-    return [float(v) for v in values]
+# 1. Detect everything. The boxes are the names whose kind (last word) is 'box': red_box and gelatin_box.
+#    Nothing else goes into the basket; plates, saucers and the basket stay where they are.
+# 2. Remember where every other object is and whether it is already in the basket.
+# 3. Skip a box already in the basket. Take a box standing on another box first (higher first).
+# 4. If some other object stands on the box, move it aside on the table first (checked with is_object_in).
+# 5. Grasp the box top-down at its centre; if that does not fit or closes on nothing, open, back away,
+#    re-detect and use the adaptive grasp from above.
+# 6. Lift, place into the basket, release, move up.
+# 7. Re-detect and check with is_object_in that the box is in the basket; if not, pick it again with the other
+#    grasp and place it at the basket's centre. If the basket is full or no placement works, set it back where
+#    it was and raise an error.
+# 8. At the end re-detect: both boxes must be in the basket (put back in any that is not), and any non-box that
+#    has come into the basket is taken out and set back where it stood.
 
 
 def approach_axis(pose):
@@ -23,161 +21,210 @@ def approach_axis(pose):
     return np.array([2 * (x * z + w * y), 2 * (y * z - w * x), 1 - 2 * (x * x + y * y)])
 
 
-def move_if_possible(axis, distance):
-    # A lift or retreat whose failure does no harm.
+def retreat(distance=0.1):
+    # Back the empty hand away along its approach axis, else straight up.
     try:
-        move_in_direction(vec(axis), distance)
-    except ROBOT_ERRORS:
-        pass
+        move_in_direction(-approach_axis(get_gripper_pose()), distance)
+    except FailureError:
+        try:
+            move_in_direction([0, 0, 1], distance)
+        except FailureError:
+            pass
 
 
-def back_off(distance):
-    # Straight back along the hand's approach axis.
-    move_if_possible(-approach_axis(get_gripper_pose()), distance)
+def lift(distance=0.1):
+    try:
+        move_in_direction([0, 0, 1], distance)
+    except FailureError:
+        pass  # move_to_pose plans its own collision-free path from here
 
 
-def things_on_table():
-    # Every name but the table and the furniture with its parts.
-    return [n for n in get_object_name_list() if n != 'table' and not n.startswith('cabinet')]
+def release(name):
+    open_gripper()
+    detach_object(name)
+    try:
+        move_in_direction([0, 0, 1], 0.1)
+    except FailureError:
+        retreat(0.08)
 
 
-def xy_inside(point, box, margin):
-    # Whether point's x, y lie within the box's x, y extent (widened by margin).
-    return bool(box[0] - margin <= point[0] <= box[3] + margin and box[1] - margin <= point[1] <= box[4] + margin)
+def kind_of(name):
+    return name.split('_')[-1]
 
 
-def positions(names):
-    # Copies of the present centres (call detect_objects() first).
-    return {n: np.array(get_object_center_position(n), dtype=float) for n in names}
+def grasp_ways(name):
+    # Grasp tools in the order the doc-strings suggest for the object's shape.
+    if kind_of(name) in ('mug', 'cup'):
+        return [
+            ('adaptive grasp from above (rim or handle)',
+             lambda: parse_adaptive_shape_grasp_pose(object_name=name, preferred_approach_direction=[0, 0, -1])),
+            ('horizontal grasp across the body',
+             lambda: parse_horizontal_grasp_pose(object_name=name)),
+        ]
+    return [
+        ('top-down grasp at the centre',
+         lambda: parse_central_lift_grasp_pose(object_name=name, description='center')),
+        ('adaptive grasp from above',
+         lambda: parse_adaptive_shape_grasp_pose(object_name=name, preferred_approach_direction=[0, 0, -1])),
+    ]
 
 
-def report_moved(before, tolerance=0.03):
-    # Look again and name anything the task did not mention that has moved.
-    detect_objects()
-    moved = []
-    for n, p in before.items():
-        now = get_object_center_position(n)
-        if np.hypot(now[0] - p[0], now[1] - p[1]) > tolerance:
-            moved.append(n)
-    if moved:
-        print('[warning] moved though the task did not ask for it: ' + ', '.join(moved))
-    return moved
-
-
-def default_grasps(name):
-    # The grasp follows the shape: mugs and cups by rim or handle (adaptive grasp, from above); compact things
-    # (blocks, cubes, boxes, balls, bottles, cans, fruit) from above across their narrower side. The other kind
-    # follows if the first does not fit (wider than the opening) or closes on nothing.
-    top = ('from above', lambda: parse_central_lift_grasp_pose(object_name=name, description='center'))
-    adaptive = ('adaptive', lambda: parse_adaptive_shape_grasp_pose(object_name=name, preferred_approach_direction=[0, 0, -1]))
-    if 'mug' in name or 'cup' in name:
-        return [adaptive, top]
-    return [top, adaptive]
-
-
-def pick(name, grasps):
-    # Try the grasp kinds in order; one that does not fit, cannot be reached or closes on nothing is followed
-    # by the next. Once held, lift 10 cm more (attach_object already lifts 5 cm).
+def pick(name, attempt):
+    ways = grasp_ways(name)
+    if attempt % 2 == 1:
+        ways = ways[1:] + ways[:1]  # the retry starts with the other way
     problems = []
-    for label, make_pose in grasps:
-        detect_objects(object_list=[name])
+    for label, make_pose in ways:
+        detect_objects([name])
+        open_gripper()
         try:
             pose = make_pose()
-        except ROBOT_ERRORS as error:
-            problems.append('%s: %s' % (label, error))
+        except (GraspError, FailureError) as e:
+            problems.append(f'{label}: {e}')
             continue
-        open_gripper()
         try:
             grasp(pose)
             close_gripper()
             attach_object(name)
-        except ROBOT_ERRORS as error:
-            problems.append('%s: %s' % (label, error))
+        except (GraspError, FailureError) as e:
+            problems.append(f'{label}: {e}')
             open_gripper()
-            back_off(0.1)
+            retreat(0.1)
             continue
-        move_if_possible([0, 0, 1], 0.1)
+        lift(0.1)
         return
-    raise RuntimeError('could not pick up %s (%s)' % (name, '; '.join(problems)))
+    raise GraspError(f'could not pick up {name}: ' + '; '.join(problems))
 
 
-def release(name, retreat_up=True):
-    # Let go, tell the planner, move away (up, or back out the way the hand came).
-    open_gripper()
-    detach_object(name)
-    if retreat_up:
-        move_if_possible([0, 0, 1], 0.1)
-    else:
-        back_off(0.1)
+def put_back(name, home):
+    # Set the held object down where it stood (or aside on the table) so that nothing is left in the hand.
+    try:
+        move_to_pose(parse_place_pose(object_name=name, position=[home[0], home[1], home[2]]))
+    except FailureError:
+        move_to_pose(parse_place_pose(object_name=name, receptacle_name='table'))
+    release(name)
 
 
-def set_down(name, options, retreat_up=True):
-    # options: (receptacle, position) pairs tried in order; True once the held object is let go.
-    for receptacle, position in options:
-        spot = None if position is None else vec(position)
+def place_into_basket(name, attempt, home):
+    def anywhere():
+        return parse_place_pose(object_name=name, receptacle_name='basket')
+
+    def centred():
+        c = get_object_center_position('basket')
+        return parse_place_pose(object_name=name, receptacle_name='basket', position=[c[0], c[1], c[2]])
+
+    ways = [anywhere, centred] if attempt == 0 else [centred, anywhere]
+    for make_pose in ways:
         try:
-            move_to_pose(parse_place_pose(object_name=name, receptacle_name=receptacle, position=spot))
-        except ROBOT_ERRORS:
-            continue
-        release(name, retreat_up)
+            move_to_pose(make_pose())
+        except ReceptacleFullError:
+            put_back(name, home)
+            raise ReceptacleFullError(f'the basket is full: {name} could not be put in it (set back where it was)')
+        except FailureError:
+            continue  # nothing moved; try the other placement
+        release(name)
         return True
     return False
 
 
-def set_back(name, home):
-    # It cannot go where asked: put it back where it was (or aside on the table) rather than hold it.
-    if not set_down(name, [(None, home), ('table', None)]):
-        raise RuntimeError('%s is still held: it can be set down neither as asked nor back where it was' % name)
+def put_in_basket(name):
+    detect_objects()
+    home = get_object_center_position(name)
+    for attempt in range(2):
+        if attempt:
+            detect_objects()
+        if is_object_in(name, 'basket'):
+            return
+        pick(name, attempt)
+        if not place_into_basket(name, attempt, home):
+            put_back(name, home)
+            continue
+        detect_objects([name, 'basket'])
+        if is_object_in(name, 'basket'):
+            return
+    raise PlacementError(f'{name} did not end up in the basket after two tries')
 
 
-def transfer(name, options, holds, grasps=None, retreat_up=True):
-    # Pick `name` up and set it down by the first workable (receptacle, position) option; holds(), after a
-    # fresh look, says whether the result is right. If not, once more another way: pick it up again with the
-    # next grasp kind first and the next option first.
+def move_aside(name):
+    # Take `name` off what it stands on and set it on a free spot of the table.
     for attempt in range(2):
         detect_objects()
-        home = np.array(get_object_center_position(name), dtype=float)
-        kinds = grasps if grasps is not None else default_grasps(name)
-        g = attempt % len(kinds)
-        pick(name, kinds[g:] + kinds[:g])
-        o = attempt % len(options)
-        if not set_down(name, options[o:] + options[:o], retreat_up):
-            set_back(name, home)
-            raise RuntimeError('could not set %s down as asked: no reachable free place' % name)
-        detect_objects()
-        if holds():
+        pick(name, attempt)
+        try:
+            move_to_pose(parse_place_pose(object_name=name, receptacle_name='table'))
+        except FailureError as e:
+            raise PlacementError(f'could not set {name} aside on the table: {e}')
+        release(name)
+        detect_objects([name])
+        if is_object_in(name, 'table'):
             return
-    raise RuntimeError('%s is not where it was asked to go, even after a second try' % name)
+    raise PlacementError(f'{name} would not stand on the table after two tries')
 
 
-def in_container(name, container):
-    # Centre over the container; bottom between its floor and a little above its rim.
-    centre = get_object_center_position(name)
-    box = get_3d_bbox(name)
-    outer = get_3d_bbox(container)
-    return xy_inside(centre, outer, 0.01) and bool(outer[2] - 0.01 <= box[2] <= outer[5] + 0.04)
+def return_home(name, home):
+    # Take a non-box back out of the basket to where it stood.
+    for attempt in range(2):
+        detect_objects()
+        if not is_object_in(name, 'basket'):
+            return
+        pick(name, attempt)
+        put_back(name, home)
+    detect_objects([name, 'basket'])
+    if is_object_in(name, 'basket'):
+        raise PlacementError(f'{name} fell into the basket and could not be taken out again')
 
 
-def into_basket(name):
-    basket_middle = get_object_center_position('basket')
-    transfer(name, [('basket', None), ('basket', basket_middle)], lambda: in_container(name, 'basket'))
+def stands_on(top, bottom):
+    # True when `top` stands on or in `bottom`.
+    try:
+        return bool(is_object_in(top, bottom))
+    except (UsageError, FailureError):
+        t = get_3d_bbox(top)
+        b = get_3d_bbox(bottom)
+        cx, cy = (t[0] + t[3]) / 2, (t[1] + t[4]) / 2
+        return b[0] <= cx <= b[3] and b[1] <= cy <= b[4] and t[2] >= b[5] - 0.02
 
+
+STAYING_KINDS = ('basket', 'plate', 'saucer', 'bowl')
 
 detect_objects()
-boxes = [n for n in things_on_table()
-         if (n.endswith('_box') or n == 'box') and not any(word in n for word in FIXTURE_WORDS)]
-others_before = positions([n for n in things_on_table() if n not in boxes])
-to_move = [n for n in boxes if not in_container(n, 'basket')]
-to_move.sort(key=lambda n: -float(get_3d_bbox(n)[2]))  # topmost first
+items = [n for n in get_object_name_list()
+         if n != 'table' and not n.startswith('cabinet') and kind_of(n) not in STAYING_KINDS]
+boxes = [n for n in items if kind_of(n) == 'box']
+others = [n for n in items if n not in boxes]
+if not boxes:
+    raise UnknownObjectError('no box among the objects')
 
-for name in to_move:
-    into_basket(name)
+other_home = {n: get_object_center_position(n) for n in others}
+other_in_basket_before = {n: is_object_in(n, 'basket') for n in others}
 
+remaining = [b for b in boxes if not is_object_in(b, 'basket')]
+while remaining:
+    detect_objects()
+    remaining = [b for b in remaining if not is_object_in(b, 'basket')]
+    if not remaining:
+        break
+    free = [b for b in remaining if not any(stands_on(o, b) for o in remaining if o != b)]
+    candidates = free if free else remaining
+    box = max(candidates, key=lambda n: get_3d_bbox(n)[2])
+    # Something that is not a box standing on this box is moved aside first, not carried along.
+    for other in others:
+        if not is_object_in(other, 'basket') and stands_on(other, box):
+            move_aside(other)
+            other_home[other] = get_object_center_position(other)
+    put_in_basket(box)
+    remaining.remove(box)
+
+# Final checks: both boxes in the basket, nothing else newly in it.
 detect_objects()
-for name in [n for n in boxes if not in_container(n, 'basket')]:
-    into_basket(name)
+for box in boxes:
+    if not is_object_in(box, 'basket'):
+        put_in_basket(box)
 detect_objects()
-left = [n for n in boxes if not in_container(n, 'basket')]
-if left:
-    raise RuntimeError('boxes still not in the basket: ' + ', '.join(left))
-report_moved(others_before)
+for other in others:
+    if not other_in_basket_before[other] and is_object_in(other, 'basket'):
+        return_home(other, other_home[other])
+detect_objects()
+missing = [b for b in boxes if not is_object_in(b, 'basket')]
+if missing:
+    raise PlacementError('boxes not in the basket at the end: ' + ', '.join(missing))
