@@ -336,6 +336,11 @@ def test_a_program_may_name_an_errors_class_in_its_message_and_reach_nothing_fro
     result = execute(program, {}, Limits(timeout=5))
     assert result.outcome is Outcome.OK and result.error is None
     assert result.output == "IndexError: list index out of range\nndarray float\n"
+    # A program that binds the name itself reads the builtin bare where its binding does not reach (an adversarial
+    # review's find): what it gets is still the name and nothing else.
+    bare = "def never():\n    global type\nt = type\nns = t(1)\nprint(ns.__name__, t(ns).__name__)\n"
+    result = execute(bare, {}, Limits(timeout=5))
+    assert result.outcome is Outcome.OK and result.output == "int SimpleNamespace\n"
     # What type(x) gives at run time is the name and nothing else: no class to call or climb.
     from roboscript.codegen.sandbox import type_name
 

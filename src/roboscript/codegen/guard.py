@@ -86,7 +86,9 @@ def find_violations(tree: ast.AST) -> list[Violation]:
     bound = bindings(tree)
     classes = class_findings(tree, bound)  # what a program's own classes may hold beyond the rules below
     # A builtin's name the program binds is its own variable (for object in objects:): the builtin is not among a
-    # program's builtins, so where the binding does not reach, the name is unbound. Not those that are there.
+    # program's builtins, so where the binding does not reach, the name is unbound. Not those that are there. The
+    # one exception, ``type``, is a builtin that gives a class's name and nothing else (sandbox.type_name), so a
+    # program that binds ``type`` and reads it where its binding does not reach gets only that.
     own_names = set(bound) & FORBIDDEN_NAMES - RESERVED
     type_names = _type_names(tree)
     found = [Violation(line, message) for line, message in classes.violations]
