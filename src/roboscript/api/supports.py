@@ -28,6 +28,7 @@ CLOSED_DRAWER = 0.04  # metres: a drawer's reachable interior shorter than this 
 FLAT_RIM = 0.03  # metres: a receptacle whose rim stands less than this above its floor is a plate or a saucer
 PLATE_EDGE = 0.015  # metres kept inside a plate's outline by what is set down on it (its rim rises there)
 RESTS_ON = 0.03  # metres a thing's bottom may stand off a surface it rests on (a plate's rim, a sagging liner)
+UNDER_SLACK = 0.005  # metres a floor may stand above a thing's bottom and still bear it (perceived heights)
 
 
 def top_face(perception: Perception, name: str) -> Receptacle | None:
@@ -223,4 +224,5 @@ def _under(perception: Perception, name: str, point_xy: np.ndarray, bottom: floa
     region = holds(perception, name)
     if region is None:
         return False
-    return floor_of(region) <= bottom + 0.005 and contains_xy(whole_surface(perception, region) or region, point_xy)
+    surface = whole_surface(perception, region) or region
+    return floor_of(region) <= bottom + UNDER_SLACK and contains_xy(surface, point_xy)
