@@ -110,7 +110,16 @@ def is_closed(perception: Perception, receptacle: Receptacle) -> bool:
 
 def floor_of(receptacle: Receptacle) -> float:
     """The world height of the receptacle's floor (where what is put in it rests)."""
-    return float(receptacle.frame.apply(np.array([[0.0, 0.0, receptacle.lower[2]]]))[0, 2])
+    return _height(receptacle, receptacle.lower[2])
+
+
+def top_of(receptacle: Receptacle) -> float:
+    """The world height of the top of the receptacle's free volume (a bowl's rim, a drawer's sides)."""
+    return _height(receptacle, receptacle.upper[2])
+
+
+def _height(receptacle: Receptacle, local_z: float) -> float:
+    return float(receptacle.frame.apply(np.array([[0.0, 0.0, local_z]]))[0, 2])
 
 
 def contains_xy(receptacle: Receptacle, point_xy: np.ndarray) -> bool:
@@ -209,20 +218,20 @@ def stands_in(perception: Perception, name: str, receptacle_name: str) -> bool:
     region = holds(perception, receptacle_name)
     if region is None:
         return False
-    if not contains_xy(whole_surface(perception, region) or region, box.center[:2]):
+    if not _over(perception, region, box.center[:2]):
         return False
     floor, bottom = floor_of(region), float(box.lower[2])
-    if has_walls(perception, region):
-        top = float(region.frame.apply(np.array([[0.0, 0.0, region.upper[2]]]))[0, 2])
-        return floor - RESTS_ON <= bottom <= top
-    return floor - RESTS_ON <= bottom <= floor + RESTS_ON
+    top = top_of(region) if has_walls(perception, region) else floor + RESTS_ON
+    return floor - RESTS_ON <= bottom <= top
 
 
 def _under(perception: Perception, name: str, point_xy: np.ndarray, bottom: float) -> bool:
     """Whether what ``name`` holds things in or on lies under ``point_xy`` no higher than ``bottom`` (so that a
     thing there with its bottom at that height stands in or on it)."""
     region = holds(perception, name)
-    if region is None:
-        return False
-    surface = whole_surface(perception, region) or region
-    return floor_of(region) <= bottom + UNDER_SLACK and contains_xy(surface, point_xy)
+    return region is not None and floor_of(region) <= bottom + UNDER_SLACK and _over(perception, region, point_xy)
+
+
+def _over(perception: Perception, region: Receptacle, point_xy: np.ndarray) -> bool:
+    """Whether a point lies over what ``region`` bears things on: a plate's whole top, else its floor."""
+    return contains_xy(whole_surface(perception, region) or region, point_xy)

@@ -224,9 +224,11 @@ def _at_check(entry: Reader, kind: str, world: WorldSpec, negate: bool) -> Check
     subject = _name_check(entry, entry.data["at"], objects, "objects")
     if ("start_of" in entry.data) == ("position" in entry.data):
         entry.fail("'at' takes either start_of: OBJECT (where it was at the start) or position: [x, y, z]")
-    within = entry.number("within") if "within" in entry.data else 0.0
-    if "within" in entry.data and not within > 0:
-        entry.fail(f"'within' is how near in metres, a number above 0, e.g. within: 0.05; got {within!r}")
+    within = 0.0
+    if "within" in entry.data:
+        within = entry.number("within")
+        if not within > 0:
+            entry.fail(f"'within' is how near in metres, a number above 0, e.g. within: 0.05; got {within!r}")
     if "start_of" in entry.data:
         start = _name_check(entry, entry.data["start_of"], objects, "objects")
         return CheckSpec(kind, subject, start_of=start, negate=negate, within=within)

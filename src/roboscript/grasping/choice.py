@@ -263,14 +263,8 @@ class GraspChooser:
         front of the part it opens: the grasp may touch the whole part (what moves with the handle), but only the
         bar is to be gripped."""
         panels = [p for p in self.contacts.family(name) if kind_of(p) != "handle"]
-        scene = self.motion.scene
-        for panel in panels:
-            scene.allow("gripper", panel, False)
-        try:
-            return all(scene.is_valid(q) for q in line)
-        finally:
-            for panel in panels:
-                scene.allow("gripper", panel)
+        with self.contacts.withheld(panels):
+            return all(self.motion.scene.is_valid(q) for q in line)
 
     def _branch_that_opens(
         self, name: str, pose: Transform, options: list[tuple[np.ndarray, np.ndarray | None]]

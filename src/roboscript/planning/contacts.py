@@ -56,6 +56,18 @@ class ContactAllowances:
                 self.motion.scene.allow("gripper", part, False)
 
     @contextmanager
+    def withheld(self, parts: list[str]) -> Iterator[None]:
+        """Within the block the gripper may not touch ``parts``, which it may touch now (a check of an approach
+        that may touch a handle's door only at the handle); the allowance is made again at the end."""
+        for part in parts:
+            self.motion.scene.allow("gripper", part, False)
+        try:
+            yield
+        finally:
+            for part in parts:
+                self.motion.scene.allow("gripper", part)
+
+    @contextmanager
     def part_moving(self, name: str, q: np.ndarray, held: bool) -> Iterator[None]:
         """Within the block the drawer or door ``name`` moves with the hand from the arm at ``q``, where the scene
         can move it (:meth:`PlanningScene.part_following`): the fingers may touch it, as they hold its handle, but
