@@ -147,6 +147,17 @@ def test_a_block_on_a_box_stands_on_the_ring_of_its_top_seen_round_it_not_on_str
     assert ground([below, block], TABLE)[1].box.lower[2] == pytest.approx(top, abs=0.002)
 
 
+def test_a_few_points_of_the_boxs_side_kept_as_the_blocks_do_not_take_it_down_to_the_table():
+    # The block's 2D boxes hold a little of the box's side under it: three points 1.6 cm under the box's top.
+    top = TABLE + 0.05
+    below = _instance("red box", Box3D(np.r_[-0.04, -0.04, TABLE], np.r_[0.04, 0.04, top]))
+    block = _box_surface(np.r_[-0.03, -0.03, top], np.r_[0.03, 0.03, top + 0.05], step=0.01)  # as few as seen
+    strays = np.array([[-0.03, 0.0, top - 0.016], [-0.029, 0.01, top - 0.012], [-0.03, 0.02, top - 0.011]])
+    points = np.vstack([block, strays])
+    seen = Instance3D("green block", points, np.zeros_like(points), object_box(points, TABLE), (0,))
+    assert ground([below, seen], TABLE)[1].box.lower[2] > top - 0.02
+
+
 def test_objects_are_refined_smallest_in_space_first_however_small_the_images_show_them():
     from roboscript.perception.grounding import Detection2D
     from roboscript.perception.instances import refine_all

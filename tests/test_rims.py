@@ -66,3 +66,23 @@ def test_a_box_top_is_no_rim():
     points = np.vstack([top, np.array(sides)])
     normals = np.vstack([np.tile([0.0, 0.0, 1.0], (len(top), 1)), np.array(side_n)])
     assert rim_pairs(ObjectPoints(points, normals), 0.077) == []
+
+
+def _handle(reach: float = 0.075):
+    """A mug's handle: a loop jutting out along +x from the outer face, below the rim."""
+    points = [[x, y, z] for x in np.arange(0.044, reach, 0.004) for y in (-0.006, 0.006) for z in (0.845, 0.89)]
+    points += [[reach, y, z] for y in (-0.006, 0.006) for z in np.arange(0.845, 0.89, 0.004)]
+    normals = [[0.0, math.copysign(1.0, p[1]), 0.0] for p in points]
+    return np.array(points), np.array(normals)
+
+
+def test_a_handle_below_the_rim_does_not_move_the_ring_off_its_middle():
+    # The whole mug's box reaches out to the handle's end; the ring is read about its own middle, so its points
+    # are all far from it and every pair closes across the wall where it is.
+    mug = _mug()
+    handle, handle_n = _handle()
+    with_handle = ObjectPoints(np.vstack([mug.points, handle]), np.vstack([mug.normals, handle_n]))
+    pairs = rim_pairs(with_handle, 0.077)
+    assert len(pairs) >= 20
+    for center, _, _, _ in pairs:
+        assert 0.035 < np.linalg.norm(center[:2]) < 0.045

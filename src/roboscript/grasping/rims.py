@@ -39,7 +39,10 @@ def rim_pairs(cloud: ObjectPoints, max_width: float) -> list[tuple[np.ndarray, n
     top = float(points[:, 2].max())
     in_band = points[:, 2] > top - RIM_BAND
     band, band_normals = points[in_band], normals[in_band]
-    middle = (points[:, :2].min(axis=0) + points[:, :2].max(axis=0)) / 2
+    # The ring's own middle: the whole object's is off it where a handle juts out below the rim (a mug's, 11 cm
+    # across its handle and 8.8 cm across its rim, put it 1.3 cm off, and 8 % of the ring's points within half its
+    # radius of that middle made it look filled).
+    middle = (band[:, :2].min(axis=0) + band[:, :2].max(axis=0)) / 2
     offset = band[:, :2] - middle
     radius = np.linalg.norm(offset, axis=1)
     if len(band) < RIM_WEDGES or np.mean(radius < RIM_HOLLOW * radius.max()) > RIM_HOLLOW_SHARE:

@@ -328,11 +328,17 @@ def _claimed_by(others: Sequence[Instance3D], points: np.ndarray) -> np.ndarray:
     point with no depth (NaN) is nobody's. Boxes, not the others' points: an object's refined points miss
     the sides its cameras did not see, which a larger neighbour's cameras did (a plate kept a box's side as its
     own, and the fingers met it there)."""
+    return claimed_by_boxes([other.box for other in others], points)
+
+
+def claimed_by_boxes(boxes: Sequence[Box3D], points: np.ndarray) -> np.ndarray:
+    """Which of ``points`` lie in one of ``boxes``, grown by :data:`CLAIM_MARGIN` sideways and up but not below
+    its bottom (see :func:`_claimed_by`)."""
     claimed = np.zeros(len(points), dtype=bool)
     with np.errstate(invalid="ignore"):
-        for other in others:
-            lower = np.array([*(other.box.lower[:2] - CLAIM_MARGIN), other.box.lower[2]])
-            claimed |= within(points, Box3D(lower, other.box.upper + CLAIM_MARGIN))
+        for box in boxes:
+            lower = np.array([*(box.lower[:2] - CLAIM_MARGIN), box.lower[2]])
+            claimed |= within(points, Box3D(lower, box.upper + CLAIM_MARGIN))
     return claimed
 
 
@@ -360,9 +366,13 @@ def _may_rest_on(instance: Instance3D, other: Instance3D) -> bool:
 
 
 def _on_top_of(instance: Instance3D, other: Instance3D) -> bool:
-    """Whether ``instance``'s lowest seen point is near ``other``'s seen top (a block on a box whose top it hides:
-    no floor shows beside it)."""
-    return bool(-ON_TOP < instance.box.lower[2] - other.box.upper[2] < RESTING_GAP)
+    """Whether ``instance``'s lowest seen layer (:func:`lowest_layer`) is near ``other``'s seen top (a block on a
+    box whose top it hides: no floor shows beside it). A layer, not its lowest point: a few points of the box's
+    side below the block's 2D boxes, kept as the block's, stood 1.6 cm under the box's top, and the block was
+    taken to stand on the table through the box."""
+    low = lowest_layer(instance.points[:, 2])
+    bottom = float(instance.box.lower[2]) if low is None else max(low - FLOOR_LAYER / 2, float(instance.box.lower[2]))
+    return bool(-ON_TOP < bottom - other.box.upper[2] < RESTING_GAP)
 
 
 def floor_under(instance: Instance3D, supports: Sequence[Instance3D]) -> float | None:
@@ -386,6 +396,12 @@ def floor_under(instance: Instance3D, supports: Sequence[Instance3D]) -> float |
     # The lowest layer that holds a few points, not the lowest points: of a box's top that a block on it hides, a
     # thin ring shows, and two points of the table at the box's foot put the block 4 cm under its top. Lowest, not
     # densest: a bowl's rim round the apple in it may show more than its bottom does.
+    return lowest_layer(heights)
+
+
+def lowest_layer(heights: np.ndarray) -> float | None:
+    """The middle of the lowest :data:`FLOOR_LAYER` thick layer of ``heights`` that holds
+    :data:`FLOOR_LAYER_POINTS` or more (fewer are strays); None where no layer does."""
     heights = np.sort(heights)
     in_layer = np.searchsorted(heights, heights + FLOOR_LAYER, side="right") - np.arange(len(heights))
     layers = np.flatnonzero(in_layer >= FLOOR_LAYER_POINTS)

@@ -9,6 +9,7 @@ Pixels whose depth is 0 are not looked at: the pipeline zeroes the robot's own (
 
 from __future__ import annotations
 
+from collections.abc import Collection
 from dataclasses import dataclass
 
 import numpy as np
@@ -28,6 +29,7 @@ TOUCHING = 0.012  # metres: things of one class closer than this are one thing
 SPAN_SLACK = 0.01  # metres beyond its class's widest footprint that pieces of one thing may spread over
 SIZE_SLACK = (1.2, 0.03)  # a thing may measure this much (times, plus metres) more than its class's largest
 SAMPLE = 200  # points of each thing compared when measuring how close two are
+PLAUSIBLE = 0.05  # the probability below which the network rules a class out, whatever the scene holds
 
 
 def _diameter(points: np.ndarray) -> float:
@@ -100,8 +102,10 @@ class ThingFinder:
         self.other_class = model.classes.index(OTHER)
         self._objects = np.array([k for k, t in enumerate(self.types) if t])
 
-    def find(self, frame: CameraFrame) -> FrameThings:
-        """The things ``frame`` shows and their classes."""
+    def find(self, frame: CameraFrame, present: Collection[str] | None = None) -> FrameThings:
+        """The things ``frame`` shows and their classes. ``present``: the object types the scene holds (its
+        description's), where that is known; no thing is then of a class that holds none of them."""
+        allowed = self._allowed(present)
         fp = frame_points(frame)
         seg = segment(fp)
         pieces = describe_pieces(seg)
@@ -110,7 +114,7 @@ class ThingFinder:
         placed = seg.labels >= 0
         things[placed] = piece_thing[seg.labels[placed]]
         count = int(piece_thing.max()) + 1 if piece_thing.size else 0
-        classes, scores = self._classify(fp, seg, things, count)
+        classes, scores = self._classify(fp, seg, things, count, allowed)
         # Two things of one object class that touch, in the image or in space, are one thing the merge left in two
         # (a bowl's inside and outside, a mug's handle seen through its gap).
         if count:
@@ -120,7 +124,7 @@ class ThingFinder:
                 piece_thing = joined[piece_thing]
                 things[placed] = piece_thing[seg.labels[placed]]
                 count = int(joined.max()) + 1
-                classes, scores = self._classify(fp, seg, things, count)
+                classes, scores = self._classify(fp, seg, things, count, allowed)
         a, b = piece_thing[pieces.borders.pairs[:, 0]], piece_thing[pieces.borders.pairs[:, 1]]
         adjacent = np.unique(np.sort(np.stack([a, b], axis=1)[a != b], axis=1), axis=0).reshape(-1, 2)
         return FrameThings(fp, seg, things, classes, scores, adjacent)
@@ -159,15 +163,33 @@ class ThingFinder:
                 groups[i] += groups.pop(j)
         return np.concatenate(pairs)
 
-    def _decide(self, rows: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
-        """Each row's class and its probability, leaving out the classes no thing of its size can be."""
+    def _allowed(self, present: Collection[str] | None) -> np.ndarray:
+        """Which classes a thing may be: all where what the scene holds is unknown; else furniture, handles,
+        other things, and the object classes holding one of the ``present`` types."""
+        if present is None:
+            return np.ones(len(self.types), dtype=bool)
+        types = set(present)
+        return np.array([not t or bool(t & types) for t in self.types])
+
+    def _decide(self, rows: np.ndarray, allowed: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+        """Each row's class and its probability, leaving out the classes no thing of its size can be and those the
+        scene does not hold (``allowed``).
+
+        Of the classes the scene holds, a thing is the likeliest, with its share of their probability, where the
+        network gives that class :data:`PLAUSIBLE` or more: a green apple seen from above, 0.91 a tennis ball and
+        0.09 a green apple in a scene with no tennis ball, is the apple; a green block stacked on a red box, merged
+        into one thing and 0.99 a green mug, is no find at all."""
         probabilities = self.model.classifier.probabilities(rows)
         size = np.maximum(rows[:, RISE], rows[:, EXTENT])
         probabilities *= size[:, None] <= self._largest[None, :]
         probabilities /= np.maximum(probabilities.sum(axis=1, keepdims=True), 1e-12)
-        return probabilities.argmax(axis=1), probabilities.max(axis=1)
+        held = probabilities * allowed[None, :]
+        best = held.argmax(axis=1)
+        plausible = held.max(axis=1) >= PLAUSIBLE
+        share = held.max(axis=1) / np.maximum(held.sum(axis=1), 1e-12)
+        return np.where(plausible, best, self.other_class), np.where(plausible, share, 0.0)
 
-    def _classify(self, fp: FramePoints, seg: Segmentation, things: np.ndarray, count: int):
+    def _classify(self, fp: FramePoints, seg: Segmentation, things: np.ndarray, count: int, allowed: np.ndarray):
         if count == 0:
             return np.zeros(0, dtype=int), np.zeros(0)
         flat = things.ravel()
@@ -176,4 +198,4 @@ class ThingFinder:
         rows = np.array(
             [features_of_pixels(fp, order[bounds[k] : bounds[k + 1]], seg.table_height) for k in range(count)]
         )
-        return self._decide(rows)
+        return self._decide(rows, allowed)

@@ -57,7 +57,8 @@ class TrainedDetector(Grounder):
 
     def things(self, frame: CameraFrame) -> FrameThings:
         """The things ``frame`` shows and their classes (kept as the camera's last)."""
-        self.last[frame.name] = found = self.finder.find(frame)
+        present = set(self.described.values()) if self.described else None
+        self.last[frame.name] = found = self.finder.find(frame, present)
         return found
 
     # --- grounding ---
