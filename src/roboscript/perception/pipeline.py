@@ -243,8 +243,8 @@ class PipelinePerception(Perception):
 
     def _give_back(self, settled: set[str], found: set[str]) -> None:
         """What this look's finds of other things (``found``) hold of where a thing let go and not seen again
-        (``settled``) lies is that thing's: two things do not fill one place. A block let go on a box and missed by
-        the detector in every view, the box's one 2D box took in the block's lower half, and the box stood 3.6 cm
+        (``settled``) lies is that thing's: two things do not fill one place. A block let go on a box was missed by
+        the detector in every view; the box's one 2D box took in the block's lower half, and the box stood 3.6 cm
         taller than it is."""
         boxes = [self.store[n].box for n in settled]
         for name in found - set(self._carried):
