@@ -87,3 +87,17 @@ def tcp_ik(world: SimWorld, position, rotation=DOWN, q0=None, iterations: int = 
     wrapped = seed + (q - seed + np.pi) % (2 * np.pi) - np.pi
     ok = (wrapped >= r.joint_lower) & (wrapped <= r.joint_upper)
     return np.where(ok, wrapped, q)
+
+
+def stack_on(tools: dict, thing: str, base: str, lift: float = 0.1) -> None:
+    """Runs the tools (a namespace of :func:`roboscript.assembly.build_tools`) to take ``thing`` from above, lift it
+    ``lift`` metres, put it on ``base`` and back off 10 cm, as a program stacking one thing on another would."""
+    tools["open_gripper"]()
+    tools["grasp"](tools["parse_central_lift_grasp_pose"](object_name=thing, description="center"))
+    tools["close_gripper"]()
+    tools["attach_object"](thing)
+    tools["move_in_direction"]([0, 0, 1], lift)
+    tools["move_to_pose"](tools["parse_place_pose"](object_name=thing, receptacle_name=base))
+    tools["open_gripper"]()
+    tools["detach_object"](thing)
+    tools["move_in_direction"]([0, 0, 1], 0.1)

@@ -6,6 +6,7 @@ from __future__ import annotations
 
 import pytest
 
+from helpers import stack_on
 from roboscript.assembly import build_tools
 from roboscript.backends.mujoco_backend import MujocoBackend
 from roboscript.bench.tasks import get_task
@@ -23,15 +24,7 @@ def test_a_block_just_stacked_on_a_box_is_seen_on_it(task_id, seed, block, lift)
     with MujocoBackend(task.world, robot="panda", seed=seed, randomize=True) as backend:
         tools = build_tools(backend, "full", seed=seed).namespace()
         tools["detect_objects"]()
-        tools["open_gripper"]()
-        tools["grasp"](tools["parse_central_lift_grasp_pose"](object_name=block, description="center"))
-        tools["close_gripper"]()
-        tools["attach_object"](block)
-        tools["move_in_direction"]([0, 0, 1], lift)
-        tools["move_to_pose"](tools["parse_place_pose"](object_name=block, receptacle_name="red_box"))
-        tools["open_gripper"]()
-        tools["detach_object"](block)
-        tools["move_in_direction"]([0, 0, 1], 0.1)
+        stack_on(tools, block, "red_box", lift)
         tools["detect_objects"](object_list=[block, "red_box"])
         truth = backend.ground_truth
         box_top = truth.box("red_box").upper[2]

@@ -10,7 +10,10 @@ import sys
 import numpy as np
 import pytest
 
+from helpers import stack_on
+from roboscript.assembly import build_tools
 from roboscript.backends.mujoco_backend import MujocoBackend
+from roboscript.bench.tasks import get_task
 from roboscript.detector_training.classes import class_names, look_alike_classes
 from roboscript.detector_training.samples import view_samples
 from roboscript.detector_training.scenes import scene_views
@@ -119,21 +122,9 @@ def test_a_block_stacked_on_a_box_is_found_as_the_things_the_scene_holds():
     # A green block stacked on a red box, as full perception put it there: the classifier took the block, seen
     # with one of its sides, for a green mug, which the scene does not hold. With the description's types every
     # view finds both, where each is.
-    from roboscript.assembly import build_tools
-    from roboscript.bench.tasks import get_task
-
     task = get_task("stack.gen_034", "generated")
     with MujocoBackend(task.world, robot="panda", seed=5, randomize=True) as backend:
-        tools = build_tools(backend, "full", seed=5).namespace()
-        tools["open_gripper"]()
-        tools["grasp"](tools["parse_central_lift_grasp_pose"](object_name="green_block", description="center"))
-        tools["close_gripper"]()
-        tools["attach_object"]("green_block")
-        tools["move_in_direction"]([0, 0, 1], 0.1)
-        tools["move_to_pose"](tools["parse_place_pose"](object_name="green_block", receptacle_name="red_box"))
-        tools["open_gripper"]()
-        tools["detach_object"]("green_block")
-        tools["move_in_direction"]([0, 0, 1], 0.1)
+        stack_on(build_tools(backend, "full", seed=5).namespace(), "green_block", "red_box")
         frames = [backend.capture(c) for c in backend.camera_names()]
         masks = SelfFilter(backend.robot, backend.base_pose()).masks(frames, backend.joint_states())
         truth = SegmentationGrounder(backend.ground_truth.world.entities)

@@ -365,14 +365,22 @@ def _may_rest_on(instance: Instance3D, other: Instance3D) -> bool:
     )
 
 
-def _on_top_of(instance: Instance3D, other: Instance3D) -> bool:
-    """Whether ``instance``'s lowest seen layer (:func:`lowest_layer`) is near ``other``'s seen top (a block on a
-    box whose top it hides: no floor shows beside it). A layer, not its lowest point: a few points of the box's
-    side below the block's 2D boxes, kept as the block's, stood 1.6 cm under the box's top, and the block was
-    taken to stand on the table through the box."""
+def _seen_bottom(instance: Instance3D) -> float:
+    """The height of ``instance``'s lowest seen layer (:func:`lowest_layer`), not of its lowest point: a few points
+    of a box's side below a block's 2D boxes, kept as the block's, stood 1.6 cm under the box's top, and the block
+    was taken to stand on the table through the box."""
     low = lowest_layer(instance.points[:, 2])
-    bottom = float(instance.box.lower[2]) if low is None else max(low - FLOOR_LAYER / 2, float(instance.box.lower[2]))
-    return bool(-ON_TOP < bottom - other.box.upper[2] < RESTING_GAP)
+    lowest = float(instance.box.lower[2])
+    return lowest if low is None else max(low - FLOOR_LAYER / 2, lowest)
+
+
+def _on_a_top(instance: Instance3D, others: Sequence[Instance3D]) -> bool:
+    """Whether ``instance``'s seen bottom (:func:`_seen_bottom`) is near the seen top of one of ``others`` (a block
+    on a box whose top it hides: no floor shows beside it)."""
+    if not others:
+        return False
+    bottom = _seen_bottom(instance)
+    return any(-ON_TOP < bottom - other.box.upper[2] < RESTING_GAP for other in others)
 
 
 def floor_under(instance: Instance3D, supports: Sequence[Instance3D]) -> float | None:
@@ -424,7 +432,7 @@ def ground(instances: Sequence[Instance3D], support: float) -> list[Instance3D]:
         bottom = float(box.lower[2])
         if floor is not None:
             bottom = min(bottom, floor)
-        elif 0 < bottom - support < HIDDEN_FOOT and not any(_on_top_of(instance, s) for s in supports):
+        elif 0 < bottom - support < HIDDEN_FOOT and not _on_a_top(instance, supports):
             bottom = support
         if bottom < box.lower[2]:
             grounded = Box3D(np.array([*box.lower[:2], bottom]), box.upper.copy())

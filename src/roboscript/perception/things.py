@@ -185,8 +185,9 @@ class ThingFinder:
         probabilities /= np.maximum(probabilities.sum(axis=1, keepdims=True), 1e-12)
         held = probabilities * allowed[None, :]
         best = held.argmax(axis=1)
-        plausible = held.max(axis=1) >= PLAUSIBLE
-        share = held.max(axis=1) / np.maximum(held.sum(axis=1), 1e-12)
+        likeliest = held[np.arange(len(held)), best]
+        plausible = likeliest >= PLAUSIBLE
+        share = likeliest / np.maximum(held.sum(axis=1), 1e-12)
         return np.where(plausible, best, self.other_class), np.where(plausible, share, 0.0)
 
     def _classify(self, fp: FramePoints, seg: Segmentation, things: np.ndarray, count: int, allowed: np.ndarray):

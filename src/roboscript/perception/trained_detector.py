@@ -43,6 +43,8 @@ class TrainedDetector(Grounder):
         self.model = model or load_detector_model()
         self.furniture = list(furniture)
         self.described = dict(described or {})
+        # The types the scene holds, where a description says (what a thing may be: ThingFinder.find).
+        self._present = set(self.described.values()) if self.described else None
         self.finder = ThingFinder(self.model)
         self.last: dict[str, FrameThings] = {}  # the last frame of each camera, as seen (for "not found" messages)
 
@@ -57,8 +59,7 @@ class TrainedDetector(Grounder):
 
     def things(self, frame: CameraFrame) -> FrameThings:
         """The things ``frame`` shows and their classes (kept as the camera's last)."""
-        present = set(self.described.values()) if self.described else None
-        self.last[frame.name] = found = self.finder.find(frame, present)
+        self.last[frame.name] = found = self.finder.find(frame, self._present)
         return found
 
     # --- grounding ---

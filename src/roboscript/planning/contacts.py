@@ -12,7 +12,7 @@ Names are the scene's: objects and furniture parts. ``family`` maps a name to ev
 from __future__ import annotations
 
 from collections.abc import Callable, Collection, Iterable, Iterator
-from contextlib import contextmanager
+from contextlib import AbstractContextManager, contextmanager
 
 import numpy as np
 
@@ -43,29 +43,27 @@ class ContactAllowances:
         fresh = [n for n in names if n not in self.touched and n not in held]
         return sorted({part for n in fresh for part in self.family(n)})
 
-    @contextmanager
-    def touching(self, parts: list[str]) -> Iterator[None]:
+    def touching(self, parts: list[str]) -> AbstractContextManager[None]:
         """The gripper may touch ``parts`` within the block (candidate grasps checked, an approach searched); the
         allowance is withdrawn from the scene in use at the end, which a look on the way may have rebuilt."""
-        for part in parts:
-            self.motion.scene.allow("gripper", part)
-        try:
-            yield
-        finally:
-            for part in parts:
-                self.motion.scene.allow("gripper", part, False)
+        return self._within(parts, allowed=True)
 
-    @contextmanager
-    def withheld(self, parts: list[str]) -> Iterator[None]:
+    def withheld(self, parts: list[str]) -> AbstractContextManager[None]:
         """Within the block the gripper may not touch ``parts``, which it may touch now (a check of an approach
         that may touch a handle's door only at the handle); the allowance is made again at the end."""
+        return self._within(parts, allowed=False)
+
+    @contextmanager
+    def _within(self, parts: list[str], allowed: bool) -> Iterator[None]:
+        """``parts`` allowed (or not) to the gripper within the block, the other way again at its end, in the
+        scene in use then."""
         for part in parts:
-            self.motion.scene.allow("gripper", part, False)
+            self.motion.scene.allow("gripper", part, allowed)
         try:
             yield
         finally:
             for part in parts:
-                self.motion.scene.allow("gripper", part)
+                self.motion.scene.allow("gripper", part, not allowed)
 
     @contextmanager
     def part_moving(self, name: str, q: np.ndarray, held: bool) -> Iterator[None]:
