@@ -41,6 +41,7 @@ SETTLE_TIME = 1.0  # robot seconds a finished motion is given to come within GOA
 # anything or nothing is not an error (whether something is held is told from the width)
 GRASP_TOLERANCE = 0.08
 HAND_EMPTY = 0.004  # metres: a hand closed on nothing stops within this (franky-sim's at 1.6 to 2.3 mm)
+RECOVERY_READS = 20  # fresh states read, 10 ms apart, to see a recovery's errors cleared before calling it failed
 
 
 def _franky():
@@ -192,7 +193,15 @@ class FrankyDriver(Driver):
     def _recover(self) -> bool:
         try:
             with self._lock:
-                return bool(self._robot.recover_from_errors())
+                if self._robot.recover_from_errors():
+                    return True
+                # libfranka judged the recovery on the newest state it held, which can predate the recovery's
+                # answer: judge it again on states read after it
+                for _ in range(RECOVERY_READS):
+                    time.sleep(0.01)
+                    if not self._robot.has_errors:
+                        return True
+                return False
         except self._franky.Exception as error:
             log.warning("recovering from the robot's errors: %s", error)
             return False

@@ -5,8 +5,11 @@ error state and its recovery over the real protocol.
 What the arm does, as libfranka's protocol describes it: the motion is answered ``ReflexAborted``, the arm holds
 where it is, and the state it sends reports the robot in ``Reflex`` mode with ``joint_reflex`` among its errors and
 as the reflex's reason (the state's fields on the wire), until an automatic error recovery clears them. A request
-while no motion runs waits for the next one (franky-sim's pinned release keeps these as private attributes; the names
-below are its).
+while no motion runs waits for the next one, and trips once libfranka commands that motion: a reflex in the first
+millisecond, before libfranka has seen its motion start, ends the start itself, and libfranka names no reason then
+(what a loaded machine made of the first version). The recovery sends its clean state before it answers, so that
+libfranka's next read of the state shows the errors gone (franky-sim's pinned release keeps these as private
+attributes; the names below are its).
 """
 
 from __future__ import annotations
@@ -31,6 +34,7 @@ class ReflexingRobotServer(FrankaRobotServer):
         self._requested = threading.Event()
         self.in_reflex = False
         self._aborting, self._ticks = 0, 0  # the motion a reflex ended, answered after a few states
+        self._commanded = 0  # the motion libfranka has sent commands for
         self._FrankaServer__command_class_map[RobotCommand.kAutomaticErrorRecovery] = _Recovery
 
     def trip_reflex(self) -> None:
@@ -40,7 +44,7 @@ class ReflexingRobotServer(FrankaRobotServer):
     def _pre_process_commands(self) -> None:
         super()._pre_process_commands()
         motion = self.current_motion_id
-        if motion and self._requested.is_set() and not self.in_reflex:
+        if motion and motion == self._commanded and self._requested.is_set() and not self.in_reflex:
             self._requested.clear()
             self.stop_motion(send_preemption_signal=False)
             self.in_reflex, self._aborting, self._ticks = True, motion, STATES_BEFORE_ANSWER
@@ -53,6 +57,11 @@ class ReflexingRobotServer(FrankaRobotServer):
                 )
                 self._aborting = 0
                 self.reset_current_motion_id()
+
+    def _handle_udp_command(self, command_data: bytes) -> None:
+        if self.current_motion_id and not self.in_reflex:
+            self._commanded = self.current_motion_id
+        super()._handle_udp_command(command_data)
 
     @property
     def robot_state(self):
@@ -68,6 +77,7 @@ class _Recovery(AutomaticErrorRecoveryCommand):
 
     def handle(self, server: ReflexingRobotServer) -> None:
         server.in_reflex = False
+        server.send_state()
         super().handle(server)
 
 
