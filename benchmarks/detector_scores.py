@@ -16,7 +16,7 @@ import sys
 from roboscript.detector_training.evaluation import score_views
 from roboscript.detector_training.scenes import scene_views
 from roboscript.detector_training.train import VALIDATION_OFFSET, summary
-from roboscript.perception.detector_model import load_detector_model
+from roboscript.perception.detection.detector_model import load_detector_model
 
 
 def main() -> int:

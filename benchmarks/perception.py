@@ -32,14 +32,14 @@ import numpy as np
 
 from roboscript.backends.mujoco_backend import MujocoBackend
 from roboscript.detector_training.evaluation import Tally
-from roboscript.perception.detector_model import load_detector_model
+from roboscript.perception.detection.detector_model import load_detector_model
+from roboscript.perception.detection.grounding import GroundingNoise, SegmentationGrounder, normalize_phrase
+from roboscript.perception.detection.trained_detector import TrainedDetector
 from roboscript.perception.evaluation import box_iou, score_instances, tuple_is_correct
-from roboscript.perception.fusion import FusionSettings
-from roboscript.perception.grounding import GroundingNoise, SegmentationGrounder, normalize_phrase
-from roboscript.perception.observation import observe
-from roboscript.perception.pipeline import shows_in_pieces
-from roboscript.perception.self_filter import SelfFilter
-from roboscript.perception.trained_detector import TrainedDetector
+from roboscript.perception.furniture.seen_furniture import shows_in_pieces
+from roboscript.perception.reconstruction.fusion import FusionSettings
+from roboscript.perception.reconstruction.observation import observe
+from roboscript.perception.reconstruction.self_filter import SelfFilter
 from roboscript.sim.world_catalog import load_world, world_names
 
 

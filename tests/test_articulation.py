@@ -9,9 +9,9 @@ import pytest
 
 from roboscript.assembly import build_perception
 from roboscript.backends.mujoco_backend import MujocoBackend
-from roboscript.perception.articulation import door_joint, drawer_joint, front_plane, moved_with_handle
 from roboscript.perception.base import ArticulationJoint
-from roboscript.perception.points import entity_points
+from roboscript.perception.furniture.articulation import door_joint, drawer_joint, front_plane, moved_with_handle
+from roboscript.perception.reconstruction.points import entity_points
 
 
 @pytest.fixture(scope="module")
@@ -75,7 +75,7 @@ def test_a_part_no_view_saw_cannot_have_its_joint_estimated(cabinet):
     backend, _, _ = cabinet
     seen = build_perception(backend, "gt-2d")
     seen.detect(["mug"])
-    del seen.parts_seen["cabinet.drawer_2"]
+    del seen.furniture_seen.seen["cabinet.drawer_2"]
     with pytest.raises(KeyError, match=r"'cabinet.drawer_2' was not found"):
         seen.joints("cabinet.drawer_2")
     parts = {j.part for j in seen.joints("cabinet")}
@@ -115,7 +115,7 @@ def test_furniture_parts_are_measured_from_their_points(cabinet):
         normal = seen.plane_normal(drawer, on_front)
         assert normal @ truth.plane_normal(drawer, on_front) > np.cos(np.radians(2.0)), (drawer, normal)
     assert seen.receptacle("cabinet.handle_1") is None and seen.receptacle("cabinet") is None
-    del seen.parts_seen["cabinet.handle_3"]
+    del seen.furniture_seen.seen["cabinet.handle_3"]
     assert "cabinet.handle_3" not in seen.names()
     with pytest.raises(KeyError, match=r"'cabinet.handle_3' was not found: no camera has seen it"):
         seen.require("cabinet.handle_3")
@@ -129,7 +129,7 @@ def test_a_front_and_a_handle_from_different_looks_give_no_joint(cabinet):
     seen = build_perception(backend, "gt-2d")
     seen.detect(["mug"])
     seen.detect(["mug"])
-    seen._part_look["cabinet.handle_1"] = seen.looks - 1
+    seen.furniture_seen.look_of["cabinet.handle_1"] = seen.looks - 1
     with pytest.raises(
         KeyError, match=r"'cabinet.drawer_1' was not found: its front and its handle .* different looks"
     ):

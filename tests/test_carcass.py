@@ -7,8 +7,8 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
-from roboscript.perception.carcass import carcass_frame, carcass_panels
-from roboscript.perception.compartments import PANEL
+from roboscript.perception.furniture.carcass import carcass_frame, carcass_panels
+from roboscript.perception.furniture.compartments import PANEL
 
 CENTRE = np.array([0.5, 0.2, 0.0])
 

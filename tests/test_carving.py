@@ -5,7 +5,7 @@ from __future__ import annotations
 import numpy as np
 
 from roboscript.geometry import Transform, quat_from_yaw
-from roboscript.perception.carving import SHELL, seen_through
+from roboscript.perception.reconstruction.carving import SHELL, seen_through
 from roboscript.planning.perceived_scene import filled_below
 from roboscript.robot_io import CameraFrame
 

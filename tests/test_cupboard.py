@@ -18,7 +18,7 @@ from roboscript.bench.tasks import load_suite
 from roboscript.bench.trial import TrialSpec, run_trial
 from roboscript.geometry import Transform, quat_from_yaw
 from roboscript.perception.base import ArticulationJoint, Receptacle
-from roboscript.perception.compartments import closed_facing, compartment_inside, door_angle
+from roboscript.perception.furniture.compartments import closed_facing, compartment_inside, door_angle
 from roboscript.planning.ground_truth_scene import ground_truth_scene
 from roboscript.sim.world_file import WorldFileError, parse_world
 

@@ -12,11 +12,11 @@ import pytest
 
 from roboscript.assembly import build_perception, build_tools
 from roboscript.backends.mujoco_backend import MujocoBackend
-from roboscript.perception.detectors import DetectorError, OpenVocabularyDetector, closest_phrase
-from roboscript.perception.grounding import image_box_iou
+from roboscript.perception.detection.detectors import DetectorError, OpenVocabularyDetector, closest_phrase
+from roboscript.perception.detection.grounding import image_box_iou
+from roboscript.perception.detection.trained_detector import TrainedDetector
 from roboscript.perception.modes import DETECTOR_ENV, DetectorSpec, perception_mode
-from roboscript.perception.observation import observe
-from roboscript.perception.trained_detector import TrainedDetector
+from roboscript.perception.reconstruction.observation import observe
 
 PHRASES = ["apple", "footed bowl", "lemon"]
 

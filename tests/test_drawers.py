@@ -9,7 +9,7 @@ import pytest
 from roboscript.assembly import build_perception
 from roboscript.backends.mujoco_backend import MujocoBackend
 from roboscript.perception.base import DRAWER_FRONT_CLEARANCE, ArticulationJoint
-from roboscript.perception.drawers import carcass_front, closed_drawer, drawer_receptacle, opening_frame
+from roboscript.perception.furniture.drawers import carcass_front, closed_drawer, drawer_receptacle, opening_frame
 
 RNG = np.random.default_rng(3)
 

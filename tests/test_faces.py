@@ -2,7 +2,7 @@
 
 import numpy as np
 
-from roboscript.perception.faces import plane_normal_at, prevailing_direction
+from roboscript.perception.reconstruction.faces import plane_normal_at, prevailing_direction
 
 
 def _front_with_handle() -> tuple[np.ndarray, np.ndarray, np.ndarray]:

@@ -6,7 +6,7 @@ from __future__ import annotations
 import numpy as np
 
 from roboscript.geometry import Transform
-from roboscript.perception.free_space import seen_through, stands_empty
+from roboscript.perception.reconstruction.free_space import seen_through, stands_empty
 from roboscript.robot_io import CameraFrame
 
 H, W = 60, 80

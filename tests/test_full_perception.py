@@ -13,8 +13,9 @@ from roboscript.assembly import build_perception, build_tools
 from roboscript.backends.base import Backend
 from roboscript.backends.mujoco_backend import MujocoBackend
 from roboscript.bench.tasks import get_task
-from roboscript.perception.pipeline import ObjectNotFoundError, PipelinePerception
-from roboscript.perception.trained_detector import TrainedDetector
+from roboscript.perception.base import ObjectNotFoundError
+from roboscript.perception.detection.trained_detector import TrainedDetector
+from roboscript.perception.pipeline import PipelinePerception
 from roboscript.sim.world_catalog import load_world
 
 

@@ -9,8 +9,8 @@ import numpy as np
 import pytest
 
 from roboscript.backends.mujoco_backend import MujocoBackend
-from roboscript.perception.furniture_parts import FurnitureRows, row_bands, split_furniture
-from roboscript.perception.segments import frame_points, table_height
+from roboscript.perception.detection.furniture_parts import FurnitureRows, row_bands, split_furniture
+from roboscript.perception.detection.segments import frame_points, table_height
 
 ROWS = FurnitureRows("cabinet", ("drawer", "drawer", "drawer", "door"))
 

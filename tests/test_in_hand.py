@@ -1,11 +1,11 @@
-"""Where a held object sits in the hand, from a partial look at it there (perception/in_hand.py)."""
+"""Where a held object sits in the hand, from a partial look at it there (perception/reconstruction/in_hand.py)."""
 
 import math
 
 import numpy as np
 
 from roboscript.geometry import Transform
-from roboscript.perception.in_hand import register
+from roboscript.perception.reconstruction.in_hand import register
 
 UNTURNED = np.array([0.0, 0.0, 0.0, 1.0])
 

@@ -7,7 +7,7 @@ import numpy as np
 import pytest
 
 from roboscript.geometry import Box3D
-from roboscript.perception.instances import (
+from roboscript.perception.reconstruction.instances import (
     Instance3D,
     _claimed_by,
     ground,
@@ -112,8 +112,8 @@ def _one_view(size: int = 120) -> tuple[np.ndarray, np.ndarray]:
 
 
 def test_the_larger_object_gives_up_the_smaller_ones_surface_and_furniture_keeps_its_own():
-    from roboscript.perception.grounding import Detection2D
-    from roboscript.perception.instances import refine_all
+    from roboscript.perception.detection.grounding import Detection2D
+    from roboscript.perception.reconstruction.instances import refine_all
 
     points, normals = _one_view()
     detections = [[Detection2D("tray", (0, 0, 120, 120)), Detection2D("cube", (36, 36, 64, 64))]]
@@ -159,8 +159,8 @@ def test_a_few_points_of_the_boxs_side_kept_as_the_blocks_do_not_take_it_down_to
 
 
 def test_objects_are_refined_smallest_in_space_first_however_small_the_images_show_them():
-    from roboscript.perception.grounding import Detection2D
-    from roboscript.perception.instances import refine_all
+    from roboscript.perception.detection.grounding import Detection2D
+    from roboscript.perception.reconstruction.instances import refine_all
 
     points, normals = _one_view()
     # The tray's box in the image is the smaller (as a box under a block is, hidden by it from above).

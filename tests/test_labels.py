@@ -6,7 +6,7 @@ from __future__ import annotations
 import math
 
 from roboscript.assembly import furniture_labels
-from roboscript.perception.labels import segment_labels
+from roboscript.perception.detection.labels import segment_labels
 from roboscript.sim.world_catalog import load_world
 
 

@@ -5,7 +5,7 @@ from __future__ import annotations
 import numpy as np
 
 from roboscript.geometry import Transform, quat_from_yaw
-from roboscript.perception.memory import remembered
+from roboscript.perception.reconstruction.memory import remembered
 from roboscript.robot_io import CameraFrame
 
 

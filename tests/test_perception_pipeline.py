@@ -9,17 +9,17 @@ import numpy as np
 import pytest
 
 from roboscript.backends.mujoco_backend import MujocoBackend
-from roboscript.perception.evaluation import score_instances, tuple_is_correct
-from roboscript.perception.fusion import FusionSettings, depth_problem, fuse
-from roboscript.perception.grounding import (
+from roboscript.perception.detection.grounding import (
     Detection2D,
     GroundingNoise,
     SegmentationGrounder,
     entity_phrases,
     normalize_phrase,
 )
-from roboscript.perception.matching import match_views
-from roboscript.perception.observation import observe
+from roboscript.perception.evaluation import score_instances, tuple_is_correct
+from roboscript.perception.reconstruction.fusion import FusionSettings, depth_problem, fuse
+from roboscript.perception.reconstruction.matching import match_views
+from roboscript.perception.reconstruction.observation import observe
 from roboscript.sim.world_catalog import world_names
 
 

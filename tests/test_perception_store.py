@@ -17,8 +17,9 @@ from roboscript.bench.compare import compare_runs
 from roboscript.bench.runner import run_isolated
 from roboscript.bench.tasks import get_task
 from roboscript.bench.trial import TrialSpec
+from roboscript.perception.base import ObjectNotFoundError
 from roboscript.perception.evaluation import box_iou
-from roboscript.perception.pipeline import ObjectNotFoundError, footprint_of
+from roboscript.perception.footprints import footprint_of
 from roboscript.sim.world_file import parse_world
 
 

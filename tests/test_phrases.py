@@ -4,8 +4,8 @@ from __future__ import annotations
 
 import pytest
 
-from roboscript.perception import phrases
-from roboscript.perception.phrases import CATEGORY, COLOURED, DESCRIBED, GROUP, NAME, match_phrase
+from roboscript.perception.detection import phrases
+from roboscript.perception.detection.phrases import CATEGORY, COLOURED, DESCRIBED, GROUP, NAME, match_phrase
 
 
 def test_a_type_name_means_that_type_most_and_its_look_alikes_less():

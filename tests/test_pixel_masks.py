@@ -2,7 +2,7 @@
 
 import numpy as np
 
-from roboscript.perception.pixel_masks import grown, opened, shrunk
+from roboscript.perception.detection.pixel_masks import grown, opened, shrunk
 
 
 def test_opening_takes_off_a_strip_one_pixel_wide_and_keeps_a_block():

@@ -10,7 +10,7 @@ import numpy as np
 import pytest
 
 from roboscript.backends.mujoco_backend import MujocoBackend
-from roboscript.perception.self_filter import SelfFilter
+from roboscript.perception.reconstruction.self_filter import SelfFilter
 
 
 @pytest.mark.parametrize("robot", ["panda", "ur5e"])

@@ -18,19 +18,19 @@ from roboscript.detector_training.classes import class_names, look_alike_classes
 from roboscript.detector_training.samples import view_samples
 from roboscript.detector_training.scenes import scene_views
 from roboscript.objects import object_types
-from roboscript.perception.detector_model import (
+from roboscript.perception.detection.detector_model import (
     FURNITURE,
     HANDLE,
     OTHER,
     DetectorModelError,
     load_detector_model,
 )
-from roboscript.perception.grounding import SegmentationGrounder, image_box_iou, normalize_phrase
-from roboscript.perception.mlp import Training, train_mlp
+from roboscript.perception.detection.grounding import SegmentationGrounder, image_box_iou, normalize_phrase
+from roboscript.perception.detection.mlp import Training, train_mlp
+from roboscript.perception.detection.trained_detector import TrainedDetector
 from roboscript.perception.modes import perception_mode
-from roboscript.perception.points import without_pixels
-from roboscript.perception.self_filter import SelfFilter
-from roboscript.perception.trained_detector import TrainedDetector
+from roboscript.perception.reconstruction.points import without_pixels
+from roboscript.perception.reconstruction.self_filter import SelfFilter
 from roboscript.sim.world_catalog import load_world
 
 

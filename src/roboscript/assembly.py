@@ -59,7 +59,7 @@ def build_perception(
         # front of it. (The camera pipeline looks at everything at the first question anyway.)
         truth.detect(None)
         return truth
-    from roboscript.perception.grounding import SegmentationGrounder
+    from roboscript.perception.detection.grounding import SegmentationGrounder
     from roboscript.perception.pipeline import PipelinePerception
 
     world = backend.ground_truth.world
@@ -103,11 +103,11 @@ def _perception_from_sensors(backend: Backend, mode: PerceptionMode, seed: int, 
     """The camera pipeline from the backend's sensors alone: boxes from its segmentation node or a detector,
     labels of furniture from the scene's description; the robot's own pixels from its segmentation where that
     labels them, else from its model and joint readings (the self-filter)."""
-    from roboscript.perception.grounding import SegmentationGrounder
-    from roboscript.perception.labels import FurnitureLabels, segment_labels
+    from roboscript.perception.detection.grounding import SegmentationGrounder
+    from roboscript.perception.detection.labels import FurnitureLabels, segment_labels
     from roboscript.perception.modes import SEGMENTATION
     from roboscript.perception.pipeline import PipelinePerception
-    from roboscript.perception.self_filter import SelfFilter
+    from roboscript.perception.reconstruction.self_filter import SelfFilter
 
     labels = furniture_labels(scene) if scene is not None else FurnitureLabels()
     robot_index = None
@@ -130,7 +130,7 @@ def _perception_from_sensors(backend: Backend, mode: PerceptionMode, seed: int, 
 
 def furniture_labels(scene: WorldSpec):
     """The furniture of a world's description as labels: each cabinet, its drawers and doors and their handles."""
-    from roboscript.perception.labels import FurnitureLabels, PartLabel
+    from roboscript.perception.detection.labels import FurnitureLabels, PartLabel
 
     parts = []
     for cabinet in scene.cabinets:
@@ -166,7 +166,7 @@ def _check_camera_pipeline(mode: PerceptionMode) -> None:
 def _detector(mode: PerceptionMode, scene: WorldSpec | None):
     """The detector ``mode`` names; the trained one knows what ``scene``'s description says (objects' types,
     furniture's rows)."""
-    from roboscript.perception.detectors import DetectorError, OpenVocabularyDetector
+    from roboscript.perception.detection.detectors import DetectorError, OpenVocabularyDetector
     from roboscript.perception.modes import TRAINED
 
     if mode.detector is None:
@@ -175,8 +175,8 @@ def _detector(mode: PerceptionMode, scene: WorldSpec | None):
             "(the command line's --detector or $ROBOSCRIPT_DETECTOR)"
         )
     if mode.detector.kind == TRAINED:
-        from roboscript.perception.detector_model import load_detector_model
-        from roboscript.perception.trained_detector import TrainedDetector
+        from roboscript.perception.detection.detector_model import load_detector_model
+        from roboscript.perception.detection.trained_detector import TrainedDetector
 
         return TrainedDetector.for_scene(scene, load_detector_model(mode.detector.directory or None))
     return OpenVocabularyDetector(mode.detector.kind, mode.detector.directory)

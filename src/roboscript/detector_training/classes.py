@@ -9,7 +9,7 @@ fringe, glimpses of the table's edge).
 from __future__ import annotations
 
 from roboscript.objects import object_types
-from roboscript.perception.detector_model import FURNITURE, HANDLE, OTHER
+from roboscript.perception.detection.detector_model import FURNITURE, HANDLE, OTHER
 
 
 def _looks(type_name: str) -> tuple:

@@ -5,7 +5,7 @@ Each piece of a view's class-agnostic segmentation takes the entity most of its 
 segmentation. A border joins two pieces of one entity; the classifier learns from the segments the pieces of each
 entity make together (what a perfect merge gives) and from single pieces that show one entity alone (what a
 merge that stopped short gives). Pieces of the robot (the self-filter's fringe), and of nothing, are of the class
-:data:`~roboscript.perception.detector_model.OTHER`.
+:data:`~roboscript.perception.detection.detector_model.OTHER`.
 """
 
 from __future__ import annotations
@@ -17,10 +17,10 @@ import numpy as np
 
 from roboscript.detector_training.scenes import EntityLabel, LabelledView
 from roboscript.names import kind_of
-from roboscript.perception.detector_model import FURNITURE, HANDLE, OTHER
-from roboscript.perception.segment_features import SEGMENT_FEATURES, features_of_pixels
-from roboscript.perception.segment_merging import describe_pieces
-from roboscript.perception.segments import frame_points, segment
+from roboscript.perception.detection.detector_model import FURNITURE, HANDLE, OTHER
+from roboscript.perception.detection.segment_features import SEGMENT_FEATURES, features_of_pixels
+from roboscript.perception.detection.segment_merging import describe_pieces
+from roboscript.perception.detection.segments import frame_points, segment
 
 PURE = 0.8  # share of a piece's pixels one entity must have for the piece to teach what that entity looks like
 MIXED = 0.5  # pieces less pure than this teach nothing about borders

@@ -20,7 +20,7 @@ from roboscript.backends.mujoco_backend import MujocoBackend
 from roboscript.generate.recipe import Recipe, load_recipe
 from roboscript.generate.worlds import GenerationError, generate_world, world_seed
 from roboscript.objects import object_types
-from roboscript.perception.self_filter import SelfFilter
+from roboscript.perception.reconstruction.self_filter import SelfFilter
 from roboscript.robot_io import CameraFrame
 from roboscript.sim.world_file import WorldFileError, WorldSpec, parse_world
 

@@ -21,8 +21,8 @@ from roboscript.detector_training.classes import class_names, look_alike_classes
 from roboscript.detector_training.evaluation import DetectionScores, score_views
 from roboscript.detector_training.samples import ViewSamples, view_samples
 from roboscript.detector_training.scenes import LabelledView, scene_views
-from roboscript.perception.detector_model import FORMAT, DetectorModel
-from roboscript.perception.mlp import MLP, Training, train_mlp
+from roboscript.perception.detection.detector_model import FORMAT, DetectorModel
+from roboscript.perception.detection.mlp import MLP, Training, train_mlp
 
 VALIDATION_OFFSET = 100_003  # the validation worlds' seed, from the training seed
 Progress = Callable[[str], None]

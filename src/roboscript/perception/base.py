@@ -39,6 +39,15 @@ class UnknownObjectError(UsageError, KeyError):
         return str(self.args[0])
 
 
+class ObjectNotFoundError(UnknownObjectError):
+    """A name the program asked about was looked for and not seen; the message says what was seen."""
+
+    def __init__(self, name: str, known: list[str], seen: str):
+        self.name, self.known = name, list(known)
+        message = f"{name!r} was not found: {seen}. Known objects: {', '.join(self.known) or 'none'}"
+        KeyError.__init__(self, message)
+
+
 @dataclass(frozen=True)
 class ArticulationJoint:
     """A joint of an articulated object in world coordinates; ``position`` is a point on its axis."""

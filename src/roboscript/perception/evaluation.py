@@ -10,9 +10,9 @@ from dataclasses import dataclass
 import numpy as np
 
 from roboscript.geometry import Box3D
-from roboscript.perception.grounding import Detection2D
-from roboscript.perception.instances import Instance3D
-from roboscript.perception.matching import MatchedObject
+from roboscript.perception.detection.grounding import Detection2D
+from roboscript.perception.reconstruction.instances import Instance3D
+from roboscript.perception.reconstruction.matching import MatchedObject
 from roboscript.sim.ground_truth import GroundTruth
 
 

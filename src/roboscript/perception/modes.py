@@ -6,14 +6,15 @@ observed surfaces as occupancy boxes). ``full`` takes none from ground truth, ``
 ``gt-scene`` each take one, and can be combined with ``+`` (``gt-2d+gt-scene``) to isolate the rest.
 
 Without ground-truth 2D boxes, the boxes come from a detector: by default the one the project trains itself on its
-generated scenes and ships (``trained``, :mod:`roboscript.perception.trained_detector`), or another model of it
-(``trained:FILE.npz``, from ``roboscript train-detector``), or an open-vocabulary detector whose weights the user
+generated scenes and ships (``trained``, :mod:`roboscript.perception.detection.trained_detector`), or another model of
+it (``trained:FILE.npz``, from ``roboscript train-detector``), or an open-vocabulary detector whose weights the user
 provides (``owlv2:DIR`` or ``grounding-dino:DIR``); ``--detector`` or ``$ROBOSCRIPT_DETECTOR`` (read by the command
 line only) choose.
-Where objects are observed, furniture is too: its boxes, points, joints (:mod:`roboscript.perception.articulation`)
-and drawers' insides (:mod:`roboscript.perception.drawers`) come from the points of the carcass, fronts and
-handles; only the labels (what parts there are, which part a handle moves, sliding or turning) come from the
-furniture's description. :mod:`roboscript.assembly` builds the perception a mode asks for.
+Where objects are observed, furniture is too: its boxes, points, joints
+(:mod:`roboscript.perception.furniture.articulation`) and drawers' insides
+(:mod:`roboscript.perception.furniture.drawers`) come from the points of the carcass, fronts and handles; only the
+labels (what parts there are, which part a handle moves, sliding or turning) come from the furniture's description.
+:mod:`roboscript.assembly` builds the perception a mode asks for.
 """
 
 from __future__ import annotations
@@ -81,7 +82,7 @@ class PerceptionMode:
 def perception_mode(mode: str | PerceptionMode, detector: str | None = None) -> PerceptionMode:
     """The mode ``mode`` names, with the detector ``detector`` names (``KIND:PATH``; the packaged trained detector
     where none is named) where the mode needs one, checked (its weights are there) but not loaded. Raises
-    ``ValueError`` for an unknown mode and :class:`~roboscript.perception.detectors.DetectorError` for a bad
+    ``ValueError`` for an unknown mode and :class:`~roboscript.perception.detection.detectors.DetectorError` for a bad
     detector."""
     parsed = mode if isinstance(mode, PerceptionMode) else parse_mode(mode)
     if not parsed.needs_detector or parsed.detector is not None:
@@ -118,13 +119,13 @@ GROUND_TRUTH = parse_mode("gt")
 
 def parse_detector(spec: str, mode: str = "full") -> DetectorSpec:
     """The detector ``spec`` (``KIND:DIR``) names, checked, not loaded; ``mode`` is named in the error."""
-    from roboscript.perception.detectors import DETECTOR_KINDS, DetectorError, check_model_dir
+    from roboscript.perception.detection.detectors import DETECTOR_KINDS, DetectorError, check_model_dir
 
     if spec == SEGMENTATION:
         return DetectorSpec(SEGMENTATION, "")
     kind, sep, path = spec.partition(":")
     if kind == TRAINED:
-        from roboscript.perception.detector_model import check_model_file
+        from roboscript.perception.detection.detector_model import check_model_file
 
         return DetectorSpec(TRAINED, check_model_file(path) if path else "")
     if not sep or not path:

@@ -17,9 +17,9 @@ import numpy as np
 
 from roboscript.geometry import Box3D, Transform
 from roboscript.perception.base import Perception, outside, within
-from roboscript.perception.carcass import carcass_facing, carcass_panels
-from roboscript.perception.carving import SHELL, seen_through
-from roboscript.perception.memory import remembered
+from roboscript.perception.furniture.carcass import carcass_facing, carcass_panels
+from roboscript.perception.reconstruction.carving import SHELL, seen_through
+from roboscript.perception.reconstruction.memory import remembered
 from roboscript.planning.occupancy import VOXEL, occupied_boxes
 from roboscript.planning.scene import PlanningScene
 from roboscript.robots.description import RobotDescription
@@ -127,8 +127,8 @@ def filled_below(
     under the surfaces seen from above (its sides and underside are often out of every camera's sight, and a
     finger must not pass under a banana's seen top). A bowl's inside is filled only below its seen bottom.
     ``seen_free`` (fill points -> mask) tells the fill a camera saw through, which is left out more than
-    :data:`~roboscript.perception.carving.SHELL` below the column's lowest seen point (the gap under a footed
-    bowl's rim: :mod:`roboscript.perception.carving`)."""
+    :data:`~roboscript.perception.reconstruction.carving.SHELL` below the column's lowest seen point (the gap under a
+    footed bowl's rim: :mod:`roboscript.perception.reconstruction.carving`)."""
     points = np.asarray(points, dtype=float).reshape(-1, 3)
     if len(points) == 0:
         return points
@@ -156,8 +156,8 @@ def filled_below(
 
 
 def carcasses(perception: Perception) -> dict[str, np.ndarray]:
-    """By furniture name, points filling its carcass's side and back panels (:mod:`roboscript.perception.carcass`)
-    for each piece of furniture whose front could be told."""
+    """By furniture name, points filling its carcass's side and back panels
+    (:mod:`roboscript.perception.furniture.carcass`) for each piece of furniture whose front could be told."""
     out = {}
     for name in perception.furniture():
         if "." in name:  # a part (drawer, door, handle): its furniture's carcass holds it
@@ -183,7 +183,7 @@ class PerceivedSceneSource:
     ``robot_state`` gives the robot's joint readings by the joint's name in the robot's model (the arm's and the
     gripper's: proprioception, as :meth:`Backend.joint_states` reads it). Surfaces seen in earlier looks that the
     robot's body (perception's :meth:`~roboscript.perception.base.Perception.last_masks`) now hides are remembered
-    (:mod:`roboscript.perception.memory`). :meth:`current` rebuilds
+    (:mod:`roboscript.perception.reconstruction.memory`). :meth:`current` rebuilds
     the scene when :meth:`mark_stale` was called or perception has looked again since the last build.
     """
 

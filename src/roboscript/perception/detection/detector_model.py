@@ -1,8 +1,8 @@
 """The perception detector's learned parts, as one file: the network that joins pieces into things, the network
 that tells what a thing is, the classes it tells apart, and how it was trained.
 
-The package ships one (``perception/models/detector.npz``), made by ``roboscript train-detector``; a user may point
-``--detector trained:PATH`` at their own.
+The package ships one (``perception/detection/models/detector.npz``), made by ``roboscript train-detector``; a user may
+point ``--detector trained:PATH`` at their own.
 """
 
 from __future__ import annotations
@@ -15,10 +15,10 @@ from pathlib import Path
 
 import numpy as np
 
-from roboscript.perception.detectors import DetectorError
-from roboscript.perception.mlp import MLP
-from roboscript.perception.piece_pairs import PAIR_FEATURES
-from roboscript.perception.segment_features import SEGMENT_FEATURES
+from roboscript.perception.detection.detectors import DetectorError
+from roboscript.perception.detection.mlp import MLP
+from roboscript.perception.detection.piece_pairs import PAIR_FEATURES
+from roboscript.perception.detection.segment_features import SEGMENT_FEATURES
 
 FORMAT = "roboscript-detector/1"
 FURNITURE = "furniture"  # the class of a cabinet's carcass, fronts and insides: its parts are told apart by geometry
@@ -104,4 +104,4 @@ def check_model_file(path: str | os.PathLike) -> str:
 
 
 def packaged_model_path() -> Path:
-    return Path(str(resources.files("roboscript") / "perception" / "models" / "detector.npz"))
+    return Path(str(resources.files("roboscript") / "perception" / "detection" / "models" / "detector.npz"))

@@ -3,7 +3,7 @@
 A grounder takes a frame and a list of phrases ("apple", "white mug", "footed_bowl") and returns labelled boxes.
 :class:`SegmentationGrounder` reads them off the simulator's segmentation: the ground-truth 2D boxes of the
 ablations, with optional noise, dropout and label confusion for studies of how detection errors propagate.
-Open-vocabulary detectors live in :mod:`roboscript.perception.detectors`.
+Open-vocabulary detectors live in :mod:`roboscript.perception.detection.detectors`.
 """
 
 from __future__ import annotations

@@ -8,17 +8,17 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from roboscript.perception.fusion import FusedScene, FusionSettings, fuse
-from roboscript.perception.grounding import Detection2D, Grounder
-from roboscript.perception.instances import (
+from roboscript.perception.detection.grounding import Detection2D, Grounder
+from roboscript.perception.reconstruction.fusion import FusedScene, FusionSettings, fuse
+from roboscript.perception.reconstruction.instances import (
     Instance3D,
     build_instances,
     ground,
     refine_all,
     support_height,
 )
-from roboscript.perception.matching import MatchedObject, Projection, match_views, membership, project
-from roboscript.perception.points import normal_map, point_map, without_pixels
+from roboscript.perception.reconstruction.matching import MatchedObject, Projection, match_views, membership, project
+from roboscript.perception.reconstruction.points import normal_map, point_map, without_pixels
 from roboscript.robot_io import CameraFrame
 
 
@@ -53,7 +53,7 @@ def observe(
     """Runs the chain on ``frames`` for the things ``phrases`` name. ``robot_masks``: per frame, the pixels of the
     robot itself (from its model), left out of the fused surface; ``pieces``: the phrases of furniture parts,
     which may be seen in several pieces (an open drawer's front and its inside); ``furniture``: the phrases of
-    furniture and all its parts (see :func:`~roboscript.perception.instances.refine_all`)."""
+    furniture and all its parts (see :func:`~roboscript.perception.reconstruction.instances.refine_all`)."""
     if not frames:
         raise ValueError("observe needs at least one camera frame")
     scene = fuse(frames, settings, robot_masks)
@@ -77,3 +77,21 @@ def observe(
     instances = refine_all(instances, detections, maps, normals, support, furniture)
     instances = ground(instances, support)
     return Observation(usable, scene, detections, projections, memberships, matched, instances, support)
+
+
+def why_not_found(seen: Observation, phrase: str, account: str = "") -> str:
+    """What a look that found nothing of ``phrase`` saw instead, per view (and the detector's ``account`` of the
+    phrase): the "not found" a program reads."""
+    views = len(seen.frames)
+    found = {}
+    for detections in seen.detections:
+        for d in detections:
+            found[d.label] = found.get(d.label, 0) + 1
+    asked = f"no view of {views} ({', '.join(f.name for f in seen.frames)}) found {phrase!r}"
+    if seen.skipped:
+        asked += "; skipped: " + ", ".join(f"{n} ({why})" for n, why in seen.skipped.items())
+    if account:
+        asked += f"; {account}"
+    if not found:
+        return asked + "; nothing asked for was seen"
+    return asked + "; seen: " + ", ".join(f"{label} in {n} view{'s' * (n > 1)}" for label, n in sorted(found.items()))

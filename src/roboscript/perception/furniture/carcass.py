@@ -18,8 +18,8 @@ import numpy as np
 
 from roboscript.errors import RoboScriptError
 from roboscript.perception.base import Perception
-from roboscript.perception.compartments import MIN_TOP_POINTS, PANEL
-from roboscript.perception.furniture_parts import top_face
+from roboscript.perception.detection.furniture_parts import top_face
+from roboscript.perception.furniture.compartments import MIN_TOP_POINTS, PANEL
 
 log = logging.getLogger(__name__)
 

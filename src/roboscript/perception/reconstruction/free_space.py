@@ -13,7 +13,7 @@ from collections.abc import Sequence
 
 import numpy as np
 
-from roboscript.perception.matching import project
+from roboscript.perception.reconstruction.matching import project
 from roboscript.robot_io import CameraFrame
 
 THROUGH = 0.02  # metres beyond a point the depth image must measure for a view to see through it

@@ -14,7 +14,7 @@ import numpy as np
 from roboscript.errors import FailureError
 from roboscript.geometry import Transform, turns_about
 from roboscript.perception.base import ArticulationJoint, Receptacle
-from roboscript.perception.furniture_parts import LEVEL, TOP_BAND
+from roboscript.perception.detection.furniture_parts import LEVEL, TOP_BAND
 
 PANEL = 0.015  # metres: a cabinet's side, back and top panels
 DOOR_BEHIND = 0.02  # metres behind the front's plane the inside starts: the door's thickness, and a margin

@@ -1,10 +1,10 @@
 """The detector the project trains itself (``roboscript train-detector``): 2D boxes of the things phrases name, from
 one RGB-D frame, with nothing from the simulator.
 
-The frame's things and their classes come from :mod:`roboscript.perception.things`. A phrase labels the things
-whose class holds a type it names, the most specifically named ones first (:mod:`roboscript.perception.phrases`);
-furniture and handles are split into the carcass and its rows' parts by geometry
-(:mod:`roboscript.perception.furniture_parts`).
+The frame's things and their classes come from :mod:`roboscript.perception.detection.things`. A phrase labels the things
+whose class holds a type it names, the most specifically named ones first
+(:mod:`roboscript.perception.detection.phrases`); furniture and handles are split into the carcass and its rows' parts
+by geometry (:mod:`roboscript.perception.detection.furniture_parts`).
 """
 
 from __future__ import annotations
@@ -14,12 +14,12 @@ from typing import TYPE_CHECKING
 
 import numpy as np
 
-from roboscript.perception.detector_model import OTHER, DetectorModel, load_detector_model
-from roboscript.perception.furniture_parts import FurnitureRows, split_furniture
-from roboscript.perception.grounding import Detection2D, Grounder, normalize_phrase
-from roboscript.perception.phrases import PhraseMatch, match_phrase
-from roboscript.perception.segment_merging import union
-from roboscript.perception.things import FrameThings, ThingFinder
+from roboscript.perception.detection.detector_model import OTHER, DetectorModel, load_detector_model
+from roboscript.perception.detection.furniture_parts import FurnitureRows, split_furniture
+from roboscript.perception.detection.grounding import Detection2D, Grounder, normalize_phrase
+from roboscript.perception.detection.phrases import PhraseMatch, match_phrase
+from roboscript.perception.detection.segment_merging import union
+from roboscript.perception.detection.things import FrameThings, ThingFinder
 from roboscript.robot_io import CameraFrame
 
 if TYPE_CHECKING:  # a scene's description is a world file's; perception reads it, and never the simulator

@@ -10,9 +10,9 @@ import numpy as np
 from scipy.sparse import coo_matrix
 from scipy.sparse.csgraph import connected_components
 
-from roboscript.perception.mlp import MLP
-from roboscript.perception.piece_pairs import Borders, PieceStats, borders, pair_features, piece_stats
-from roboscript.perception.segments import Segmentation
+from roboscript.perception.detection.mlp import MLP
+from roboscript.perception.detection.piece_pairs import Borders, PieceStats, borders, pair_features, piece_stats
+from roboscript.perception.detection.segments import Segmentation
 
 JOIN = 0.5  # the probability of "one thing" above which a border joins its pieces
 NEAR_SHARE = 0.0  # share of a border's neighbours on one surface above which it may join its pieces

@@ -12,7 +12,7 @@ from collections.abc import Sequence
 
 import numpy as np
 
-from roboscript.perception.matching import VISIBILITY_TOLERANCE, pixel_depths
+from roboscript.perception.reconstruction.matching import VISIBILITY_TOLERANCE, pixel_depths
 from roboscript.robot_io import CameraFrame
 
 

@@ -1,7 +1,7 @@
 """A drawer's free inside from what the cameras saw of it: where things put into an open drawer can go.
 
 The frame is on the drawer's front, at the foot of its handle (the estimated joint's point,
-:mod:`roboscript.perception.articulation`), turned so that x points along the opening direction; the inside is
+:mod:`roboscript.perception.furniture.articulation`), turned so that x points along the opening direction; the inside is
 behind the front (x < 0). Across and down it is the drawer's bottom as seen; forward, it reaches the front panel's
 inner face, which the panel's top edge shows (the bottom just behind the panel is in its shadow); its top is the
 highest of the walls seen, at most the front's top. Along x it reaches back to the cabinet's front only, less a
@@ -17,8 +17,8 @@ import numpy as np
 
 from roboscript.geometry import Transform, quat_from_yaw
 from roboscript.perception.base import DRAWER_FRONT_CLEARANCE, ArticulationJoint, Receptacle
-from roboscript.perception.furniture_parts import top_face
-from roboscript.perception.instances import densest_layer
+from roboscript.perception.detection.furniture_parts import top_face
+from roboscript.perception.reconstruction.instances import densest_layer
 
 FRONT_BAND = 0.005  # metres behind the front's plane still taken as the front's own points
 PANEL_SEARCH = 0.04  # metres behind the front's plane a front panel's top edge is looked for

@@ -1,8 +1,8 @@
 """Seeing things in one RGB-D frame, before any phrase: the frame cut into pieces
-(:mod:`roboscript.perception.segments`), the pieces joined into things by the learned merging network
-(:mod:`roboscript.perception.segment_merging`), each thing classified by the learned classifier into one of the
-object library's look-alike classes, furniture, a handle or other (:mod:`roboscript.perception.detector_model`), and
-things of one class the merge left apart joined.
+(:mod:`roboscript.perception.detection.segments`), the pieces joined into things by the learned merging network
+(:mod:`roboscript.perception.detection.segment_merging`), each thing classified by the learned classifier into one of
+the object library's look-alike classes, furniture, a handle or other
+(:mod:`roboscript.perception.detection.detector_model`), and things of one class the merge left apart joined.
 
 Pixels whose depth is 0 are not looked at: the pipeline zeroes the robot's own (its self-filter's mask).
 """
@@ -16,12 +16,12 @@ import numpy as np
 from scipy.spatial import cKDTree
 
 from roboscript.objects import object_types
-from roboscript.perception.detector_model import FURNITURE, HANDLE, OTHER, DetectorModel
-from roboscript.perception.pixel_masks import opened
-from roboscript.perception.points import evenly_spread
-from roboscript.perception.segment_features import EXTENT, RISE, features_of_pixels
-from roboscript.perception.segment_merging import describe_pieces, merge, union
-from roboscript.perception.segments import FramePoints, Segmentation, frame_points, segment
+from roboscript.perception.detection.detector_model import FURNITURE, HANDLE, OTHER, DetectorModel
+from roboscript.perception.detection.pixel_masks import opened
+from roboscript.perception.detection.segment_features import EXTENT, RISE, features_of_pixels
+from roboscript.perception.detection.segment_merging import describe_pieces, merge, union
+from roboscript.perception.detection.segments import FramePoints, Segmentation, frame_points, segment
+from roboscript.perception.reconstruction.points import evenly_spread
 from roboscript.robot_io import CameraFrame
 
 BOX_PADDING = 1  # working pixels a box is grown by on every side

@@ -17,7 +17,7 @@ from collections.abc import Sequence
 
 import numpy as np
 
-from roboscript.perception.matching import pixel_depths
+from roboscript.perception.reconstruction.matching import pixel_depths
 from roboscript.robot_io import CameraFrame
 
 SHELL = 0.02  # metres below an object's lowest seen point in a column within which the fill is always kept

@@ -13,7 +13,7 @@ from collections.abc import Sequence
 import numpy as np
 
 from roboscript.errors import RoboScriptError
-from roboscript.perception.grounding import Detection2D, Grounder, image_box_iou, normalize_phrase
+from roboscript.perception.detection.grounding import Detection2D, Grounder, image_box_iou, normalize_phrase
 from roboscript.robot_io import CameraFrame
 
 DETECTOR_KINDS = ("owlv2", "grounding-dino")

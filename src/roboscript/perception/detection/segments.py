@@ -4,7 +4,7 @@ Works on every ``stride``-th pixel. The table is the dominant level plane the de
 (less the robot's own pixels, which its model tells) is cut into pieces where neighbouring pixels are far apart in
 3D, differ in colour, or meet in a concave crease (a mug standing on a plate meets it in one; a box's own edges are
 convex and keep it whole). Pieces are deliberately small: a cap and its bottle, a box's two colours, come apart
-here and are joined again by :mod:`roboscript.perception.segment_merging`, which learned when to.
+here and are joined again by :mod:`roboscript.perception.detection.segment_merging`, which learned when to.
 """
 
 from __future__ import annotations

@@ -15,7 +15,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from roboscript.perception.grounding import Detection2D
+from roboscript.perception.detection.grounding import Detection2D
 from roboscript.robot_io import CameraFrame
 
 VISIBILITY_TOLERANCE = 0.01  # metres a point may lie behind the depth image's surface and still count as seen

@@ -8,8 +8,8 @@ from __future__ import annotations
 
 import numpy as np
 
-from roboscript.perception.piece_pairs import horizontal_extent
-from roboscript.perception.segments import FramePoints
+from roboscript.perception.detection.piece_pairs import horizontal_extent
+from roboscript.perception.detection.segments import FramePoints
 
 COLOUR_LEVELS = 4  # per channel, for the colour histogram
 PROFILE_BINS = 4  # of the height profile

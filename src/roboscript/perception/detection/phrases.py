@@ -18,7 +18,7 @@ from importlib import resources
 
 from roboscript.datafile import load_yaml
 from roboscript.objects import object_types
-from roboscript.perception.grounding import normalize_phrase
+from roboscript.perception.detection.grounding import normalize_phrase
 
 DESCRIBED, NAME, COLOURED, CATEGORY, GROUP = 5, 4, 3, 2, 1  # how specifically a phrase names a type
 
@@ -38,7 +38,7 @@ class PhraseMatch:
 @functools.cache
 def phrase_groups() -> dict[str, frozenset[str]]:
     """Group word -> the categories it takes in; raises ``ValueError`` naming a category the library lacks."""
-    text = (resources.files("roboscript") / "perception" / "phrase_groups.yaml").read_text()
+    text = (resources.files("roboscript") / "perception" / "detection" / "phrase_groups.yaml").read_text()
     data = load_yaml(text)
     categories = {normalize_phrase(t.category) for t in object_types().values()}
     groups = {}

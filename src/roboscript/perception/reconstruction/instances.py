@@ -15,7 +15,7 @@ import numpy as np
 
 from roboscript.geometry import Box3D
 from roboscript.perception.base import within
-from roboscript.perception.matching import MatchedObject, Projection
+from roboscript.perception.reconstruction.matching import MatchedObject, Projection
 
 SUPPORT_MARGIN = 0.004  # metres above the support plane that still count as the support
 

@@ -6,7 +6,7 @@ import math
 
 import numpy as np
 
-from roboscript.perception.instances import fit_box
+from roboscript.perception.reconstruction.instances import fit_box
 
 PLANE_RADIUS = 0.03  # metres around the queried point whose points a face's plane is fitted to
 LEAST_POINTS = 10  # points near the queried point below which the nearest face of the box answers

@@ -19,7 +19,7 @@ import mujoco
 import numpy as np
 
 from roboscript.geometry import Transform
-from roboscript.perception.pixel_masks import grown
+from roboscript.perception.detection.pixel_masks import grown
 from roboscript.robot_io import CameraFrame
 from roboscript.robots import RobotDescription
 from roboscript.robots.mujoco_model import compiled_robot

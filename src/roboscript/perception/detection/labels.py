@@ -67,8 +67,8 @@ class FurnitureLabels:
 
 @dataclass(frozen=True)
 class SegmentLabel:
-    """What one label of a segmentation image stands for (see :class:`~roboscript.perception.grounding.SegmentLabel`,
-    the protocol this fulfils)."""
+    """What one label of a segmentation image stands for (see
+    :class:`~roboscript.perception.detection.grounding.SegmentLabel`, the protocol this fulfils)."""
 
     index: int
     name: str

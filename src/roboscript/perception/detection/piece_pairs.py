@@ -1,5 +1,5 @@
 """Which pieces of a frame's segmentation touch, and what their shared border looks like: the evidence on which
-:mod:`roboscript.perception.segment_merging` decides whether two pieces are one thing.
+:mod:`roboscript.perception.detection.segment_merging` decides whether two pieces are one thing.
 
 A border is every pair of neighbouring pixels, one in each piece. Along it: how many pairs lie on one surface in 3D,
 how many meet in a concave crease (things touching), how far the colours step. Of each piece: its size, colour,
@@ -12,7 +12,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from roboscript.perception.segments import GAP_PIXELS, NEAR, Segmentation
+from roboscript.perception.detection.segments import GAP_PIXELS, NEAR, Segmentation
 
 PAIR_FEATURES = 28
 
