@@ -11,7 +11,7 @@ from roboscript.assembly import build_perception
 from roboscript.backends.mujoco_backend import MujocoBackend
 from roboscript.perception.base import ArticulationJoint
 from roboscript.perception.furniture.articulation import door_joint, drawer_joint, front_plane, moved_with_handle
-from roboscript.perception.reconstruction.points import entity_points
+from roboscript.perception.points import entity_points
 
 
 @pytest.fixture(scope="module")

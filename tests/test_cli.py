@@ -5,7 +5,7 @@ import sys
 import numpy as np
 from PIL import Image
 
-from roboscript.cli import main
+from roboscript.cli.main import main
 
 
 def test_worlds_lists_the_six_worlds(capsys):
@@ -67,7 +67,7 @@ def test_bad_world_file_fails_with_its_message(tmp_path, capsys):
 
 
 def test_the_commands_offer_every_robot_there_is():
-    from roboscript.cli import ROBOT_NAMES
+    from roboscript.cli.options import ROBOT_NAMES
     from roboscript.robots import ROBOTS
 
     assert sorted(ROBOT_NAMES) == sorted(ROBOTS)

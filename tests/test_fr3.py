@@ -51,7 +51,7 @@ def test_the_papers_reference_programs_pass_on_the_fr3(task_id):
 def test_roboscript_assets_calls_the_fr3_optional_when_its_extra_is_absent_and_a_fault_when_it_fails(
     monkeypatch, capsys
 ):
-    from roboscript.cli import main
+    from roboscript.cli.main import main
 
     real = assets._package_dir
     monkeypatch.setattr(assets, "_package_dir", lambda package: None if package == "franky_sim" else real(package))

@@ -19,7 +19,7 @@ from roboscript.bench.checks import NEAR_OVERLAP, Check, _footprint_over
 from roboscript.bench.task_file import TaskFileError, parse_suite
 from roboscript.bench.tasks import load_suite
 from roboscript.bench.trial import TrialRecord
-from roboscript.cli import main
+from roboscript.cli.main import main
 from roboscript.codegen.checker import check_program
 from roboscript.generate.dataset import export_records, generate_dataset, schema
 from roboscript.generate.describe import describe_scene

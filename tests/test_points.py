@@ -4,7 +4,7 @@ import numpy as np
 import pytest
 
 from roboscript.geometry import Transform
-from roboscript.perception.reconstruction.points import entities_points, normal_map, point_map, surface_points
+from roboscript.perception.points import entities_points, normal_map, point_map, surface_points
 from roboscript.robot_io import CameraFrame
 
 

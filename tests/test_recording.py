@@ -8,7 +8,7 @@ from collections import Counter
 from PIL import Image
 
 from roboscript.bench.trial import TrialSpec, run_trial
-from roboscript.cli import main
+from roboscript.cli.main import main
 from roboscript.record.recording import read_recording
 
 # The apple is grasped and lifted, then placed into a receptacle the world does not have: the trial fails there.

@@ -8,7 +8,7 @@ from PIL import Image
 
 from roboscript.bench.results import RunDirectory, provenance
 from roboscript.bench.trial import TrialRecord
-from roboscript.cli import main
+from roboscript.cli.main import main
 from roboscript.report.runs import find_runs
 from roboscript.report.write import write_report
 

@@ -32,7 +32,7 @@ def test_the_packaged_configurations_load(tmp_path):
 
 
 def test_ros_sim_without_a_master_says_how_to_start_one(monkeypatch, capsys):
-    from roboscript.cli import main
+    from roboscript.cli.main import main
 
     monkeypatch.delenv("ROS_MASTER_URI", raising=False)
     assert main(["ros-sim", "world_2_pick_and_place", "--robot", "panda"]) == 2

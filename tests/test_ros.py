@@ -36,7 +36,7 @@ from roboscript.perception.modes import perception_mode
 from roboscript.robot_config import config_path, parse_robot_config
 from roboscript.ros.driver import _advertised
 from roboscript.ros.launch import SimProcess, start_master, start_sim
-from roboscript.ros.sim_server import DISTURB_TOPIC
+from roboscript.rossim.server import DISTURB_TOPIC
 from roboscript.sim.world_catalog import load_world
 from roboscript.trajectory import JointTrajectory, min_jerk_through
 

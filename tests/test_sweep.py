@@ -16,9 +16,9 @@ import yaml
 
 from roboscript.bench.progress import ProgressBar
 from roboscript.bench.stats import wilson_interval
-from roboscript.bench.sweep import LocalExecutor, plan_sweep, run_sweep
-from roboscript.bench.sweep_file import SweepFileError, load_sweep_file, parse_sweep
 from roboscript.bench.trial import TrialRecord
+from roboscript.study.sweep import LocalExecutor, plan_sweep, run_sweep
+from roboscript.study.sweep_file import SweepFileError, load_sweep_file, parse_sweep
 
 # Cells of the object-shape study with an object every grasp tool takes and one too wide for the Panda's opening,
 # so that outcomes differ between cells and must match trial by trial.
@@ -113,7 +113,7 @@ def test_progress_bar_counts_and_estimates():
 
 def test_a_sweep_on_ray_ends_each_trial_as_the_process_pool_does(tmp_path):
     ray = pytest.importorskip("ray")
-    from roboscript.bench.ray_executor import RayExecutor
+    from roboscript.study.ray_executor import RayExecutor
 
     sweep = load_sweep_file(_sweep(tmp_path))
     pool_runs = run_sweep(sweep, tmp_path / "pool", LocalExecutor(2), progress=False)

@@ -29,7 +29,7 @@ from roboscript.perception.detection.grounding import SegmentationGrounder, imag
 from roboscript.perception.detection.mlp import Training, train_mlp
 from roboscript.perception.detection.trained_detector import TrainedDetector
 from roboscript.perception.modes import perception_mode
-from roboscript.perception.reconstruction.points import without_pixels
+from roboscript.perception.points import without_pixels
 from roboscript.perception.reconstruction.self_filter import SelfFilter
 from roboscript.sim.world_catalog import load_world
 

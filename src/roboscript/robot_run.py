@@ -166,7 +166,7 @@ def run_on_robot(
 
     ``confirm(question)`` is asked once, before anything is sent to the robot; answering no ends the run."""
     from roboscript.assembly import build_tools
-    from roboscript.bench.trial import check_and_execute
+    from roboscript.codegen.execute import check_and_execute
 
     if log_path(plan).exists():
         raise UsageError(f"a run's log is already at {log_path(plan)}: give each run a folder of its own (--log-dir)")
@@ -213,7 +213,7 @@ def run_on_twin(
     """Runs ``program`` on ``twin`` (its arm at ``start``) with tools on its ground truth (the scene as perceived);
     writes ``twin/plan.json`` (every trajectory and gripper command) and, with ``plan.video``, ``twin/twin.mp4``."""
     from roboscript.assembly import build_tools
-    from roboscript.bench.trial import check_and_execute
+    from roboscript.codegen.execute import check_and_execute
 
     folder = plan.out / "twin"
     folder.mkdir(parents=True, exist_ok=True)

@@ -74,7 +74,7 @@ class FrankyTrialWorld:
         return self
 
     def judge(self, result: ExecutionResult) -> dict:
-        from roboscript.bench.trial import attempt_record
+        from roboscript.bench.attempts import attempt_record
 
         self.backend.wait(SETTLE)
         self.mirror.sync()

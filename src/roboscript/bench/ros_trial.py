@@ -100,7 +100,7 @@ class RosTrialWorld:
         return self
 
     def judge(self, result: ExecutionResult) -> dict:
-        from roboscript.bench.trial import attempt_record
+        from roboscript.bench.attempts import attempt_record
         from roboscript.ros.launch import evaluate_on_twin
 
         self.backend.wait(1.0)

@@ -7,20 +7,20 @@ process so that a crash or a hang in a program cannot take the runner down.
 from __future__ import annotations
 
 import os
-import time
-from collections.abc import Callable, Sequence
+from collections.abc import Callable
 from dataclasses import asdict, dataclass, field, replace
 from pathlib import Path
 
+from roboscript.bench.attempts import attempt_record
 from roboscript.bench.tasks import DEFAULT_SUITE, Task, free_task, get_task
-from roboscript.codegen.checker import check_program
+from roboscript.codegen.author import ProgramAuthor
+from roboscript.codegen.execute import check_and_execute
 from roboscript.codegen.outcomes import Outcome
-from roboscript.codegen.program_process import EXIT_GRACE, run_program
-from roboscript.codegen.sandbox import MAX_ERROR, ExecutionResult, Limits, shortened
+from roboscript.codegen.sandbox import ExecutionResult, Limits
+from roboscript.llm import LLMError, make_llm
 from roboscript.perception.modes import GROUND_TRUTH, PerceptionMode, perception_mode
 from roboscript.phases import PhaseClock, phase
 
-MAX_OUTPUT = 4000  # characters of a program's printed output kept in its record
 BACKENDS = ("mujoco", "ros", "franky")
 
 
@@ -138,26 +138,33 @@ def run_trial(spec: TrialSpec, announce: Callable[[float | None], None] | None =
     clock = PhaseClock()
     task = free_task(spec.world, spec.instruction) if spec.world else get_task(spec.task, spec.suite)
     attempts: list[dict] = []
-    author: _Author | None = None
+    author: ProgramAuthor | None = None
+    failure: ExecutionResult | None = None  # the LLM could not be asked
     while True:
         with _trial_world(spec, task) as world:
-            if spec.llm is not None and author is None:
-                author = _Author(spec.llm, task.query_for(spec.instruction), world.backend.base_pose().position[:2])
-            program = spec.program if author is None else author.program
-            if program is None:  # the LLM could not be asked
-                result = author.failure
+            if spec.llm is not None and author is None and failure is None:
+                query = task.query_for(spec.instruction)
+                try:
+                    author = ProgramAuthor(make_llm(spec.llm), query, world.backend.base_pose().position[:2])
+                except LLMError as exc:
+                    failure = ExecutionResult(Outcome.LLM_ERROR, f"LLMError: {exc}", "")
+            program = spec.program if spec.llm is None else (author.program if author else None)
+            if program is None:
+                result = failure
             else:
                 limits = Limits(spec.timeout, spec.memory_limit).scaled_to_load()
                 result = check_and_execute(program, world.namespace, limits, announce)
             attempt = world.judge(result)
         attempt["program"] = program if spec.llm is not None else None
         attempts.append(attempt)
-        if author is None or author.program is None or len(attempts) >= spec.attempts():
+        if author is None or len(attempts) >= spec.attempts():
             break
         if Outcome(attempt["outcome"]) not in REPAIRABLE:
             break
-        if not author.repair(result):
-            attempt["repair_error"] = author.repair_error  # the LLM could not be asked; this attempt stands
+        try:
+            author.repair(result)
+        except LLMError as exc:
+            attempt["repair_error"] = f"LLMError: {exc}"  # the LLM could not be asked; this attempt stands
             break
     last = attempts[-1]
     phases = clock.read()
@@ -174,7 +181,7 @@ def run_trial(spec: TrialSpec, announce: Callable[[float | None], None] | None =
         output=last["output"],
         outcome=last["outcome"],
         program=last["program"],
-        llm_exchanges=author.generation.exchanges if author and author.generation else [],
+        llm_exchanges=author.generation.exchanges if author else [],
         repairs=len(attempts) - 1,
         attempts=[{k: v for k, v in a.items() if k != "output"} for a in attempts]
         if len(attempts) > 1 or "repair_error" in last
@@ -254,28 +261,6 @@ class _TrialWorld:
         self.backend.close()
 
 
-def attempt_record(result: ExecutionResult, checks: list[dict], sim_time: float) -> dict:
-    """An attempt as the trial record keeps it: a program that ran to its end fails if a check did not pass."""
-    outcome = result.outcome
-    if outcome is Outcome.OK and not all(c["passed"] for c in checks):
-        outcome = Outcome.CHECKS_FAILED
-    return {
-        "outcome": outcome.value,
-        "ok": result.error is None,
-        "error": result.error,
-        "checks": checks,
-        "sim_time_s": round(sim_time, 3),
-        "output": result.output[:MAX_OUTPUT],
-        "judged_by": judged_by(result),
-    }
-
-
-def judged_by(result: ExecutionResult) -> str:
-    """Who judged an attempt: this process, from the world's state, after the program's process ended."""
-    where = f"; the program ran in {result.ran_in}" if result.ran_in else "; no program ran"
-    return f"the trial's process {os.getpid()}, from the world's state{where}"
-
-
 def _trial_world(spec: TrialSpec, task: Task):
     if spec.backend == "ros":
         from roboscript.bench.ros_trial import RosTrialWorld
@@ -292,66 +277,3 @@ def _partial(video: str) -> str:
     """Where an attempt's video (or recording) is written until the attempt is over."""
     path = Path(video)
     return str(path.with_name(f"{path.stem}.partial{path.suffix}"))
-
-
-class _Author:
-    """The LLM side of a trial: writes the program for the query, and repairs it from an attempt's error."""
-
-    def __init__(self, llm_spec: str, query: str, base_xy: Sequence[float]):
-        from roboscript.codegen.agent import CodeAgent
-        from roboscript.llm import LLMError, make_llm
-
-        self.query, self.generation, self.failure, self.repair_error = query, None, None, None
-        try:
-            self.agent = CodeAgent(make_llm(llm_spec), base_xy=base_xy)
-            with phase("llm"):
-                self.generation = self.agent.write_program(query)
-        except LLMError as exc:
-            self.failure = ExecutionResult(Outcome.LLM_ERROR, f"LLMError: {exc}", "")
-
-    @property
-    def program(self) -> str | None:
-        return self.generation.program if self.generation else None
-
-    def repair(self, result: ExecutionResult) -> bool:
-        """Asks for a repaired program; False when the LLM could not be asked (the last attempt then stands)."""
-        from roboscript.llm import LLMError
-
-        try:
-            with phase("llm"):
-                self.agent.repair(self.query, self.generation, error_report(self.generation.program, result))
-        except LLMError as exc:
-            self.repair_error = f"LLMError: {exc}"
-            return False
-        return True
-
-
-def error_report(program: str, result: ExecutionResult) -> list[str]:
-    """What the LLM is told about a failed attempt: every checker finding, or the error and the output before it."""
-    findings = check_program(program)
-    if findings:
-        return [f"{f.outcome.value}: {f.message} (line {f.line})" for f in findings]
-    lines = [f"{result.outcome.value}: {result.error}"]
-    printed = result.output.strip().splitlines()[-10:]
-    if printed:
-        lines.append("the program printed, last lines:\n" + "\n".join(printed))
-    lines.append("the world was reset to how it was before the program ran")
-    return lines
-
-
-def check_and_execute(
-    program: str, namespace: dict, limits: Limits, announce: Callable[[float | None], None] | None = None
-) -> ExecutionResult:
-    """The static checker first; only a program it passes runs, in a confined process of its own, its tool calls
-    run here."""
-    from roboscript.api import ToolAPI
-
-    if announce is not None:  # the checker's time is the program's too: the watchdog covers it
-        announce(time.monotonic() + limits.timeout + EXIT_GRACE)
-    findings = check_program(program)
-    if findings:
-        if announce is not None:
-            announce(None)
-        error = "; ".join(f"{f.message} (program line {f.line})" for f in findings[:5])
-        return ExecutionResult(findings[0].outcome, shortened(error, MAX_ERROR), "")
-    return run_program(program, namespace, limits, forwarded=ToolAPI.TOOL_NAMES, announce=announce)

@@ -19,7 +19,7 @@ from roboscript.detector_training.scenes import LabelledView
 from roboscript.perception.detection.detector_model import DetectorModel
 from roboscript.perception.detection.grounding import Detection2D, SegmentationGrounder, image_box_iou, normalize_phrase
 from roboscript.perception.detection.trained_detector import TrainedDetector
-from roboscript.perception.reconstruction.points import without_pixels
+from roboscript.perception.points import without_pixels
 
 IOU = 0.5
 

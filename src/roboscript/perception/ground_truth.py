@@ -26,7 +26,7 @@ from roboscript.perception.base import (
     UnknownObjectError,
 )
 from roboscript.perception.footprints import footprint_of, outline_of
-from roboscript.perception.reconstruction.points import entities_points, entity_points, robot_masks, surface_points
+from roboscript.perception.points import entities_points, entity_points, robot_masks, surface_points
 from roboscript.phases import timed
 from roboscript.robot_io import CameraFrame
 from roboscript.sim.furniture import drawer_interior

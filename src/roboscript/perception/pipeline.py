@@ -39,13 +39,13 @@ from roboscript.perception.detection.grounding import Grounder, normalize_phrase
 from roboscript.perception.detection.labels import PartLabels
 from roboscript.perception.footprints import outline_of
 from roboscript.perception.furniture.seen_furniture import SeenFurniture, shows_in_pieces
+from roboscript.perception.points import robot_masks, surface_points
 from roboscript.perception.reconstruction.faces import plane_normal_at
 from roboscript.perception.reconstruction.free_space import stands_empty
 from roboscript.perception.reconstruction.fusion import FusionSettings
 from roboscript.perception.reconstruction.in_hand import register
 from roboscript.perception.reconstruction.instances import Instance3D, claimed_by_boxes
 from roboscript.perception.reconstruction.observation import Observation, observe, why_not_found
-from roboscript.perception.reconstruction.points import robot_masks, surface_points
 from roboscript.perception.reconstruction.self_filter import SelfFilter
 from roboscript.perception.seen_objects import (
     SeenObject,

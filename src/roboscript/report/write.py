@@ -43,7 +43,7 @@ def _counts(run: Run, tasks: Sequence[str]) -> tuple[list[int], list[int]]:
 
 
 def _plots(runs: Sequence[Run], out: Path) -> list[Path]:
-    from roboscript.report.plots import grouped_bars
+    from roboscript.bench.plots import grouped_bars
 
     plots = []
     tasks = list(dict.fromkeys(t for r in runs for t in r.tasks))

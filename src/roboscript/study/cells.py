@@ -2,7 +2,7 @@
 
 Each cell becomes a task of a generated suite file, with a world file per template and object and a reference
 program per cell, so that trials of a study run through the benchmark's own runner, records and resumption, on one
-machine or on Ray (:mod:`roboscript.bench.sweep`). The files are made again on every run; a file whose content is
+machine or on Ray (:mod:`roboscript.study.sweep`). The files are made again on every run; a file whose content is
 unchanged is left as it is.
 """
 

@@ -1,4 +1,4 @@
-"""Running a study: its cells as a sweep (:mod:`roboscript.bench.sweep`), then its tables and per-object plots."""
+"""Running a study: its cells as a sweep (:mod:`roboscript.study.sweep`), then its tables and per-object plots."""
 
 from __future__ import annotations
 
@@ -8,10 +8,10 @@ from collections.abc import Sequence
 from dataclasses import dataclass
 from pathlib import Path
 
-from roboscript.bench.sweep import Executor, run_sweep
-from roboscript.bench.sweep_file import StudySelection, Sweep
 from roboscript.study.cells import Cell
 from roboscript.study.study_file import load_study
+from roboscript.study.sweep import Executor, run_sweep
+from roboscript.study.sweep_file import StudySelection, Sweep
 from roboscript.study.tables import CellResult, cell_results, study_csv, study_markdown
 
 
@@ -82,7 +82,7 @@ def write_study_report(name: str, results: list[CellResult], out: Path, wall_tim
 
 def object_plots(name: str, results: list[CellResult], out: Path) -> list[Path]:
     """Per robot and grasp tool, the success of every object (grouped by shape) with a bar per template."""
-    from roboscript.report.plots import grouped_bars
+    from roboscript.bench.plots import grouped_bars
 
     paths = []
     for robot in sorted({r.robot for r in results}):

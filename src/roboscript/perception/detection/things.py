@@ -21,7 +21,7 @@ from roboscript.perception.detection.pixel_masks import opened
 from roboscript.perception.detection.segment_features import EXTENT, RISE, features_of_pixels
 from roboscript.perception.detection.segment_merging import describe_pieces, merge, union
 from roboscript.perception.detection.segments import FramePoints, Segmentation, frame_points, segment
-from roboscript.perception.reconstruction.points import evenly_spread
+from roboscript.perception.points import evenly_spread
 from roboscript.robot_io import CameraFrame
 
 BOX_PADDING = 1  # working pixels a box is grown by on every side

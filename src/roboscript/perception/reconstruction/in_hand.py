@@ -16,7 +16,7 @@ import numpy as np
 from scipy.spatial import cKDTree
 
 from roboscript.geometry import Transform, rotation_angle_between
-from roboscript.perception.reconstruction.points import evenly_spread
+from roboscript.perception.points import evenly_spread
 
 SAMPLE = 1500  # points of each cloud that take part
 ROUNDS = 40  # ICP iterations at most

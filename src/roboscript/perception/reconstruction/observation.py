@@ -9,6 +9,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from roboscript.perception.detection.grounding import Detection2D, Grounder
+from roboscript.perception.points import normal_map, point_map, without_pixels
 from roboscript.perception.reconstruction.fusion import FusedScene, FusionSettings, fuse
 from roboscript.perception.reconstruction.instances import (
     Instance3D,
@@ -18,7 +19,6 @@ from roboscript.perception.reconstruction.instances import (
     support_height,
 )
 from roboscript.perception.reconstruction.matching import MatchedObject, Projection, match_views, membership, project
-from roboscript.perception.reconstruction.points import normal_map, point_map, without_pixels
 from roboscript.robot_io import CameraFrame
 
 

@@ -14,9 +14,9 @@ from collections.abc import Callable
 from dataclasses import replace
 from pathlib import Path
 
-from roboscript.bench.sweep import Executor
 from roboscript.bench.trial import TrialRecord, TrialSpec
 from roboscript.datafile import names_a_file
+from roboscript.study.sweep import Executor
 
 
 def _ray():

@@ -18,9 +18,9 @@ from pathlib import Path
 from roboscript.bench.benchmark import open_run, policy_programs, run_label
 from roboscript.bench.progress import ProgressBar
 from roboscript.bench.results import RunDirectory, video_path
-from roboscript.bench.sweep_file import Sweep
 from roboscript.bench.trial import TrialRecord, TrialSpec
 from roboscript.perception.modes import parse_mode
+from roboscript.study.sweep_file import Sweep
 
 SUMMARY_INTERVAL = 10.0  # seconds between rewrites of a run's summary while trials end (and once at the end)
 

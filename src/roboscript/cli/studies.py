@@ -6,7 +6,7 @@ import argparse
 import re
 from pathlib import Path
 
-from roboscript.bench.sweep import Executor
+from roboscript.study.sweep import Executor
 
 
 def _names(text: str) -> list[str]:
@@ -29,11 +29,11 @@ def _robots(text: str) -> list[str]:
 def make_executor(args: argparse.Namespace) -> Executor:
     """A local process pool of ``--jobs``, or Ray with ``--ray [ADDRESS]``."""
     if args.ray is not None:
-        from roboscript.bench.ray_executor import RayExecutor
+        from roboscript.study.ray_executor import RayExecutor
 
         return RayExecutor(None if args.ray == "local" else args.ray, args.jobs)
     from roboscript.bench.runner import default_jobs
-    from roboscript.bench.sweep import LocalExecutor
+    from roboscript.study.sweep import LocalExecutor
 
     return LocalExecutor(args.jobs or default_jobs())
 
@@ -45,8 +45,8 @@ def _close(executor: Executor) -> None:
 
 
 def cmd_sweep(args: argparse.Namespace) -> int:
-    from roboscript.bench.sweep import run_sweep
-    from roboscript.bench.sweep_file import load_sweep_file
+    from roboscript.study.sweep import run_sweep
+    from roboscript.study.sweep_file import load_sweep_file
 
     sweep = load_sweep_file(args.sweep_file)
     out = Path(args.out or f"out/sweeps/{re.sub(r'[^A-Za-z0-9._-]+', '_', sweep.name)}")
@@ -104,7 +104,7 @@ def _add_pool_options(parser: argparse.ArgumentParser) -> None:
 def add_study_commands(sub) -> None:
     """``sweep`` and ``study`` on the ``roboscript`` parser's subcommands."""
     sweep = sub.add_parser("sweep", help="run a sweep file: tasks x trials x policies x robots x perception modes")
-    sweep.add_argument("sweep_file", help="a sweep file (YAML or JSON; see roboscript.bench.sweep_file)")
+    sweep.add_argument("sweep_file", help="a sweep file (YAML or JSON; see roboscript.study.sweep_file)")
     _add_pool_options(sweep)
     sweep.set_defaults(func=cmd_sweep)
 

@@ -1,6 +1,7 @@
-"""The command line's side of a run on a robot that is already running (``exec`` and ``run`` with ``--backend ros
---master URI``, or ``--backend franky --robot-config FILE``): its options, their checks, the confirmation prompt,
-and the report."""
+"""The command line's robot commands: ``ros-sim`` (a simulated world served as a ROS robot), ``replay`` (a robot
+run's log on the twin), and the side of ``exec`` and ``run`` that runs on a robot that is already running (with
+``--backend ros --master URI``, or ``--backend franky --robot-config FILE``): its options, their checks, the
+confirmation prompt, and the report."""
 
 from __future__ import annotations
 
@@ -190,3 +191,49 @@ def cmd_replay(args: argparse.Namespace) -> int:
     else:
         print(replay_report(record, steps, args.tolerance))
     return 0
+
+
+def cmd_ros_sim(args: argparse.Namespace) -> int:
+    from roboscript.robot_config import load_robot_config, ros_config_for
+    from roboscript.sim.world_catalog import load_world
+
+    robot = args.robot or load_world(args.world).robot
+    config = load_robot_config(args.robot_config or ros_config_for(robot))
+    if config.robot.name != robot:
+        raise ValueError(f"robot configuration {config.name} is for the {config.robot.name}, not the {robot}")
+    if not os.environ.get("ROS_MASTER_URI"):
+        raise ValueError("ROS_MASTER_URI is not set: start a master (rosmaster --core -p 11311) and export its URI")
+    try:
+        from roboscript.rossim.server import serve
+    except ImportError as exc:
+        raise ValueError(f"ros-sim needs ROS 1 (rospy, actionlib): see the README's ROS section ({exc})") from None
+    task = None
+    if args.task:
+        from roboscript.bench.tasks import get_task
+
+        task = get_task(args.task, args.suite)
+    serve(args.world, robot, config, args.real_time_factor, args.camera_rate, args.seed, args.randomize, task=task)
+    return 0
+
+
+def add_ros_sim_command(sub) -> None:
+    ros_sim = sub.add_parser("ros-sim", help="serve a simulated world as a ROS robot (the digital twin)")
+    ros_sim.add_argument("world", help="a world name (see `roboscript worlds`) or a world file path")
+    ros_sim.add_argument("--robot", choices=["panda", "ur5e"], default=None, help="default: the world's robot")
+    ros_sim.add_argument(
+        "--robot-config",
+        default=None,
+        help="the names to serve under: a robot configuration file or packaged name; default: panda_franka_ros "
+        "or ur5e_ur_robot_driver",
+    )
+    ros_sim.add_argument(
+        "--real-time-factor", type=float, default=1.0, help="simulated seconds per wall-clock second (default 1)"
+    )
+    ros_sim.add_argument("--camera-rate", type=float, default=1.0, help="camera images per simulated second")
+    ros_sim.add_argument("--seed", type=int, default=0)
+    ros_sim.add_argument("--randomize", action="store_true", help="jitter object poses (deterministic per seed)")
+    ros_sim.add_argument(
+        "--task", default=None, help="a task whose checks the twin evaluates when asked on /roboscript/evaluate"
+    )
+    ros_sim.add_argument("--suite", default="paper", help="the task's suite (default: paper)")
+    ros_sim.set_defaults(func=cmd_ros_sim)

@@ -26,7 +26,7 @@ from roboscript.backends.mujoco_backend import MujocoBackend
 from roboscript.robot_config import RobotConfig
 from roboscript.ros.master import check_master
 from roboscript.ros.messages import action_types
-from roboscript.ros.sim_cameras import OPTICAL_FRAME, CameraPublisher
+from roboscript.rossim.cameras import OPTICAL_FRAME, CameraPublisher
 from roboscript.sim.cameras import camera_pose_opencv
 from roboscript.trajectory import JointTrajectory
 

@@ -1,0 +1,284 @@
+"""Running programs and reporting them: ``exec``, ``run`` (an LLM writes the program), ``bench``, ``demo``,
+``report``."""
+
+from __future__ import annotations
+
+import argparse
+import json
+import sys
+from pathlib import Path
+
+from roboscript.cli.options import (
+    RECORD_HELP,
+    ROBOT_NAMES,
+    add_perception_option,
+    add_run_options,
+    add_suite_option,
+    print_result,
+    rounds,
+)
+
+
+def cmd_exec(args: argparse.Namespace) -> int:
+    from roboscript.bench.benchmark import progress_printer, trial_specs
+    from roboscript.bench.metrics import task_result
+    from roboscript.bench.runner import run_isolated
+    from roboscript.bench.tasks import free_task, get_task
+    from roboscript.cli.robot import robot_requested, run_on_running_robot
+
+    scene = args.world or get_task(args.task, args.suite).world
+    path = Path(args.program)
+    if not path.is_file():
+        raise ValueError(f"no program file {str(path)!r}")
+    program = path.read_text()
+    if robot_requested(args):
+        return run_on_running_robot(args, program, scene)
+    label = free_task(args.world, "run the program").id if args.world else args.task
+    specs = trial_specs(
+        label,
+        program,
+        args.robot,
+        args.trials,
+        args.seed,
+        args.timeout,
+        args.video,
+        perception=args.perception,
+        suite=args.suite,
+        backend=args.backend,
+        robot_config=args.robot_config,
+        world=args.world,
+        instruction="run the program" if args.world else None,
+        record=args.record,
+    )
+    records = run_isolated(specs, args.jobs, None if args.json else progress_printer(len(specs)))
+    result = task_result(label, args.robot, records)
+    if args.json:
+        print(json.dumps(result))
+    else:
+        print_result(result)
+    return 0
+
+
+def cmd_bench(args: argparse.Namespace) -> int:
+    from roboscript.bench.benchmark import run_benchmark
+
+    tasks = [t.strip() for t in args.tasks.split(",") if t.strip()] if args.tasks else None
+    from roboscript.bench.benchmark import default_out, run_label
+
+    if args.repair and not args.policy.startswith("llm:"):
+        raise ValueError("--repair needs an LLM policy (--policy llm:SPEC)")
+    out = args.out or default_out(
+        run_label(args.policy, args.repair), args.robot, args.perception, args.suite, args.backend
+    )
+    result = run_benchmark(
+        args.policy,
+        tasks,
+        args.robot,
+        args.trials,
+        args.seed,
+        out,
+        args.jobs,
+        args.timeout,
+        progress=not args.json,
+        repair_rounds=args.repair,
+        perception=args.perception,
+        suite=args.suite,
+        backend=args.backend,
+        robot_config=args.robot_config,
+    )
+    if args.json:
+        print(json.dumps({"tasks": result["tasks"], "wall_time_s": result["wall_time_s"]}))
+    else:
+        print((Path(result["out"]) / "summary.md").read_text())
+        print(f"wall time {result['wall_time_s']:.1f} s; results in {result['out']}")
+    return 0
+
+
+def cmd_run(args: argparse.Namespace) -> int:
+    from roboscript.bench.benchmark import trial_specs
+    from roboscript.bench.metrics import task_result
+    from roboscript.bench.runner import run_isolated
+    from roboscript.bench.tasks import free_task, get_task
+    from roboscript.cli.robot import robot_requested
+    from roboscript.llm import make_llm
+    from roboscript.sim.world_catalog import load_world
+
+    if args.world:
+        load_world(args.world)  # a bad world name or file fails here, before any LLM is asked
+        label = free_task(args.world, args.instruction).id
+    else:
+        label = get_task(args.task, args.suite).id
+    llm = make_llm(args.llm)  # fails here, clearly, when no LLM is configured
+    if robot_requested(args):
+        return _run_llm_on_robot(args, llm, label)
+    specs = trial_specs(
+        label,
+        "",
+        args.robot,
+        args.trials,
+        args.seed,
+        args.timeout,
+        args.video,
+        llm=args.llm or llm.name,
+        instruction=args.instruction,
+        repair_rounds=args.repair,
+        world=args.world,
+        perception=args.perception,
+        suite=args.suite,
+        backend=args.backend,
+        robot_config=args.robot_config,
+        record=args.record,
+    )
+    records = run_isolated(specs, args.jobs)
+    result = task_result(label, args.robot, records)
+    if args.json:
+        print(json.dumps({**result, "programs": [r.program for r in records]}))
+        return 0
+    for record in records:
+        for i, attempt in enumerate(record.attempts[:-1]):
+            print(f"trial {record.trial}, attempt {i + 1}: {attempt['outcome']}: {attempt['error']} (repaired)")
+        print(f"trial {record.trial}: {record.outcome}" + (f": {record.error}" if record.error else ""))
+        if args.show_code and record.program is not None:
+            print(record.program)
+    if args.world:
+        print(f"world {args.world} has no task, so nothing was checked; outcome: {records[0].outcome}")
+        return 0 if all(r.ok for r in records) else 1
+    print_result(result)
+    return 0
+
+
+def _run_llm_on_robot(args: argparse.Namespace, llm, label: str) -> int:
+    """``run --master``: the LLM writes the program once, for the scene's names; it then runs as ``exec`` would."""
+    from roboscript.bench.tasks import free_task, get_task
+    from roboscript.cli.robot import run_on_running_robot
+    from roboscript.codegen.author import ProgramAuthor
+
+    task = free_task(args.world, args.instruction) if args.world else get_task(args.task, args.suite)
+    program = ProgramAuthor(llm, task.query_for(args.instruction)).program
+    if args.show_code:
+        print(program)
+    return run_on_running_robot(args, program, task.world)
+
+
+def cmd_demo(args: argparse.Namespace) -> int:
+    from roboscript.bench.tasks import get_task
+    from roboscript.demo import DemoPlan, run_demo
+    from roboscript.llm.spec import configured_spec
+
+    task = get_task(args.task, args.suite)
+    plan = DemoPlan(task.id, args.robot, args.llm or configured_spec(), Path(args.out), args.suite)
+    print(f'RoboScript demo: {task.id} on the {args.robot}: "{task.instruction}"')
+    print(f"program: {plan.source}")
+    if plan.llm is not None:
+        from roboscript.llm import make_llm
+
+        make_llm(plan.llm)  # a bad spec fails here, before the world is built
+    record = run_demo(
+        plan,
+        seed=args.seed,
+        timeout=args.timeout,
+        repair_rounds=args.repair,
+        perception=args.perception,
+        backend=args.backend,
+    )
+    status = "task done" if record.success else "task NOT done"
+    print(
+        f"{status}: {record.outcome}, {record.passed}/{len(record.checks)} checks"
+        + (f"; error: {record.error}" if record.error else "")
+    )
+    print(f"simulated {record.sim_time_s:.1f} s in {record.wall_time_s:.1f} s wall")
+    print(f"report: {plan.out / 'report.md'}; video: {plan.out / (task.id + '.mp4')}")
+    return 0 if record.success else 1
+
+
+def cmd_report(args: argparse.Namespace) -> int:
+    from roboscript.report.write import write_report
+
+    report = write_report(args.runs, args.out, args.metric)
+    print(report.markdown)
+    for note in report.notes:
+        print(note, file=sys.stderr)
+    print(f"report of {len(report.runs)} runs: {', '.join(str(p) for p in report.files)}")
+    return 0
+
+
+def add_run_commands(sub) -> None:
+    from roboscript.bench.metrics import METRICS
+    from roboscript.cli.robot import add_robot_options
+    from roboscript.demo import DEMO_TASK
+
+    run = sub.add_parser("exec", help="run a program on a task's world and evaluate it")
+    run.add_argument("program", help="a Python file written against the tool API")
+    scene = run.add_mutually_exclusive_group(required=True)
+    scene.add_argument("--task", help="a task id (see `roboscript tasks`): its world, and its checks")
+    scene.add_argument("--world", help="a world name or file to act in; without a task nothing is checked")
+    run.add_argument("--video", default=None, help="record camera_left into this MP4 file")
+    run.add_argument("--record", default=None, help=RECORD_HELP)
+    add_run_options(run)
+    add_robot_options(run)
+    run.set_defaults(func=cmd_exec)
+    ask = sub.add_parser("run", help="have an LLM write a program for an instruction, run it and evaluate it")
+    ask.add_argument("instruction", help="what the robot should do, in words")
+    where = ask.add_mutually_exclusive_group(required=True)
+    where.add_argument("--task", help="the task whose world (and checks) to use")
+    where.add_argument("--world", help="a world name or file to act in; without a task nothing is checked")
+    ask.add_argument(
+        "--llm",
+        default=None,
+        help="openai:MODEL[@URL] | llama:PATH.gguf | replay:DIR=NAME | "
+        "record:DIR=SPEC | cache:DIR=SPEC; default: $ROBOSCRIPT_LLM or $ROBOSCRIPT_LLM_MODEL",
+    )
+    ask.add_argument("--show-code", action="store_true", help="print the generated program")
+    ask.add_argument(
+        "--repair",
+        type=rounds,
+        default=0,
+        help="rounds of feeding checker, runtime and planning errors back to the LLM",
+    )
+    ask.add_argument("--video", default=None, help="record camera_left into this MP4 file")
+    ask.add_argument("--record", default=None, help=RECORD_HELP)
+    add_run_options(ask)
+    add_robot_options(ask)
+    ask.set_defaults(func=cmd_run, trials=1)
+    report = sub.add_parser("report", help="runs side by side: markdown, CSV, plots and an HTML page with videos")
+    report.add_argument(
+        "runs", nargs="+", help="run directories (`roboscript bench`), or folders of them (a sweep's, a study's)"
+    )
+    report.add_argument("--out", default="out/report", help="where the markdown, CSV, plots and index.html go")
+    report.add_argument(
+        "--metric",
+        default="all",
+        choices=["all", *METRICS],
+    )
+    report.set_defaults(func=cmd_report)
+    demo = sub.add_parser(
+        "demo", help="one task end to end (the configured LLM, else the reference program) with a video and a report"
+    )
+    demo.add_argument("--task", default=DEMO_TASK, help="the task to run (see `roboscript tasks`)")
+    demo.add_argument("--robot", choices=ROBOT_NAMES, default="panda")
+    demo.add_argument("--llm", default=None, help="an LLM spec (see `run --llm`); default: the environment's")
+    demo.add_argument("--repair", type=rounds, default=0, help="repair rounds when an LLM writes the program")
+    demo.add_argument("--seed", type=int, default=0)
+    demo.add_argument("--timeout", type=float, default=300.0, help="time limit of the program, wall seconds")
+    demo.add_argument("--out", default="out/demo", help="where the video and the report go")
+    add_perception_option(demo)
+    add_suite_option(demo)
+    demo.set_defaults(func=cmd_demo)
+    bench = sub.add_parser("bench", help="run the benchmark (resumes an interrupted run in --out)")
+    bench.add_argument(
+        "--policy",
+        default="reference",
+        help="where programs come from: reference; llm:SPEC (see `run --llm`); or programs:PATH, a folder of "
+        "<task_id>.py files or files in the original's generated-code format (JSON: query, code_str, src_fs)",
+    )
+    bench.add_argument(
+        "--repair",
+        type=rounds,
+        default=0,
+        help="rounds of feeding checker, runtime and planning errors back (LLM policies); the summary shows both",
+    )
+    bench.add_argument("--tasks", default=None, help="comma-separated task ids; default: all")
+    bench.add_argument("--out", default=None, help="run directory; default out/bench/<policy>_<robot>")
+    add_run_options(bench)
+    bench.set_defaults(func=cmd_bench)
+
