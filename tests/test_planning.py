@@ -36,6 +36,7 @@ from roboscript.planning.planner import (
     whole_turns,
 )
 from roboscript.planning.roadmap import roadmap_path
+from roboscript.planning.scene_variants import held_clearance
 from roboscript.sim.world_file import parse_world
 
 ROBOTS = ARMS
@@ -257,6 +258,7 @@ _PRM_PLANS = """
 import numpy as np
 from roboscript.backends.mujoco_backend import MujocoBackend
 from roboscript.planning.ground_truth_scene import ground_truth_motion
+from roboscript.planning.scene_variants import held_clearance
 from roboscript.sim.world_file import parse_world
 
 backend = MujocoBackend(parse_world({"name": "empty", "objects": []}), robot="ur5e", settle=0.3)
@@ -440,7 +442,7 @@ def test_a_transfer_lifts_the_held_object_clear_and_carries_it_clear():
     # The planner checks its path every validation step (the padding) of any point's travel: between two checks a
     # point may come closer by up to that step, so the clearance it keeps for certain is HELD_CLEARANCE less it.
     kept = HELD_CLEARANCE - motion.planner.validation_step
-    with scene.held_clearance(kept):
+    with held_clearance(scene, kept):
         clear = [scene.is_valid(q) for q in densify(path.waypoints, motion.scene.lever_arms, 0.005)]
     # Too close only along the straight lines at either end: where clear, the path stays clear until it descends.
     first, last = clear.index(True), len(clear) - 1 - clear[::-1].index(True)

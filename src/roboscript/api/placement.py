@@ -28,6 +28,7 @@ from roboscript.perception.base import Perception
 from roboscript.planning.cartesian import cartesian_path
 from roboscript.planning.errors import IKError
 from roboscript.planning.motion import MotionPlanner
+from roboscript.planning.scene_variants import fingers_open, ignoring_held
 
 PLACE_PATH_SCREENS = 3  # planner runs per parse_place_pose call that check a place configuration can be reached
 PLACE_IK_QUICK = (8, 24)  # IK attempts (wanted, at most) per place pose screened
@@ -311,7 +312,7 @@ class Placer:
         held (what it held stays behind); 0 where the fingers cannot open."""
         up = Transform(pose.position + np.asarray(direction) * PLACE_RETREAT, pose.quaternion)
         scene = self.motion.scene
-        with scene.ignoring_held(), scene.fingers_open():
+        with ignoring_held(scene), fingers_open(scene):
             return cartesian_path(self.motion.kinematics, scene, q, [up]).fraction * PLACE_RETREAT
 
 

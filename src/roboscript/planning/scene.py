@@ -15,38 +15,23 @@ import contextlib
 import dataclasses
 import functools
 import itertools
-from collections.abc import Iterable, Iterator
+from collections.abc import Iterator
 from dataclasses import dataclass
 
 import mujoco
 import numpy as np
 
-from roboscript.geometry import Transform, turns_about
+from roboscript.geometry import Transform
 from roboscript.phases import timed
-from roboscript.robots.description import RobotDescription
-from roboscript.robots.mujoco_model import RobotBinding, is_descendant
+from roboscript.planning.allowed_pairs import AllowedPairs
+from roboscript.planning.collision_roles import assign_roles, open_finger_positions, set_role, sync_body_margins
+from roboscript.planning.followed_part import FollowedPart
+from roboscript.robots.mujoco_model import RobotBinding
 
 REGRASP_LIMIT = 0.05  # metres a held object may have shifted in the hand and still be where the scene holds it
-LEAVING_TOLERANCE = 0.002  # metres a contact being left may go deeper than it started (or than touching)
 WORKSPACE_MARGIN = 0.02  # metres the arm's links keep inside a workspace box: a timed trajectory between two
 # checked configurations, and the backend's own check, must not find a link just outside it
 WORKSPACE = "workspace box"  # what a link leaving the box is reported in collision with
-
-# contype/conaffinity bits. Two geoms collide if the type of either shares a bit with the affinity of the other.
-# Moving arm links collide with everything; the environment only with the robot and held objects (objects resting on
-# the table are no planning problem); the fixed base not with the table it stands on; the first moving link not with
-# the base it turns on (MuJoCo's parent-child filter skips bodies welded to the world); the gripper's parts not with
-# each other (its linkage touches itself); a held object not with the gripper holding it.
-_ARM, _ENV, _BASE, _FIRST, _GRIPPER, _HELD = 1, 2, 4, 8, 16, 32
-_BITS = {
-    "arm": (_ARM, _ARM | _ENV | _BASE),
-    "env": (_ENV, _ARM),
-    "base": (_BASE, _ARM),
-    "first_link": (_FIRST, _ARM | _ENV),
-    "gripper": (_GRIPPER, _ARM | _ENV | _BASE | _FIRST),
-    "held": (_HELD, _ARM | _ENV | _BASE | _FIRST),
-}
-
 
 @dataclass(frozen=True)
 class Attachment:
@@ -56,19 +41,6 @@ class Attachment:
     body: int
     tcp_to_object: np.ndarray  # 4x4
     qpos_address: int  # where the object's free joint keeps its pose in qpos
-
-
-@dataclass(frozen=True)
-class _FollowedPart:
-    """A drawer or door moving with the hand (:meth:`PlanningScene.part_following`): its joint's qpos address and
-    value at the start, whether it turns, its axis's anchor and direction, and where the TCP started."""
-
-    address: int
-    start: float
-    revolute: bool
-    anchor: np.ndarray
-    axis: np.ndarray
-    tcp_start: np.ndarray
 
 
 class PlanningScene:
@@ -84,7 +56,7 @@ class PlanningScene:
         pad_bodies_of_several_geoms: bool = True,
     ):
         """``pad_bodies_of_several_geoms``: whether the padding also holds between two bodies of several geoms each
-        (see :meth:`_sync_body_margins`); a scene of observed boxes leaves it off (see
+        (see :meth:`sync_body_margins`); a scene of observed boxes leaves it off (see
         :func:`roboscript.planning.perceived_scene.build_perceived_scene`)."""
         if padding < 0:
             raise ValueError(f"padding must be >= 0 metres, got {padding}")
@@ -99,40 +71,18 @@ class PlanningScene:
         # Queries call mj_kinematics and mj_collision directly; sleeping would make them skip bodies.
         model.opt.enableflags &= ~int(mujoco.mjtEnableBit.mjENBL_SLEEP)
 
-        nbody = model.nbody
-        self._is_robot = np.zeros(nbody, dtype=bool)
-        self._is_robot[list(robot.body_ids)] = True
-        tcp_body = model.site_bodyid[robot.tcp_site]
-        self._gripper_bodies = np.array([b for b in robot.body_ids if is_descendant(model, b, tcp_body)])
-        # The last arm joint's body and all it carries: the TCP's pose alone places them.
-        wrist = model.dof_bodyid[robot.dof[-1]]
-        self._placed_by_tcp = np.array([is_descendant(model, b, wrist) for b in range(model.nbody)])
-        self._collides = (model.geom_contype | model.geom_conaffinity) > 0
-        moved = np.array([_moved_by_arm(model, b, robot) for b in range(nbody)])
-        base = self._is_robot & ~moved
-        first_link = self._is_robot & moved & base[model.body_parentid]
-        gripper = np.zeros(nbody, dtype=bool)
-        gripper[self._gripper_bodies] = True
-        self._set_bits(~self._is_robot, "env", 0.0)
-        # The floor is out of the arm's reach (the table is in the way) and a plane is tested against every geom.
-        planes = (model.geom_type == mujoco.mjtGeom.mjGEOM_PLANE) & (model.geom_bodyid == 0)
-        model.geom_contype[planes], model.geom_conaffinity[planes] = 0, 0
-        self._set_bits(self._is_robot & moved & ~first_link & ~gripper, "arm", padding)
-        self._set_bits(base, "base", 0.0)
-        # The first link only turns about the base's axis, and it may be mounted closer to the table than the
-        # padding (a UR5e's shoulder, 3 mm): with the padding it would collide in every configuration.
-        self._set_bits(first_link, "first_link", 0.0)
-        self._set_bits(gripper, "gripper", padding)
+        self.colliding_geoms = (model.geom_contype | model.geom_conaffinity) > 0
+        bodies = assign_roles(model, robot, padding, self.colliding_geoms)
+        self.sync_body_margins()
+        self._is_robot, self._gripper_bodies = bodies.is_robot, bodies.gripper
+        self._placed_by_tcp, self._moving_bodies = bodies.placed_by_tcp, bodies.moving
 
-        self._allowed = np.zeros((nbody, nbody), dtype=bool)
-        # Contacts that may be left but not deepened: body pair -> the least distance allowed (the start's).
-        self._leaving: dict[tuple[int, int], float] = {}
+        self._pairs = AllowedPairs(model.nbody)
         self._attached: dict[str, Attachment] = {}
-        self._following: _FollowedPart | None = None
+        self._following: FollowedPart | None = None
         self._attached_allowed: dict[str, set[int]] = {}
         self._lower, self._upper = robot.joint_lower - 1e-9, robot.joint_upper + 1e-9
-        self._finger_qpos, self._finger_open = _open_finger_positions(model, robot, self._gripper_bodies)
-        self._moving_bodies = np.flatnonzero(self._is_robot & moved)  # the base stays where it is mounted
+        self.finger_qpos, self.finger_open = open_finger_positions(model, robot, self._gripper_bodies)
         self._workspace: tuple[np.ndarray, np.ndarray] | None = None
         self._tcp = np.eye(4)  # the TCP's pose while placing held objects, kept to spare an allocation a query
 
@@ -189,7 +139,7 @@ class PlanningScene:
                 for other in list(allowed):
                     if other not in touching:
                         allowed.discard(other)
-                        self._allowed[body, other] = self._allowed[other, body] = False
+                        self._pairs.allowed[body, other] = self._pairs.allowed[other, body] = False
 
     def _regrasp(self, qpos: np.ndarray) -> None:
         """Each attachment's pose relative to the TCP as ``qpos`` has the object and the arm, where the object has
@@ -228,7 +178,7 @@ class PlanningScene:
     @property
     def finger_positions(self) -> np.ndarray:
         """The gripper joints' positions the scene's queries use."""
-        return self.data.qpos[self._finger_qpos]
+        return self.data.qpos[self.finger_qpos]
 
     def place(self, q: np.ndarray) -> None:
         """Puts the arm at ``q``, what it holds with it, without asking anything (:attr:`data` then shows it)."""
@@ -252,21 +202,12 @@ class PlanningScene:
             return True
         geoms = self.data.contact.geom[:ncon]
         bodies = self.model.geom_bodyid[geoms]
-        refused = ~self._allowed[bodies[:, 0], bodies[:, 1]]
+        refused = ~self._pairs.allowed[bodies[:, 0], bodies[:, 1]]
         if not refused.any():
             return True
-        return self._only_leaving(bodies, refused)
-
-    def _only_leaving(self, bodies: np.ndarray, refused: np.ndarray) -> bool:
-        """Whether every refused contact is one being left: no deeper than where the motion started."""
-        if not self._leaving:
-            return False
-        distances = self.data.contact.dist
-        for k in np.flatnonzero(refused):
-            floor = self._leaving.get((int(bodies[k, 0]), int(bodies[k, 1])))
-            if floor is None or distances[k] < floor - LEAVING_TOLERANCE:
-                return False
-        return True
+        # Free still if every refused contact is one being left: no deeper than where the motion started.
+        distances = self.data.contact.dist[:ncon]
+        return bool(self._pairs.leaving) and self._pairs.leaving_only(bodies[refused], distances[refused])
 
     @timed("planning")
     def collides_wherever_the_tcp_is(self, q: np.ndarray) -> bool:
@@ -280,10 +221,7 @@ class PlanningScene:
         still = ~self._is_robot & ~placed
         distances = self.data.contact.dist
         for k, (a, b) in enumerate(self._contact_bodies()):
-            if self._allowed[a, b]:
-                continue
-            floor = self._leaving.get((a, b))
-            if floor is not None and distances[k] >= floor - LEAVING_TOLERANCE:
+            if self._pairs.permits(a, b, distances[k]):
                 continue
             if (placed[a] and still[b]) or (placed[b] and still[a]):
                 return True
@@ -299,15 +237,13 @@ class PlanningScene:
         moving[[attachment.body for attachment in self._attached.values()]] = True
         distances = self.data.contact.dist
         for k, (a, b) in enumerate(self._contact_bodies()):
-            floor = self._leaving.get((a, b))
-            if floor is not None and distances[k] >= floor - LEAVING_TOLERANCE:
+            if self._pairs.permits(a, b, distances[k]):
                 continue
-            if not self._allowed[a, b]:
-                pair = (self.body_labels[a], self.body_labels[b])
-                if moving[b] and not moving[a]:
-                    pair = pair[::-1]
-                if pair not in pairs:
-                    pairs.append(pair)
+            pair = (self.body_labels[a], self.body_labels[b])
+            if moving[b] and not moving[a]:
+                pair = pair[::-1]
+            if pair not in pairs:
+                pairs.append(pair)
         return pairs
 
     def touching(self, a: str, b: str, q: np.ndarray) -> bool:
@@ -359,7 +295,7 @@ class PlanningScene:
         self._set_bits(self._body_mask(body), "held", self.padding)
         mujoco.mj_collision(self.model, self.data)
         touching = {b for pair in self._contact_bodies() if body in pair for b in pair} - {body}
-        self._allow_bodies([body], list(touching))
+        self._pairs.allow([body], list(touching))
         self._attached[name] = attachment
         self._attached_allowed[name] = touching
         return attachment
@@ -372,8 +308,7 @@ class PlanningScene:
         self._attached_allowed.pop(name)
         body = attachment.body
         self._set_bits(self._body_mask(body), "env", 0.0)
-        self._allowed[body, :] = self._allowed[:, body] = False
-        self._leaving = {pair: floor for pair, floor in self._leaving.items() if body not in pair}
+        self._pairs.release(body)
 
     @property
     def attached(self) -> list[str]:
@@ -389,84 +324,26 @@ class PlanningScene:
         if not bodies or self._following is not None:
             yield False
             return
-        joint = int(self.model.body_jntadr[bodies[0]])
-        address = int(self.model.jnt_qposadr[joint])
-        start = float(self.data.qpos[address])
-        tcp = self.tcp_pose(np.asarray(q, dtype=float)).position.copy()
-        revolute = int(self.model.jnt_type[joint]) == int(mujoco.mjtJoint.mjJNT_HINGE)
-        anchor, axis = self.data.xanchor[joint].copy(), self.data.xaxis[joint].copy()
-        self._following = _FollowedPart(address, start, revolute, anchor, axis, tcp)
+        tcp = self.tcp_pose(np.asarray(q, dtype=float)).position
+        part = self._following = FollowedPart.of(self.model, self.data, bodies[0], tcp)
         try:
             yield True
         finally:
             self._following = None
-            self.data.qpos[address] = start
+            self.data.qpos[part.address] = part.start
             mujoco.mj_kinematics(self.model, self.data)
-
-    @contextlib.contextmanager
-    def ignoring_held(self) -> Iterator[None]:
-        """Within this block, what the gripper holds collides with nothing: for questions about the hand once it
-        has let go (can it leave the place where it puts something down?)."""
-        geoms = np.isin(self.model.geom_bodyid, self.held_bodies) & self._collides
-        saved = self.model.geom_contype[geoms].copy(), self.model.geom_conaffinity[geoms].copy()
-        self.model.geom_contype[geoms], self.model.geom_conaffinity[geoms] = 0, 0
-        try:
-            yield
-        finally:
-            self.model.geom_contype[geoms], self.model.geom_conaffinity[geoms] = saved
-
-    @contextlib.contextmanager
-    def fingers_open(self) -> Iterator[None]:
-        """Within this block, the gripper is fully open (every joint of its linkage at the open position, the
-        model's reference elsewhere): for questions about the hand once it lets go, when the fingers spread to
-        their full width whatever stands beside them."""
-        saved = self.data.qpos[self._finger_qpos].copy()
-        self.data.qpos[self._finger_qpos] = self._finger_open
-        try:
-            yield
-        finally:
-            self.data.qpos[self._finger_qpos] = saved
-
-    @contextlib.contextmanager
-    def held_clearance(self, clearance: float) -> Iterator[None]:
-        """Within this block, what the gripper holds counts as colliding closer than ``clearance`` to anything
-        (rather than the padding): for transfers, where a held object swinging a little must not graze what it
-        passes."""
-        geoms = np.isin(self.model.geom_bodyid, self.held_bodies) & self._collides
-        saved = self.model.geom_margin[geoms].copy()
-        self.model.geom_margin[geoms] = np.maximum(saved, clearance)
-        self._sync_body_margins()
-        try:
-            yield
-        finally:
-            self.model.geom_margin[geoms] = saved
-            self._sync_body_margins()
 
     def allow(self, a: str, b: str, allowed: bool = True) -> None:
         """Allows (or forbids again) contact between two named things, e.g. the fingers and an object to grasp.
         Forbidding also ends an allowance to leave (:meth:`allow_leaving`)."""
-        first, second = self._bodies_named(a), self._bodies_named(b)
-        self._allow_bodies(first, second, allowed)
-        if not allowed:
-            for i in first:
-                for j in second:
-                    self._leaving.pop((i, j), None)
-                    self._leaving.pop((j, i), None)
+        self._pairs.allow(self._bodies_named(a), self._bodies_named(b), allowed)
 
     def allow_leaving(self, a: str, b: str, q: np.ndarray) -> None:
         """Lets two named things come closer than the padding, even touch, but never go deeper into each other
         than they are with the arm at ``q``: a motion may start in a contact (fingers round what they just let
         go, a link that ended a motion inside the padding) and leave it, or brush past, but not sweep through the
         thing. :meth:`allow` with False ends it."""
-        first, second = self._bodies_named(a), self._bodies_named(b)
-        floors = {(i, j): 0.0 for i in first for j in second}
-        for (x, y), floor in self._contact_floors(q).items():
-            pair = (x, y) if (x, y) in floors else (y, x)
-            if pair in floors:
-                floors[pair] = min(floors[pair], floor)
-        # Measured anew each time: a contact left shallower than it was may not be pushed back in.
-        for (i, j), floor in floors.items():
-            self._leaving[(i, j)] = self._leaving[(j, i)] = floor
+        self._pairs.leave(self._bodies_named(a), self._bodies_named(b), self._contact_floors(q))
 
     @contextlib.contextmanager
     def leaving_where(self, q: np.ndarray) -> Iterator[None]:
@@ -474,15 +351,12 @@ class PlanningScene:
         :meth:`allow_leaving` allows): for screens of a motion from where the arm is, which will be allowed the
         same before it is made (a pear that slipped 3 mm in the hand, lifted beside a UR5e's base, came within the
         padding of its upper arm, and every place pose's path screen failed at its start)."""
-        saved = dict(self._leaving)
-        for (a, b), floor in self._contact_floors(q).items():
-            if not self._allowed[a, b] and (a, b) not in saved:
-                floor = min(self._leaving.get((a, b), 0.0), floor)  # the pair may come in both orders
-                self._leaving[(a, b)] = self._leaving[(b, a)] = floor
+        saved = dict(self._pairs.leaving)
+        self._pairs.leave_all(self._contact_floors(q))
         try:
             yield
         finally:
-            self._leaving = saved
+            self._pairs.leaving = saved
 
     def _contact_floors(self, q: np.ndarray) -> dict[tuple[int, int], float]:
         """Each pair of bodies in contact with the arm at ``q`` (as MuJoCo orders it), with the least distance
@@ -496,7 +370,7 @@ class PlanningScene:
 
     def leaving_names(self) -> set[tuple[str, str]]:
         """The pairs allowed to be left (:meth:`allow_leaving`) as names, to carry them into a rebuilt scene."""
-        return {(self.body_labels[a], self.body_labels[b]) for a, b in self._leaving if a < b}
+        return self._pairs.leaving_names(self.body_labels)
 
     def has(self, name: str) -> bool:
         """Whether ``name`` (or "gripper", or "arm") names something in the scene."""
@@ -505,10 +379,7 @@ class PlanningScene:
     def allowed_names(self) -> set[tuple[str, str]]:
         """The allowed contacts as pairs of names (gripper parts by their body names), to carry them into a
         rebuilt scene."""
-        pairs = set()
-        for a, b in zip(*np.nonzero(np.triu(self._allowed)), strict=True):
-            pairs.add((self.body_labels[a], self.body_labels[b]))
-        return pairs
+        return self._pairs.allowed_names(self.body_labels)
 
     def _bodies_named(self, name: str) -> list[int]:
         if name == "gripper":
@@ -528,18 +399,9 @@ class PlanningScene:
         self.data.qpos[self._qpos] = q
         mujoco.mj_kinematics(self.model, self.data)
         if self._following is not None:
-            self._follow_part(self._following)
+            part = self._following
+            self.data.qpos[part.address] = part.value(self.data.site_xpos[self.robot.tcp_site])
             mujoco.mj_kinematics(self.model, self.data)
-
-    def _follow_part(self, part: _FollowedPart) -> None:
-        """Sets the followed part's joint to where the TCP has taken it: the turn of the TCP about a hinge since the
-        start, or its travel along a slide."""
-        tcp = self.data.site_xpos[self.robot.tcp_site]
-        if part.revolute:
-            moved = float(turns_about(part.axis, part.anchor, part.tcp_start, tcp))
-        else:
-            moved = float((tcp - part.tcp_start) @ part.axis)
-        self.data.qpos[part.address] = part.start + moved
 
     def _place(self, q: np.ndarray) -> None:
         """Kinematics with the arm at ``q`` and every held object carried along."""
@@ -569,54 +431,14 @@ class PlanningScene:
         mask[body] = True
         return mask
 
-    def _allow_bodies(self, first: Iterable[int], second: Iterable[int], allowed: bool = True) -> None:
-        second = list(second)
-        for i in first:
-            for j in second:
-                self._allowed[i, j] = self._allowed[j, i] = allowed
-
     def _set_bits(self, bodies: np.ndarray, role: str, margin: float) -> None:
         """Collision bits of a role, and margin (MuJoCo reports pairs closer than the larger margin), of geoms."""
-        geoms = bodies[self.model.geom_bodyid] & self._collides
-        self.model.geom_contype[geoms], self.model.geom_conaffinity[geoms] = _BITS[role]
-        self.model.geom_margin[geoms] = margin
-        self._sync_body_margins()
+        set_role(self.model, bodies[self.model.geom_bodyid] & self.colliding_geoms, role, margin)
+        self.sync_body_margins()
 
-    def _sync_body_margins(self) -> None:
-        """Each body's margin, the largest of its colliding geoms'. MuJoCo's midphase prunes pairs of bodies of
-        several geoms each by the body margins compiled into the model (zero here), not by the geoms': without
-        this a gripper link 2.7 mm above the table (the padding is 5 mm) passed as free."""
-        if not self._pad_bodies:
-            return
-        margins = np.zeros(self.model.nbody)
-        geoms = np.flatnonzero(self._collides)
-        np.maximum.at(margins, self.model.geom_bodyid[geoms], self.model.geom_margin[geoms])
-        self.model.body_margin[:] = margins
+    def sync_body_margins(self) -> None:
+        """Each body's margin from its geoms' (where the scene pads bodies of several geoms, see
+        :func:`~roboscript.planning.collision_roles.sync_body_margins`)."""
+        if self._pad_bodies:
+            sync_body_margins(self.model, self.colliding_geoms)
 
-
-def _moved_by_arm(model: mujoco.MjModel, body: int, robot: RobotBinding) -> bool:
-    arm_dofs = set(robot.dof.tolist())
-    while body > 0:
-        if model.body_dofnum[body] > 0 and model.body_dofadr[body] in arm_dofs:
-            return True
-        body = model.body_parentid[body]
-    return False
-
-
-def _open_finger_positions(
-    model: mujoco.MjModel, robot: RobotBinding, gripper_bodies: np.ndarray
-) -> tuple[np.ndarray, np.ndarray]:
-    """The qpos addresses of the gripper's joints and their values when it is fully open: the description's open
-    positions for its driven joints, the model's reference for the rest of a linkage (open at zero, as the 2F-85's
-    followers are)."""
-    open_by_name = dict(
-        zip(
-            (RobotDescription.qualified(j) for j in robot.description.gripper.joints),
-            robot.description.gripper.open_qpos,
-            strict=True,
-        )
-    )
-    joints = [j for j in range(model.njnt) if model.jnt_bodyid[j] in set(gripper_bodies.tolist())]
-    addresses = np.array([model.jnt_qposadr[j] for j in joints], dtype=int)
-    values = np.array([open_by_name.get(model.joint(j).name, model.qpos0[model.jnt_qposadr[j]]) for j in joints])
-    return addresses, values

@@ -24,6 +24,7 @@ from roboscript.planning.errors import PlanningError
 from roboscript.planning.kinematics import ArmKinematics
 from roboscript.planning.planner import JointPath, JointPlanner, whole_turns
 from roboscript.planning.scene import PlanningScene
+from roboscript.planning.scene_variants import held_clearance
 
 HELD_CLEARANCE = 0.02  # metres a held object keeps from everything while it is carried
 MAX_LIFT = 0.15  # metres the lines at either end may rise to reach that clearance
@@ -53,12 +54,12 @@ def to_clearance(kinematics: ArmKinematics, scene: PlanningScene, q: np.ndarray)
     """Joint waypoints of the straight line up from ``q`` to where what the gripper holds is clear by
     :data:`HELD_CLEARANCE` (just ``q`` if it is already). Raises :class:`PlanningError` if the line is blocked
     before that."""
-    with scene.held_clearance(HELD_CLEARANCE):
+    with held_clearance(scene, HELD_CLEARANCE):
         if scene.is_valid(q):
             return np.array([q])
     pose = kinematics.fk(q)
     line = cartesian_path(kinematics, scene, q, [Transform(pose.position + MAX_LIFT * UP, pose.quaternion)])
-    with scene.held_clearance(HELD_CLEARANCE):
+    with held_clearance(scene, HELD_CLEARANCE):
         for k, waypoint in enumerate(line.waypoints):
             if scene.is_valid(waypoint):
                 return line.waypoints[: k + 1]
@@ -82,7 +83,7 @@ def plan_transfer(
     lift = to_clearance(kinematics, scene, start)
     lower = to_clearance(kinematics, scene, goal)[::-1]
     constraint = upright(kinematics, lift[-1], lower[0])
-    with scene.held_clearance(HELD_CLEARANCE):
+    with held_clearance(scene, HELD_CLEARANCE):
         carried = planner.plan(lift[-1], lower[0], name, timeout, constraint=constraint)
     # The carried part may end at the lowering line's start turned a whole turn about a joint.
     lower = lower + whole_turns(lower[0], carried.goal)
