@@ -6,7 +6,7 @@ import pytest
 from roboscript.geometry import Transform, quat_from_yaw, rotation_angle_between
 from roboscript.planning.closed_form_ik import ClosedFormIK, NotClosedFormError
 from roboscript.planning.errors import IKError
-from roboscript.planning.ik import ik_solutions
+from roboscript.planning.ik import IKSearch, ik_solutions
 from roboscript.planning.kinematics import ArmKinematics
 from roboscript.robots import get_robot
 
@@ -49,7 +49,7 @@ def test_a_pose_out_of_reach_has_no_solution_and_the_search_says_how_near_it_cam
 def test_ik_of_a_closed_form_arm_returns_the_branches_nearest_first_within_limits(ur5e):
     home = np.array(get_robot("ur5e").home)
     target = ur5e.fk(home + 0.2)
-    solutions = ik_solutions(ur5e, target, home, wanted_solutions=8)
+    solutions = ik_solutions(ur5e, target, home, search=IKSearch(solutions=8))
     assert len(solutions) >= 4
     distances = [float(np.sum((q - home) ** 2)) for q in solutions]
     assert distances == sorted(distances)

@@ -228,7 +228,7 @@ def test_a_motion_into_the_compartment_is_planned_to_its_mouth_and_goes_in_along
         pose = Transform.from_rotation(np.array([0.0, inside.lower[1] + 0.06, inside.lower[2] + 0.05]), rotation)
         goal = motion.ik(pose)
         way_out = np.array([0.0, -0.1, 0.0])
-        motion.prefer_goal(pose, goal, way_out)
+        motion.preferences.prefer(pose, goal, way_out)
         way_in = motion._way_in(pose, goal)
         assert way_in is not None
         assert np.allclose(motion.kinematics.fk(way_in[0]).position, pose.position + way_out, atol=1e-3)

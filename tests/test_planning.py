@@ -24,8 +24,9 @@ from roboscript.planning import (
     solve_ik,
     time_parameterize,
 )
+from roboscript.planning.approaches import straight_approach
 from roboscript.planning.ground_truth_scene import ground_truth_motion
-from roboscript.planning.ik import TCP_POSE_COLLIDES
+from roboscript.planning.ik import TCP_POSE_COLLIDES, IKSearch
 from roboscript.planning.planner import (
     JointPlanner,
     densify,
@@ -349,7 +350,7 @@ def test_ik_solutions_are_distinct_and_nearest_first(table_world):
     backend, motion = table_world
     home = backend.joint_positions()
     target = Transform(np.array([0.0, -0.3, TABLE + 0.1]), DOWN)
-    solutions = ik_solutions(motion.kinematics, target, home, motion.scene, wanted_solutions=4)
+    solutions = ik_solutions(motion.kinematics, target, home, motion.scene, IKSearch(solutions=4))
     assert len(solutions) >= 2
     distances = [float(np.sum((q - home) ** 2)) for q in solutions]
     assert distances == sorted(distances)
@@ -363,7 +364,7 @@ def test_straight_approach_ends_on_the_targets_branch_along_a_line(robot):
     """Near the base, a vertical approach passes close to a singularity: the approach must still be a line."""
     _, motion = planner_for(objects_world(), robot)
     target = Transform(np.array([-0.15, -0.1, TABLE + 0.03]), DOWN)
-    goal, approach = motion.straight_approach(target, 0.1)
+    goal, approach = straight_approach(motion, target, 0.1)
     assert approach is not None
     np.testing.assert_allclose(approach[-1], goal)
     start = motion.kinematics.fk(approach[0]).position
@@ -554,16 +555,16 @@ def test_ik_tries_the_given_seeds_before_random_ones(table_world):
     backend, motion = table_world
     home = backend.joint_positions()
     target = Transform(np.array([0.0, -0.3, TABLE + 0.1]), DOWN)
-    branches = ik_solutions(motion.kinematics, target, home, motion.scene, wanted_solutions=4)
+    branches = ik_solutions(motion.kinematics, target, home, motion.scene, IKSearch(solutions=4))
     far = branches[-1]  # the branch farthest from home: not the one IK from home converges to
-    alone = ik_solutions(motion.kinematics, target, home, motion.scene, attempts=1, max_attempts=1, wanted_solutions=4)
+    alone = ik_solutions(motion.kinematics, target, home, motion.scene, IKSearch(1, 1, 4))
     if motion.kinematics.closed_form is not None:
         assert len(alone) == len(branches) == 4
         assert all(np.allclose(a, b) for a, b in zip(alone, branches, strict=True))
         return
     assert not any(np.allclose(q, far, atol=1e-2) for q in alone)
     seeded = ik_solutions(
-        motion.kinematics, target, home, motion.scene, attempts=1, max_attempts=1, wanted_solutions=4, seeds=[far]
+        motion.kinematics, target, home, motion.scene, IKSearch(1, 1, 4), seeds=[far]
     )
     assert any(np.allclose(q, far, atol=1e-2) for q in seeded)
 

@@ -340,7 +340,8 @@ def test_a_handle_met_head_on_at_the_edge_of_reach_is_grasped_and_pulled():
     so the one that pulls furthest is taken. Before, the grasp planned its way in across IK branches, swept the
     wrist round at the handle and was blocked (paper moderate_0, articulation style, every seed)."""
     from roboscript.bench.tasks import get_task
-    from roboscript.planning.motion import MIN_APPROACH_FRACTION
+    from roboscript.planning import approaches as approach_search
+    from roboscript.planning.approaches import MIN_APPROACH_FRACTION
 
     task = get_task("moderate_0", "paper")
     with MujocoBackend(task.world, robot="ur5e", seed=0, randomize=True) as backend:
@@ -348,16 +349,18 @@ def test_a_handle_met_head_on_at_the_edge_of_reach_is_grasped_and_pulled():
         handle = tools.get_object_center_position("cabinet.handle_1")
         normal = np.asarray(tools.get_plane_normal("cabinet.drawer_1", handle))
         found = []
-        straight_approaches = tools.motion.straight_approaches
+        straight_approaches = approach_search.straight_approaches
 
-        def recording(target, distance, *args, **kwargs):  # the real search, its answers kept
-            options = straight_approaches(target, distance, *args, **kwargs)
-            found.append((target.rotation[:, 2], tools.motion.approach_length(options[0][1])))
+        def recording(motion, target, distance, *args, **kwargs):  # the real search, its answers kept
+            options = straight_approaches(motion, target, distance, *args, **kwargs)
+            found.append((target.rotation[:, 2], approach_search.approach_length(motion, options[0][1])))
             return options
 
-        tools.motion.straight_approaches = recording
-        chosen = tools.parse_horizontal_grasp_pose("cabinet.handle_1", approach_direction=-normal)
-        del tools.motion.straight_approaches
+        approach_search.straight_approaches = recording
+        try:
+            chosen = tools.parse_horizontal_grasp_pose("cabinet.handle_1", approach_direction=-normal)
+        finally:
+            approach_search.straight_approaches = straight_approaches
         approach = chosen.rotation_matrix()[:, 2]
         assert float(approach @ -normal) >= np.cos(0.8) - 1e-6  # within the preferred cone
         nearest = [length for axis, length in found if float(axis @ -normal) >= float(found[0][0] @ -normal) - 1e-6]
@@ -434,7 +437,7 @@ def _place_screened(tools: ToolAPI) -> None:
         tools.motion.connects = _walled_first(verdicts)
         other = tools.parse_place_pose("plum", "footed_bowl")
         assert verdicts[:2] == [False, True]
-        chosen = tools.motion._preferred_for(other.to_transform())
+        chosen = tools.motion.preferences.preferred_for(other.to_transform(), tools.motion.scene.is_valid)
         assert chosen is not None
         tools.motion.connects = lambda start, goal, timeout=None: False  # test double: every one walled in
         kept = tools.parse_place_pose("plum", "footed_bowl")
@@ -460,10 +463,10 @@ def test_where_no_upright_pose_reaches_a_spot_the_hand_leans_toward_the_open_sid
 
         ik_choices = tools.motion.ik_choices
 
-        def refuses_upright(pose, reference, attempts=16, max_attempts=150):
+        def refuses_upright(pose, reference, search):
             if abs(off_vertical(pose) - off_vertical(held)) < 5:
                 raise IKError(pose.position, 0.05, 0.0, "test double: no upright pose is reachable")
-            return ik_choices(pose, reference, attempts, max_attempts)
+            return ik_choices(pose, reference, search)
 
         tools.motion.ik_choices = refuses_upright
         leaning = tools.parse_place_pose("plum", "footed_bowl").to_transform()

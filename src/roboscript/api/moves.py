@@ -20,6 +20,7 @@ from roboscript.grasping.heuristics import GraspError
 from roboscript.names import kind_of
 from roboscript.notices import notice
 from roboscript.perception.base import Perception
+from roboscript.planning.approaches import approaches, finish_approach, move_to_approach
 from roboscript.planning.contacts import ContactAllowances
 from roboscript.planning.errors import CartesianPathIncompleteError, IKError, PlanningError, TrackingError
 from roboscript.planning.motion import MotionPlanner
@@ -208,10 +209,10 @@ class Moves:
         self.touching.leave_where_started()
         # The fingers may touch the object only on the final straight approach, not on the way to its start.
         with self.contacts.touching(self.touching.new_near(target.position)):
-            options = self.motion.approaches(target, PRE_GRASP_DISTANCE)
-        chosen = self.motion.move_to_approach(options, target, PRE_GRASP_DISTANCE)
+            options = approaches(self.motion, target, PRE_GRASP_DISTANCE)
+        chosen = move_to_approach(self.motion, options, target, PRE_GRASP_DISTANCE)
         self.touching.allow_near(target.position)
-        self.motion.finish_approach(chosen, target)
+        finish_approach(self.motion, chosen, target)
         self.contacts.withdraw_cleared(self.held)
 
     def take(self, name: str, is_object: bool, max_width: float) -> None:

@@ -27,12 +27,13 @@ from roboscript.notices import notice
 from roboscript.perception.base import Perception
 from roboscript.planning.cartesian import cartesian_path
 from roboscript.planning.errors import IKError
+from roboscript.planning.ik import IKSearch
 from roboscript.planning.motion import MotionPlanner
 from roboscript.planning.scene_variants import fingers_open, ignoring_held
 
 PLACE_PATH_SCREENS = 3  # planner runs per parse_place_pose call that check a place configuration can be reached
-PLACE_IK_QUICK = (8, 24)  # IK attempts (wanted, at most) per place pose screened
-PLACE_IK_WIDE = (24, 200)  # the same where the quick screen reached no spot
+PLACE_IK_QUICK = IKSearch(8, 24)  # the IK search per place pose screened
+PLACE_IK_WIDE = IKSearch(24, 200)  # the same where the quick screen reached no spot
 PLACE_RAISE_LIMIT = 0.04  # metres a place pose is raised at most when the held object has sunk in the hand
 # How much higher than resting a held object is tried, lowest first: a longer drop topples tall things.
 PLACE_LIFTS = (0.0, 0.01, 0.02, 0.05, 0.1)
@@ -97,7 +98,7 @@ class Placer:
     def reachable(self, name: str, tcp: Transform, request: PlaceRequest) -> tuple[Transform, PlacementSpot]:
         """The gripper pose, from the hand at ``tcp`` holding ``name``, for the first of ``spots`` the arm can
         reach and leave; the configuration chosen becomes the motion's goal for that pose
-        (:meth:`MotionPlanner.prefer_goal`).
+        (:meth:`~roboscript.planning.goal_preferences.GoalPreferences.prefer`).
 
         In order of preference: an upright pose that leaves the full retreat (:data:`PLACE_RETREAT`) and that
         one planner run reaches (see :meth:`_search`), or failing a path, one that leaves the retreat; the same
@@ -146,7 +147,7 @@ class Placer:
             )
         # Into a compartment, the hand goes in along its way out (the retreat's line, checked clear above).
         way_out = request.retreat * PLACE_RETREAT if request.retreat[2] < 0.5 else None
-        self.motion.prefer_goal(best[0], best[1], way_out)
+        self.motion.preferences.prefer(best[0], best[1], way_out)
         return best[0], best[2]
 
     def place_pose(self, name: str, receptacle: str | None, target: np.ndarray | None, tcp: Transform) -> Transform:
@@ -192,7 +193,7 @@ class Placer:
         self,
         carried: _Carried,
         spots: list[PlacementSpot],
-        search: tuple[int, int],
+        search: IKSearch,
         leans: tuple[float, ...],
         spacing: float = REPEAT_SPACING,
         budget: int = PLACE_IK_BUDGET,
@@ -242,7 +243,7 @@ class Placer:
         spot: PlacementSpot,
         lift_lean: tuple[float, float],
         q: np.ndarray,
-        search: tuple[int, int],
+        search: IKSearch,
         retreat: np.ndarray,
     ) -> bool:
         """One spot at one height and lean (see :meth:`_search`), what it reaches added to ``found``; whether the
@@ -276,7 +277,7 @@ class Placer:
         lean: float,
         q: np.ndarray,
         errors: list[str],
-        search: tuple[int, int],
+        search: IKSearch,
     ) -> list[tuple[Transform, list[np.ndarray]]]:
         """The gripper poses that put the held object at ``spot`` (``lift`` higher, leaning ``lean`` degrees
         toward the spot's open side), one per turn it allows, with their collision-free IK branches; the poses
@@ -291,7 +292,7 @@ class Placer:
             position = spot.center + raised + rotation @ (carried.tcp.position - carried.pivot)
             pose = Transform.from_rotation(position, rotation @ carried.tcp.rotation)
             try:
-                out.append((pose, self.motion.ik_choices(pose, q, attempts=search[0], max_attempts=search[1])))
+                out.append((pose, self.motion.ik_choices(pose, q, search)))
             except IKError as exc:
                 errors.append(str(exc))
         return out

@@ -26,12 +26,15 @@ from roboscript.grasping.heuristics import GraspError, central_lift_grasps, hori
 from roboscript.names import kind_of
 from roboscript.notices import notice
 from roboscript.perception.base import ObjectPoints, Perception
+from roboscript.planning.approaches import approach_length, approaches
 from roboscript.planning.cartesian import arc_poses
 from roboscript.planning.contacts import ContactAllowances
 from roboscript.planning.errors import IKError, PlanningError
+from roboscript.planning.ik import IKSearch
 from roboscript.planning.motion import MotionPlanner
 
 PRE_GRASP_DISTANCE = 0.1
+GRASP_APPROACH_SEARCH = IKSearch(8, 40, 3)  # every grasp's IK branches, searched before a worse grasp is taken
 # A box grasp closes on the faces of the object's footprint, not on a pair of points checked against friction:
 # ranked with the contact quality of a middling antipodal pair.
 BOX_GRASP_QUALITY = 0.5
@@ -197,8 +200,8 @@ class GraspChooser:
                     # top-down line (a banana beside the Panda: a grasp at its end was taken instead, and the
                     # banana swung out of the fingers).
                     try:
-                        options = self.motion.approaches(
-                            pose, PRE_GRASP_DISTANCE, q, attempts=8, max_attempts=40, branches=3, first=not handle
+                        options = approaches(
+                            self.motion, pose, PRE_GRASP_DISTANCE, q, GRASP_APPROACH_SEARCH, first=not handle
                         )
                     except IKError as exc:
                         errors.append((0, str(exc)))
@@ -222,7 +225,7 @@ class GraspChooser:
                         elif pulled > 0.0 and (little_pull is None or pulled > little_pull[0]):
                             little_pull = (pulled, pose, why)
                         continue
-                    if self.motion.approach_length(approach) < PRE_GRASP_DISTANCE - 1e-3:
+                    if approach_length(self.motion, approach) < PRE_GRASP_DISTANCE - 1e-3:
                         # Moved in along a shortened line: kept, in case no grasp has the full approach.
                         errors.append((3, "the straight approach is free only part of the way"))
                         short_approach = short_approach or pose
@@ -281,7 +284,7 @@ class GraspChooser:
         for goal, line in clear[1:]:
             opened, why = self._opening_reach(name, pose, goal)
             if not why:
-                self.motion.prefer_goal(pose, goal)
+                self.motion.preferences.prefer(pose, goal)
                 return line, opened, why
         return clear[0][1], *nearest
 

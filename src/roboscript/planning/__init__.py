@@ -11,7 +11,7 @@ from roboscript.planning.errors import (
     TrackingError,
     UnknownPlannerError,
 )
-from roboscript.planning.ik import ik_solutions, solve_ik
+from roboscript.planning.ik import IKSearch, ik_solutions, solve_ik
 from roboscript.planning.kinematics import ArmKinematics
 from roboscript.planning.motion import MotionPlanner
 from roboscript.planning.planner import JointPath, JointPlanner, planner_names
@@ -23,6 +23,7 @@ __all__ = [
     "CartesianPathIncompleteError",
     "CartesianResult",
     "IKError",
+    "IKSearch",
     "JointPath",
     "JointPlanner",
     "MotionPlanner",

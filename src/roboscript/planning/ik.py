@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 from collections.abc import Sequence
+from dataclasses import dataclass
 
 import numpy as np
 
@@ -14,25 +15,40 @@ from roboscript.planning.scene import PlanningScene
 TCP_POSE_COLLIDES = "the hand or what it holds collides at this pose, whatever the arm's configuration"
 
 
+@dataclass(frozen=True)
+class IKSearch:
+    """How hard an IK search looks: after ``attempts`` seeds it stops if it has a solution, else it goes on up to
+    ``max_attempts``; it keeps up to ``solutions`` collision-free solutions (IK branches)."""
+
+    attempts: int = 16
+    max_attempts: int = 150
+    solutions: int = 3
+
+    def __post_init__(self) -> None:
+        if min(self.attempts, self.max_attempts, self.solutions) < 1:
+            raise ValueError(f"an IK search needs at least one attempt and one solution, got {self}")
+
+
+DEFAULT_SEARCH = IKSearch()
+
+
 def solve_ik(
     kinematics: ArmKinematics,
     target: Transform,
     reference: np.ndarray,
     scene: PlanningScene | None = None,
-    attempts: int = 16,
-    max_attempts: int = 150,
-    wanted_solutions: int = 3,
+    search: IKSearch = DEFAULT_SEARCH,
     seed: int = 0,
 ) -> np.ndarray:
     """A joint configuration that puts the TCP at ``target``, collision-free in ``scene`` if one is given.
 
     The first seed is ``reference`` (usually the current configuration), the others are drawn uniformly within
-    the joint limits (deterministically, from ``seed``). After ``attempts`` seeds the search stops if it has a
-    solution, else goes on up to ``max_attempts`` (a redundant arm may have free solutions on few branches only).
+    the joint limits (deterministically, from ``seed``), as many as ``search`` says (a redundant arm may have free
+    solutions on few branches only).
     Among the solutions found, the one nearest ``reference`` is returned. Raises :class:`IKError` with the
     nearest pose reached, or with the collisions of the solutions.
     """
-    return ik_solutions(kinematics, target, reference, scene, attempts, max_attempts, wanted_solutions, seed)[0]
+    return ik_solutions(kinematics, target, reference, scene, search, seed)[0]
 
 
 def ik_solutions(
@@ -40,13 +56,11 @@ def ik_solutions(
     target: Transform,
     reference: np.ndarray,
     scene: PlanningScene | None = None,
-    attempts: int = 16,
-    max_attempts: int = 150,
-    wanted_solutions: int = 3,
+    search: IKSearch = DEFAULT_SEARCH,
     seed: int = 0,
     seeds: Sequence[np.ndarray] = (),
 ) -> list[np.ndarray]:
-    """Up to ``wanted_solutions`` collision-free solutions, nearest ``reference`` first; see :func:`solve_ik`.
+    """Up to ``search.solutions`` collision-free solutions, nearest ``reference`` first; see :func:`solve_ik`.
     ``seeds``: configurations tried right after ``reference``, before the random ones (near the edge of the
     arm's reach, random seeds may all miss a pose that a configuration chosen for a pose nearby reaches).
 
@@ -55,6 +69,7 @@ def ik_solutions(
     run from ``reference`` decides a pose at the very edge of reach and says how near the arm came: a hundred
     random seeds could find nothing the closed form missed."""
     reference = np.asarray(reference, dtype=float)
+    attempts, max_attempts, wanted_solutions = search.attempts, search.max_attempts, search.solutions
     if kinematics.closed_form is not None:
         found = _closed_form_solutions(kinematics, target, reference, scene, wanted_solutions)
         if found:

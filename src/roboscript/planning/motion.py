@@ -23,7 +23,8 @@ from roboscript.planning.errors import (
     PlanningError,
     TrackingError,
 )
-from roboscript.planning.ik import ik_solutions, solve_ik
+from roboscript.planning.goal_preferences import GoalPreferences
+from roboscript.planning.ik import DEFAULT_SEARCH, IKSearch, ik_solutions, solve_ik
 from roboscript.planning.kinematics import ArmKinematics
 from roboscript.planning.planner import JointPath, JointPlanner, pose_distance, same_pose, seed_sampling, whole_turns
 from roboscript.planning.scene import PlanningScene
@@ -31,13 +32,11 @@ from roboscript.planning.timing import time_parameterize
 from roboscript.planning.transfer import plan_transfer, upright
 from roboscript.robot_io import ExecutionReport
 
-WIDE_APPROACH_SEARCH = {"attempts": 8, "max_attempts": 80, "branches": 8}  # see MotionPlanner.approaches
 PLANNING_ATTEMPTS = 3  # tries of a planner that runs out of time, each with twice the time of the one before
 # While an object is held, motions are timed at this fraction of the arm's limits (at most the free speed): at
 # half the limits a planned transfer swept a 0.27 kg banana, pinched across its 3.6 cm body, at 1.4 m/s and up to
 # 6.7 m/s^2, and it crept out of the pads and fell. MoveIt's configurations scale far lower still by default.
 CARRY_SPEED_SCALE = 0.25
-MIN_APPROACH_FRACTION = 0.5  # of the pre-grasp distance: the least straight approach a grasp is moved in along
 
 
 class SceneSource(Protocol):
@@ -88,8 +87,7 @@ class MotionPlanner:
         self.tracking_tolerance = tracking_tolerance
         self.default_planner = "RRTConnect"
         self.planning_timeout = 2.0
-        self._preferred: list[tuple[Transform, np.ndarray]] = []  # configurations chosen for poses ahead of time
-        self._ways_out: list[tuple[Transform, np.ndarray]] = []  # the straight ways out of poses (prefer_goal)
+        self.preferences = GoalPreferences()  # configurations chosen for poses ahead of the motions to them
 
     @property
     def scene(self) -> PlanningScene:
@@ -216,144 +214,20 @@ class MotionPlanner:
         return (timeout or self.planning_timeout) * load_factor()
 
     def ik(
-        self, pose: Transform, reference: np.ndarray | None = None, attempts: int = 16, max_attempts: int = 150
+        self, pose: Transform, reference: np.ndarray | None = None, search: IKSearch = DEFAULT_SEARCH
     ) -> np.ndarray:
         """A collision-free configuration for the TCP at ``pose``, nearest ``reference`` (default: current).
 
-        Fewer ``attempts`` make a quick screen of many candidate poses; see :func:`solve_ik`."""
+        A smaller ``search`` makes a quick screen of many candidate poses; see :func:`solve_ik`."""
         reference = self.backend.joint_positions() if reference is None else reference
-        return solve_ik(self.kinematics, pose, reference, self.scene, attempts, max_attempts)
+        return solve_ik(self.kinematics, pose, reference, self.scene, search)
 
     def ik_choices(
-        self, pose: Transform, reference: np.ndarray, attempts: int = 16, max_attempts: int = 150
+        self, pose: Transform, reference: np.ndarray, search: IKSearch = DEFAULT_SEARCH
     ) -> list[np.ndarray]:
         """Several collision-free configurations for the TCP at ``pose`` (IK branches), nearest ``reference``
         first; see :func:`ik_solutions`."""
-        return ik_solutions(self.kinematics, pose, reference, self.scene, attempts, max_attempts)
-
-    def straight_approach(
-        self,
-        target: Transform,
-        distance: float,
-        reference: np.ndarray | None = None,
-        attempts: int = 16,
-        max_attempts: int = 150,
-        branches: int = 4,
-    ) -> tuple[np.ndarray, np.ndarray | None]:
-        """A configuration at ``target`` and a straight approach to it from ``distance`` back along the TCP's z:
-        the first of :meth:`straight_approaches`."""
-        return self.straight_approaches(target, distance, reference, attempts, max_attempts, branches, first=True)[0]
-
-    def straight_approaches(
-        self,
-        target: Transform,
-        distance: float,
-        reference: np.ndarray | None = None,
-        attempts: int = 16,
-        max_attempts: int = 150,
-        branches: int = 4,
-        first: bool = False,
-    ) -> list[tuple[np.ndarray, np.ndarray | None]]:
-        """Configurations at ``target``, each with a straight approach to it from ``distance`` back along the
-        TCP's z, nearest ``reference`` first.
-
-        An approach is found backwards, by backing out of the target along the line, so that it ends on the
-        target's own IK branch: a configuration solved for the start of the line on its own may sit on another
-        branch, from which no straight line leads to the target. Near a singularity (the hand above the base)
-        some branches cannot follow the line at all, so up to ``branches`` IK solutions are tried. Returns those
-        whose line is clear (with ``first``, the first such; the configuration preferred for ``target``, if one is,
-        first of all), with its joint waypoints; where none is, the longest
-        line clear for at least :data:`MIN_APPROACH_FRACTION` of ``distance``; or, when every line is blocked
-        sooner, the nearest solution with None. Raises :class:`IKError` if ``target`` has no solution.
-        """
-        reference = self.backend.joint_positions() if reference is None else reference
-        solutions = ik_solutions(self.kinematics, target, reference, self.scene, attempts, max_attempts, branches)
-        preferred = self._preferred_for(target)
-        if preferred is not None:  # chosen for what follows the grasp (a handle's branch that can swing its door)
-            solutions = [preferred, *solutions]
-        start = Transform(target.position - distance * target.rotation[:, 2], target.quaternion)
-        found = []
-        shorter: tuple[float, np.ndarray, np.ndarray] | None = None
-        for q in solutions:
-            line = cartesian_path(self.kinematics, self.scene, q, [start])
-            if line.fraction >= 1.0:
-                found.append((q, line.waypoints[::-1].copy()))
-                if first:
-                    break
-            elif line.fraction >= MIN_APPROACH_FRACTION and (shorter is None or line.fraction > shorter[0]):
-                shorter = (line.fraction, q, line.waypoints[::-1].copy())
-        if not found and shorter is not None:
-            # As MoveIt's pick has a desired and a least approach distance: a pre-grasp pose at the edge of reach
-            # (a handle met head-on) is moved in along the line as far as it is free.
-            found.append(shorter[1:])
-        return found or [(solutions[0], None)]
-
-    def approaches(
-        self,
-        target: Transform,
-        distance: float,
-        reference: np.ndarray | None = None,
-        attempts: int = 16,
-        max_attempts: int = 150,
-        branches: int = 4,
-        first: bool = False,
-    ) -> list[tuple[np.ndarray, np.ndarray | None]]:
-        """:meth:`straight_approaches` (from the present configuration by default), searching
-        :data:`WIDE_APPROACH_SEARCH`'s IK branches where the nearest have no clear line of the full ``distance``: they
-        may all be walled in (an arm that has just put something down beside the cabinet)."""
-        reference = self.sync() if reference is None else reference
-        options = self.straight_approaches(target, distance, reference, attempts, max_attempts, branches, first)
-        if self.approach_length(options[0][1]) < distance - 1e-3:
-            wider = self.straight_approaches(target, distance, reference, first=first, **WIDE_APPROACH_SEARCH)
-            if self.approach_length(wider[0][1]) > self.approach_length(options[0][1]):
-                options = wider
-        return options
-
-    def approach_length(self, line: np.ndarray | None) -> float:
-        """How far a straight approach's line (joint waypoints) moves the TCP; 0 for none."""
-        if line is None:
-            return 0.0
-        return float(np.linalg.norm(self.kinematics.fk(line[0]).position - self.kinematics.fk(line[-1]).position))
-
-    def move_to_approach(
-        self, options: list[tuple[np.ndarray, np.ndarray | None]], target: Transform, distance: float
-    ) -> tuple[np.ndarray, np.ndarray | None]:
-        """Moves to the start of whichever of ``options`` (from :meth:`approaches`) a planned path reaches: each IK
-        branch with a clear line is a goal, so where none leads to one branch's start (walled in by the table on a
-        6-joint arm) the next is tried. Returns that option."""
-        starts: list[tuple[int, np.ndarray]] = []
-        failure: IKError | None = None
-        for index, (goal, line) in enumerate(options):
-            if line is not None:
-                starts.append((index, line[0]))
-                continue
-            try:
-                starts.append((index, self._approach_start(target, distance, goal)))
-            except IKError as exc:  # this branch's way in starts out of reach; another's may not
-                failure = failure or exc
-        if failure is not None and not starts:
-            raise failure
-        return options[starts[self.move_to_any([q for _, q in starts])][0]]
-
-    def _approach_start(self, target: Transform, distance: float, goal: np.ndarray) -> np.ndarray:
-        """Where an approach with no clear straight line starts: the pre-grasp ``distance`` back along the
-        approach axis, or half as far where that is out of reach (a handle at the edge of the arm's reach)."""
-        axis = target.rotation[:, 2]
-        try:
-            return self.ik(Transform(target.position - distance * axis, target.quaternion), goal)
-        except IKError:
-            return self.ik(Transform(target.position - distance / 2 * axis, target.quaternion), goal)
-
-    def finish_approach(self, option: tuple[np.ndarray, np.ndarray | None], target: Transform) -> None:
-        """Moves in along the option's straight line to ``target``; where it had none, or the line is blocked now
-        (the world moved), straight if that has become feasible, else planned."""
-        goal, line = option
-        here = None if line is None else self._from_here(line)
-        if here is not None:
-            self.execute(here)
-            return
-        straight = self.cartesian([target])
-        self.execute(straight.waypoints if straight.fraction >= 1.0 else self.plan_to_joints(goal))
+        return ik_solutions(self.kinematics, pose, reference, self.scene, search)
 
     def move_to_any(self, goals: Sequence[np.ndarray], planner: str | None = None) -> int:
         """Plans to the first of ``goals`` (other IK branches of one pose) that a path reaches, trying the next
@@ -362,38 +236,16 @@ class MotionPlanner:
         self.execute(path)
         return int(np.argmin([pose_distance(path.goal, g) for g in goals]))
 
-    def prefer_goal(self, pose: Transform, q: np.ndarray, way_out: np.ndarray | None = None) -> None:
-        """Makes ``q`` the goal of the next motion to ``pose`` (a place pose chosen because the hand can leave it
-        from ``q``), where the IK nearest the start would otherwise decide. It holds for one motion, and until the
-        gripper lets go of what it holds. ``way_out``: the TCP's straight way out of a narrow place (a compartment
-        behind a door), as a displacement; a motion to ``pose`` that is no straight line is then planned to the
-        way's mouth and goes in along it, as MoveIt's place pipeline approaches (planning into the compartment
-        itself ran out of time beside the door)."""
-        self._preferred = [*self._preferred[-7:], (pose, np.asarray(q, dtype=float).copy())]
-        self._ways_out = [(known, out) for known, out in self._ways_out[-7:] if not _same(known, pose)]
-        if way_out is not None:
-            self._ways_out.append((pose, np.asarray(way_out, dtype=float).copy()))
-
-    def _preferred_for(self, pose: Transform, consume: bool = False) -> np.ndarray | None:
-        """The configuration preferred for ``pose``, if one was chosen and is still free of collisions."""
-        for k in range(len(self._preferred) - 1, -1, -1):
-            known, q = self._preferred[k]
-            if _same(known, pose):
-                if consume:
-                    del self._preferred[k]
-                return q if self.scene.is_valid(q) else None
-        return None
-
     def plan_to_pose(self, pose: Transform, planner: str | None = None, timeout: float | None = None) -> JointPath:
         """A planned path to ``pose``: to the configuration preferred for it, if one is (tried twice), then to
         other IK branches. The configurations preferred for other poses seed the IK (the program's own pose above
         a chosen place pose, at the edge of the reach, is found from the place's configuration)."""
         start = self.sync()
-        preferred = self._preferred_for(pose)
-        seeds = [q for _, q in self._preferred]
+        preferred = self.preferences.preferred_for(pose, self.scene.is_valid)
+        seeds = self.preferences.seeds()
         try:
             goals = ik_solutions(
-                self.kinematics, pose, start, self.scene, wanted_solutions=PLANNING_ATTEMPTS, seeds=seeds
+                self.kinematics, pose, start, self.scene, IKSearch(solutions=PLANNING_ATTEMPTS), seeds=seeds
             )
         except IKError:
             if preferred is None:
@@ -432,7 +284,7 @@ class MotionPlanner:
         """A straight line when it is feasible in full and ends in the configuration preferred for ``pose`` (if
         one is), else a planned collision-free motion."""
         line = self.cartesian([pose])
-        preferred = self._preferred_for(pose)
+        preferred = self.preferences.preferred_for(pose, self.scene.is_valid)
         if line.fraction >= 1.0 and (preferred is None or same_pose(line.waypoints[-1], preferred, 0.2)):
             path = line.waypoints
         else:
@@ -443,26 +295,26 @@ class MotionPlanner:
                 except (PlannerTimeoutError, PathInCollisionError):
                     way_in = None  # no path to its mouth either: planned to the pose itself, below
             if way_in is not None:
-                self._preferred_for(pose, consume=True)
-                here = self._from_here(way_in)
+                self.preferences.preferred_for(pose, self.scene.is_valid, consume=True)
+                here = self.from_here(way_in)
                 # Reached its mouth a whole turn about a joint off, the line in would pass a limit: planned in.
                 return self.execute(here if here is not None else self.plan_to_joints(way_in[-1], planner))
             path = self.plan_to_pose(pose, planner)
-        self._preferred_for(pose, consume=True)
+        self.preferences.preferred_for(pose, self.scene.is_valid, consume=True)
         return self.execute(path)
 
     def _way_in(self, pose: Transform, goal: np.ndarray | None) -> np.ndarray | None:
         """The straight line into ``pose`` ending at ``goal`` (the configuration preferred for it), along the way
-        out registered with it (:meth:`prefer_goal`), as joint waypoints from its mouth; None where there is none
-        or the line is blocked."""
-        way_out = next((out for known, out in reversed(self._ways_out) if _same(known, pose)), None)
+        out registered with it (:meth:`GoalPreferences.prefer`), as joint waypoints from its mouth; None where there
+        is none or the line is blocked."""
+        way_out = self.preferences.way_out(pose)
         if goal is None or way_out is None:
             return None
         mouth = Transform(pose.position + way_out, pose.quaternion)
         line = self.cartesian([mouth], start=goal)
         return line.waypoints[::-1].copy() if line.fraction >= 1.0 and len(line.waypoints) > 1 else None
 
-    def _from_here(self, line: np.ndarray) -> np.ndarray | None:
+    def from_here(self, line: np.ndarray) -> np.ndarray | None:
         """``line`` starting from the present configuration, which the motion to its start reached (perhaps a
         whole turn about a joint away: planner.py); None where it then passes a joint limit."""
         q = self.sync()
@@ -540,12 +392,6 @@ class MotionPlanner:
 
     def detach(self, name: str) -> None:
         self.scene.detach(name)
-        self._preferred.clear()  # chosen for placing what was held
-        self._ways_out.clear()
+        self.preferences.clear()  # chosen for placing what was held
         self.sync()
 
-
-def _same(a: Transform, b: Transform) -> bool:
-    """Whether two poses are one (a pose handed back by a program)."""
-    same_place = float(np.linalg.norm(a.position - b.position)) < 1e-4
-    return same_place and abs(float(np.dot(a.quaternion, b.quaternion))) > 1 - 1e-8
