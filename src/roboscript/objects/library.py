@@ -1,18 +1,20 @@
-"""The object library: procedurally built household objects with real-world sizes, colours and masses.
-
-YCB and Google Scanned Objects meshes cannot be installed from the package registries, so every object here is a
-composite of convex parts shaped like its real counterpart. Sizes follow the YCB set where one exists. Each type has
-a category (what a detector would call it) and a colour (what a scene description says of it).
+"""The object library: household objects with real-world sizes, colours and masses, as ``catalogue.yaml`` lists
+them, each built of convex parts by a recipe of :mod:`roboscript.objects.designs`. Each type has a category (what a
+detector would call it) and a colour (what a scene description says of it).
 """
 
 from __future__ import annotations
 
+import inspect
 from dataclasses import dataclass, field
+from functools import cache
+from importlib import resources
 
 import numpy as np
 
+from roboscript.datafile import DataFileError, Reader, read_data_file
 from roboscript.errors import did_you_mean
-from roboscript.objects import designs as shapes
+from roboscript.objects import designs
 from roboscript.objects.designs import COLORS
 from roboscript.objects.shapes import RGBA, Part, parts_bounds
 
@@ -81,400 +83,145 @@ class ObjectType:
         return float(np.max(np.linalg.norm([[lower[0], lower[1]], [upper[0], upper[1]]], axis=1)))
 
 
-_LIBRARY: dict[str, ObjectType] = {}
+class CatalogueFileError(DataFileError):
+    kind = "object catalogue"
 
 
-def _register(obj: ObjectType) -> ObjectType:
-    if obj.name in _LIBRARY:
-        raise ValueError(f"object type {obj.name!r} registered twice")
-    _LIBRARY[obj.name] = obj
-    return obj
+# The recipes a catalogue entry's design may name: the public part builders of the designs module.
+DESIGNS = {
+    name: fn
+    for name, fn in vars(designs).items()
+    if inspect.isfunction(fn)
+    and fn.__module__ == designs.__name__
+    and not name.startswith("_")
+    and name != "interior_of_cylinder"
+}
+FIELDS = {
+    "name",
+    "category",
+    "color",
+    "shade",
+    "shape",
+    "design",
+    "density",
+    "description",
+    "round",
+    "friction",
+    "container",
+    "interior",
+    "round_floor",
+}
 
 
-# ---------------------------------------------------------------------------------------------------------------
-# The catalogue. Densities in kg/m^3 of the solid parts: fruit ~ 850-950, wood ~ 600, ceramic ~ 2000 (walls),
-# cardboard boxes ~ 300-500 (they are mostly air), plastic ~ 1000.
+@cache
+def _library() -> dict[str, ObjectType]:
+    return read_catalogue(str(resources.files("roboscript.objects") / "catalogue.yaml"))
 
-for _name, _category, _color, _parts, _density, _desc in [
-    ("apple", "apple", "red", shapes.sphere(0.038), 850, "a red apple, 7.6 cm"),
-    ("green_apple", "apple", "green", shapes.sphere(0.036), 850, "a green apple, 7.2 cm"),
-    ("orange", "orange", "orange", shapes.sphere(0.036), 900, "an orange, 7.2 cm"),
-    ("lemon", "lemon", "yellow", shapes.ellipsoid(0.034, 0.026, 0.026), 900, "a lemon, 6.8 cm long"),
-    ("lime", "lime", "green", shapes.ellipsoid(0.028, 0.024, 0.024), 900, "a lime, 5.6 cm long"),
-    ("plum", "plum", "purple", shapes.sphere(0.026), 950, "a plum, 5.2 cm"),
-    ("peach", "peach", "peach", shapes.sphere(0.033), 900, "a peach, 6.6 cm"),
-    ("strawberry", "strawberry", "red", shapes.ellipsoid(0.018, 0.018, 0.022), 900, "a strawberry, 4.4 cm tall"),
-    ("tennis_ball", "tennis ball", "light_green", shapes.sphere(0.033), 270, "a tennis ball, 6.6 cm, 58 g"),
-    ("baseball", "baseball", "white", shapes.sphere(0.037), 690, "a baseball, 7.4 cm, 145 g"),
-    ("golf_ball", "golf ball", "white", shapes.sphere(0.021), 1150, "a golf ball, 4.3 cm"),
-    ("softball", "softball", "yellow", shapes.sphere(0.048), 420, "a softball, 9.6 cm"),
-]:
-    shade = "light_green" if _name == "green_apple" else ""  # green as its name says, drawn a lighter green
-    _register(ObjectType(_name, _category, _color, _parts, _density, _desc, round=True, shape="round", shade=shade))
 
-_register(ObjectType("banana", "banana", "yellow", shapes.banana(), 900, "a banana, 20 cm long", shape="elongated"))
-_register(ObjectType("pear", "pear", "light_green", shapes.pear(), 900, "a pear, 10 cm tall", shape="irregular"))
+def read_catalogue(path: str) -> dict[str, ObjectType]:
+    """The object types of the catalogue file ``path`` by name, each checked; raises :class:`CatalogueFileError`
+    naming the entry and the field where one is wrong."""
+    entries = read_data_file(path, CatalogueFileError)
+    if not isinstance(entries, list):
+        raise CatalogueFileError(path, "top level", f"expected a list of object types, got {type(entries).__name__}")
+    library: dict[str, ObjectType] = {}
+    for index, data in enumerate(entries):
+        name = data.get("name", f"entry {index + 1}") if isinstance(data, dict) else f"entry {index + 1}"
+        kind = _object_type(Reader(path, f"object type {name!r}", data, FIELDS, CatalogueFileError))
+        if kind.name in library:
+            raise CatalogueFileError(path, f"object type {kind.name!r}", "listed twice")
+        library[kind.name] = kind
+    return library
 
-# Boxes (cardboard packaging, sizes of the YCB food boxes, scaled to fit a drawer lying down).
-for _name, _color, _dims, _density, _desc in [
-    ("cracker_box", "red", (0.16, 0.06, 0.21), 200, "a red cracker box, 16 x 6 x 21 cm"),
-    ("sugar_box", "yellow", (0.09, 0.038, 0.175), 350, "a yellow sugar box, 9 x 3.8 x 17.5 cm"),
-    ("pudding_box", "brown", (0.11, 0.089, 0.035), 500, "a brown pudding box, 11 x 8.9 x 3.5 cm"),
-    ("gelatin_box", "red", (0.089, 0.073, 0.028), 500, "a red gelatin box, 8.9 x 7.3 x 2.8 cm"),
-    ("tea_box", "green", (0.12, 0.07, 0.06), 250, "a green tea box, 12 x 7 x 6 cm"),
-    ("cereal_box", "blue", (0.12, 0.05, 0.16), 200, "a small blue cereal box, 12 x 5 x 16 cm"),
-    ("blue_box", "blue", (0.08, 0.06, 0.05), 400, "a small blue box, 8 x 6 x 5 cm"),
-    ("red_box", "red", (0.07, 0.07, 0.05), 400, "a small red box, 7 x 7 x 5 cm"),
-    ("yellow_box", "yellow", (0.09, 0.05, 0.045), 400, "a small yellow box, 9 x 5 x 4.5 cm"),
-    ("brown_box", "brown", (0.072, 0.07, 0.055), 350, "a brown cosmetics carton, 7.2 x 7 x 5.5 cm"),
-]:
-    _register(ObjectType(_name, "box", _color, shapes.box(*_dims), _density, _desc, shape="box"))
-_register(
-    ObjectType(
-        "white_and_pink_box",
-        "box",
-        "white",
-        shapes.two_tone_box(0.095, 0.06, 0.05, 0.015, COLORS["pink"]),
-        350,
-        "a white supplement carton with a pink band, 9.5 x 6 x 5 cm",
-        shape="box",
-    )
-)
 
-# Blocks and cubes.
-for _name, _color, _dims, _density, _desc, _cat in [
-    ("wooden_block", "wood", (0.05, 0.05, 0.05), 600, "a 5 cm wooden cube", "block"),
-    ("red_block", "red", (0.05, 0.05, 0.05), 600, "a 5 cm red wooden cube", "block"),
-    ("blue_block", "blue", (0.05, 0.05, 0.05), 600, "a 5 cm blue wooden cube", "block"),
-    ("green_block", "green", (0.05, 0.05, 0.05), 600, "a 5 cm green wooden cube", "block"),
-    ("wooden_bar", "wood", (0.1, 0.04, 0.04), 600, "a 10 x 4 x 4 cm wooden bar", "block"),
-    ("rubiks_cube", "white", (0.057, 0.057, 0.057), 550, "a Rubik's cube, 5.7 cm", "cube"),
-    ("sponge", "yellow", (0.09, 0.06, 0.03), 80, "a kitchen sponge, 9 x 6 x 3 cm", "sponge"),
-]:
-    _register(ObjectType(_name, _cat, _color, shapes.box(*_dims), _density, _desc, shape="box"))
-
-# Cans and bottles.
-_register(
-    ObjectType(
-        "soup_can",
-        "can",
-        "red",
-        shapes.cylinder(0.033, 0.101),
-        700,
-        "a tomato soup can, 6.6 x 10.1 cm",
-        shape="cylinder",
-    )
-)
-_register(
-    ObjectType(
-        "tuna_can", "can", "blue", shapes.cylinder(0.043, 0.034), 800, "a tuna can, 8.6 x 3.4 cm", shape="cylinder"
-    )
-)
-for _name, _color, _cap, _r, _h, _desc in [
-    ("medication_bottle", "orange", "white", 0.02, 0.08, "an orange medication bottle, 4 x 8 cm"),
-    ("white_medication_bottle", "white", "blue", 0.022, 0.085, "a white medication bottle, 4.4 x 8.5 cm"),
-    ("brown_medication_bottle", "brown", "white", 0.021, 0.08, "an amber medication bottle, 4.2 x 8 cm"),
-]:
-    _register(ObjectType(_name, "bottle", _color, shapes.bottle(_r, _h, COLORS[_cap]), 500, _desc, shape="cylinder"))
-
-_register(
-    ObjectType(
-        "mustard_bottle",
-        "bottle",
-        "yellow",
-        shapes.flat_bottle(0.095, 0.058, 0.19, 0.014, COLORS["red"]),
-        450,
-        "a yellow mustard bottle, 9.5 x 5.8 x 19 cm",
-        shape="bottle",
-    )
-)
-_register(
-    ObjectType(
-        "bleach_cleanser",
-        "bottle",
-        "white",
-        shapes.flat_bottle(0.1, 0.067, 0.25, 0.017, COLORS["blue"]),
-        450,
-        "a white bleach cleanser bottle with a blue cap, 10 x 6.7 x 25 cm",
-        shape="bottle",
-    )
-)
-
-# Mugs and cups (containers, ceramic or plastic walls).
-for _color in ("white", "red", "blue", "brown", "yellow", "green"):
-    _register(
-        ObjectType(
-            f"{_color}_mug",
-            "mug",
-            _color,
-            shapes.mug(0.04, 0.095),
-            1800,
-            f"a {_color} ceramic mug with a handle, 8 cm wide, 9.5 cm tall",
-            shape="mug",
-            container=True,
-            interior=shapes.interior_of_cylinder(0.034, 0.008, 0.087),
+def _object_type(entry: Reader) -> ObjectType:
+    color, shade = entry.string("color"), entry.text("shade")
+    for word in (color, shade or color):
+        if word not in COLORS:
+            entry.fail(f"colour {word!r} is not one of {', '.join(COLORS)}")
+    flags = {key: entry.data.get(key, False) for key in ("round", "container", "round_floor")}
+    for key, value in flags.items():
+        if not isinstance(value, bool):
+            entry.fail(f"field {key!r} must be true or false, got {value!r}")
+    try:
+        return ObjectType(
+            entry.string("name"),
+            entry.string("category"),
+            color,
+            _parts(entry),
+            entry.number("density"),
+            entry.string("description"),
+            container=flags["container"],
+            interior=_interior(entry) if "interior" in entry.data else None,
+            friction=entry.number("friction", 1.0),
+            round=flags["round"],
+            round_floor=flags["round_floor"],
+            shape=entry.string("shape"),
+            shade=shade,
         )
-    )
-for _color in ("brown", "blue", "white", "green", "red"):
-    _register(
-        ObjectType(
-            f"{_color}_cup",
-            "cup",
-            _color,
-            shapes.cup(0.028, 0.038, 0.09),
-            1100,
-            f"a {_color} plastic cup, 7.6 cm at the rim, 9 cm tall",
-            shape="cup",
-            container=True,
-            interior=shapes.interior_of_cylinder(0.028, 0.006, 0.084),
-        )
-    )
+    except ValueError as exc:
+        entry.fail(str(exc))
 
-_register(
-    ObjectType(
-        "white_and_yellow_mug",
-        "mug",
-        "white",
-        shapes.mug(0.04, 0.095, accent=COLORS["yellow"]),
-        1800,
-        "a white ceramic mug, yellow inside and on its handle, 8 cm wide, 9.5 cm tall",
-        shape="mug",
-        container=True,
-        interior=shapes.interior_of_cylinder(0.034, 0.008, 0.087),
-    )
-)
-_register(
-    ObjectType(
-        "white_porcelain_mug",
-        "mug",
-        "white",
-        shapes.mug(0.04, 0.095),
-        2000,
-        "a white porcelain coffee mug with a handle, 8 cm wide, 9.5 cm tall",
-        shape="mug",
-        container=True,
-        interior=shapes.interior_of_cylinder(0.034, 0.008, 0.087),
-    )
-)
-_register(
-    ObjectType(
-        "brown_ceramic_cup",
-        "cup",
-        "brown",
-        shapes.cup(0.028, 0.038, 0.09),
-        1500,
-        "a brown ceramic cup without a handle, 7.6 cm at the rim, 9 cm tall",
-        shape="cup",
-        container=True,
-        interior=shapes.interior_of_cylinder(0.028, 0.006, 0.084),
-    )
-)
 
-# Plates, saucers, bowls, the footed bowl and the basket.
-for _color in ("white", "blue", "red", "green", "yellow"):
-    _register(
-        ObjectType(
-            f"{_color}_plate",
-            "plate",
-            _color,
-            shapes.plate(0.11),
-            1800,
-            f"a {_color} plate, 22 cm across",
-            shape="flat",
-            container=True,
-            interior=((-0.08, -0.08, 0.008), (0.08, 0.08, 0.1)),
-            round_floor=True,
+def _parts(entry: Reader) -> tuple[Part, ...]:
+    """The parts of the entry's design: its recipe called with its parameters (colour names made colours)."""
+    design = entry.required("design")
+    if not isinstance(design, dict) or design.get("kind") not in DESIGNS:
+        kind = design.get("kind") if isinstance(design, dict) else design
+        entry.fail(f"design kind {kind!r} is not one of {', '.join(sorted(DESIGNS))}")
+    recipe = DESIGNS[design["kind"]]
+    parameters = inspect.signature(recipe).parameters
+    arguments = {k: v for k, v in design.items() if k != "kind"}
+    unknown = sorted(set(arguments) - set(parameters))
+    missing = [p for p, spec in parameters.items() if spec.default is inspect.Parameter.empty and p not in arguments]
+    if unknown or missing:
+        entry.fail(
+            f"design {design['kind']!r} takes {', '.join(parameters) or 'no parameters'}"
+            + (f"; unknown: {', '.join(unknown)}" if unknown else "")
+            + (f"; missing: {', '.join(missing)}" if missing else "")
         )
-    )
-_register(
-    ObjectType(
-        "white_serving_plate",
-        "plate",
-        "white",
-        shapes.plate(0.16, rim=0.026),
-        1800,
-        "a large white serving plate, 32 cm across",
-        shape="flat",
-        container=True,
-        interior=((-0.12, -0.12, 0.008), (0.12, 0.12, 0.1)),
-        round_floor=True,
-    )
-)
-_register(
-    ObjectType(
-        "white_ceramic_plate",
-        "plate",
-        "white",
-        shapes.square_plate(0.265, 0.22, 0.012),
-        2000,
-        "a white porcelain dinner plate with a square rim, 26.5 cm square",
-        shape="flat",
-        container=True,
-        interior=((-0.11, -0.11, 0.008), (0.11, 0.11, 0.1)),
-    )
-)
-_register(
-    ObjectType(
-        "turquoise_salad_plate",
-        "plate",
-        "turquoise",
-        shapes.plate(0.105, rim=0.02),
-        1800,
-        "a turquoise salad plate, 21 cm across",
-        shape="flat",
-        container=True,
-        interior=((-0.075, -0.075, 0.008), (0.075, 0.075, 0.1)),
-        round_floor=True,
-    )
-)
-_register(
-    ObjectType(
-        "green_plant_plate",
-        "plate",
-        "green",
-        shapes.plate(0.1, rim=0.02, rim_height=0.02),
-        1200,
-        "an avocado-green plant saucer plate, 20 cm across",
-        shape="flat",
-        container=True,
-        interior=((-0.07, -0.07, 0.008), (0.07, 0.07, 0.1)),
-        round_floor=True,
-    )
-)
-_register(
-    ObjectType(
-        "red_plant_saucer",
-        "saucer",
-        "red",
-        shapes.square_saucer(0.19, 0.025, 0.006),
-        1200,
-        "a coral-red square plant saucer, 19 cm square, 2.5 cm deep",
-        shape="flat",
-        container=True,
-        interior=((-0.088, -0.088, 0.006), (0.088, 0.088, 0.1)),
-    )
-)
-for _color in ("white", "blue", "pink"):
-    _register(
-        ObjectType(
-            f"{_color}_saucer",
-            "saucer",
-            _color,
-            shapes.plate(0.075, rim=0.015, rim_height=0.012),
-            1800,
-            f"a {_color} saucer, 15 cm across",
-            shape="flat",
-            container=True,
-            interior=((-0.05, -0.05, 0.008), (0.05, 0.05, 0.08)),
-            round_floor=True,
-        )
-    )
-for _color in ("white", "blue", "green", "red"):
-    _register(
-        ObjectType(
-            f"{_color}_bowl",
-            "bowl",
-            _color,
-            shapes.bowl(0.05, 0.085, 0.065),
-            1800,
-            f"a {_color} bowl, 17 cm across, 6.5 cm deep",
-            shape="bowl",
-            container=True,
-            interior=((-0.055, -0.055, 0.008), (0.055, 0.055, 0.1)),
-            round_floor=True,
-        )
-    )
-_register(
-    ObjectType(
-        "red_plastic_bowl",
-        "bowl",
-        "red",
-        shapes.bowl(0.04, 0.079, 0.053),
-        1100,
-        "a red plastic bowl, 16 cm across, 5.3 cm deep",
-        shape="bowl",
-        container=True,
-        interior=((-0.05, -0.05, 0.008), (0.05, 0.05, 0.09)),
-        round_floor=True,
-    )
-)
-_register(
-    ObjectType(
-        "footed_bowl",
-        "footed bowl",
-        "sand",
-        shapes.footed_bowl(),
-        1800,
-        "a sand-coloured footed bowl on a short stem, 19 cm across, 8.5 cm deep",
-        shape="bowl",
-        container=True,
-        interior=((-0.06, -0.06, 0.058), (0.06, 0.06, 0.18)),
-        round_floor=True,
-    )
-)
-_register(
-    ObjectType(
-        "basket",
-        "basket",
-        "tan",
-        shapes.basket(),
-        500,
-        "a woven basket, 34 x 26 x 13 cm",
-        shape="basket",
-        container=True,
-        interior=((-0.16, -0.12, 0.008), (0.16, 0.12, 0.2)),
-    )
-)
+    for key, value in arguments.items():
+        if "rgba" in key or key == "accent":
+            if value not in COLORS:
+                entry.fail(f"design parameter {key!r}: colour {value!r} is not one of {', '.join(COLORS)}")
+            arguments[key] = COLORS[value]
+        elif not isinstance(value, int | float):
+            entry.fail(f"design parameter {key!r} must be a number, got {value!r}")
+    return recipe(**arguments)
 
-_register(
-    ObjectType(
-        "basket_with_fabric_liner",
-        "basket",
-        "tan",
-        shapes.lined_basket(0.28, 0.21, 0.13),
-        500,
-        "a small natural-finish basket with a fabric liner, 28 x 21 x 13 cm",
-        shape="basket",
-        container=True,
-        interior=((-0.13, -0.095, 0.008), (0.13, 0.095, 0.2)),
-    )
-)
 
-# Toys.
-_register(
-    ObjectType(
-        "toy_bus",
-        "toy bus",
-        "yellow",
-        shapes.toy_vehicle(0.14, 0.05, 0.06, 0.012, cabin=False),
-        400,
-        "a yellow toy bus, 14 cm long",
-        shape="toy",
-    )
-)
-_register(
-    ObjectType(
-        "toy_car",
-        "toy car",
-        "red",
-        shapes.toy_vehicle(0.1, 0.045, 0.045, 0.011, cabin=True),
-        400,
-        "a red toy car, 10 cm long",
-        shape="toy",
-    )
-)
+def _interior(entry: Reader) -> tuple[tuple[float, ...], tuple[float, ...]]:
+    """Where held things go: ``{box: [lower, upper]}``, or the box inscribed in ``{cylinder: {radius, z0,
+    height}}``."""
+    interior = entry.data["interior"]
+    if isinstance(interior, dict) and set(interior) == {"box"}:
+        box = Reader(
+            entry.source,
+            entry.entry,
+            {"lower": interior["box"][0], "upper": interior["box"][1]}
+            if isinstance(interior["box"], list) and len(interior["box"]) == 2
+            else {},
+            {"lower", "upper"},
+            entry.error,
+        )
+        return box.vector("lower", (3,)), box.vector("upper", (3,))
+    if isinstance(interior, dict) and set(interior) == {"cylinder"} and isinstance(interior["cylinder"], dict):
+        cylinder = Reader(entry.source, entry.entry, interior["cylinder"], {"radius", "z0", "height"}, entry.error)
+        return designs.interior_of_cylinder(cylinder.number("radius"), cylinder.number("z0"), cylinder.number("height"))
+    entry.fail(f"interior must be {{box: [lower, upper]}} or {{cylinder: {{radius, z0, height}}}}, got {interior!r}")
 
 
 def object_types() -> dict[str, ObjectType]:
-    """Every registered object type by name."""
-    return dict(_LIBRARY)
+    """Every object type of the catalogue by name."""
+    return dict(_library())
 
 
 def get_object_type(name: str) -> ObjectType:
     """The object type ``name``; raises ``KeyError`` listing the closest valid names."""
+    library = _library()
     try:
-        return _LIBRARY[name]
+        return library[name]
     except KeyError:
-        close = did_you_mean(name, _LIBRARY, n=4)
-        hint = f"; {close}" if close else f"; valid types: {', '.join(sorted(_LIBRARY))}"
+        close = did_you_mean(name, library, n=4)
+        hint = f"; {close}" if close else f"; valid types: {', '.join(sorted(library))}"
         raise KeyError(f"unknown object type {name!r}{hint}") from None
