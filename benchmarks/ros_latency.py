@@ -18,7 +18,8 @@ import time
 import numpy as np
 
 from roboscript.backends.mujoco_backend import MujocoBackend
-from roboscript.trajectory import JointTrajectory, min_jerk_through
+from roboscript.planning.timing import time_parameterize
+from roboscript.trajectory import JointTrajectory
 
 WORLD = "world_2_pick_and_place"
 
@@ -28,7 +29,7 @@ def _short(backend, sign: float) -> JointTrajectory:
     robot = backend.robot
     target = q.copy()
     target[0] += sign * 0.05
-    return min_jerk_through(np.array([q, target]), np.array(robot.max_velocity), np.array(robot.max_acceleration), 0.5)
+    return time_parameterize(np.array([q, target]), np.array(robot.max_velocity), np.array(robot.max_acceleration), 0.5)
 
 
 def _measure(backend, repeats: int) -> dict[str, float]:

@@ -9,6 +9,7 @@ from __future__ import annotations
 
 import importlib.util
 import time
+from itertools import pairwise
 
 import mujoco
 import numpy as np
@@ -17,6 +18,7 @@ import pytest
 from roboscript.drivers.base import Driver
 from roboscript.geometry import matrix_to_quat
 from roboscript.sim.world import SimWorld
+from roboscript.trajectory import JointTrajectory, scaled_limits
 
 # Every arm; the FR3's model comes with the franky extra, and its cases are skipped where that is not installed.
 ARMS = (
@@ -101,3 +103,50 @@ def stack_on(tools: dict, thing: str, base: str, lift: float = 0.1) -> None:
     tools["open_gripper"]()
     tools["detach_object"](thing)
     tools["move_in_direction"]([0, 0, 1], 0.1)
+
+
+# Peak speed and acceleration of the quintic rest-to-rest profile s(u) = 10u^3 - 15u^4 + 6u^5, per unit distance
+# and unit time.
+MIN_JERK_PEAK_VELOCITY = 1.875
+MIN_JERK_PEAK_ACCELERATION = 5.7735
+
+
+def min_jerk_through(
+    waypoints: np.ndarray,
+    max_velocity: np.ndarray,
+    max_acceleration: np.ndarray,
+    speed_scale: float = 1.0,
+    sample_dt: float = 0.01,
+) -> JointTrajectory:
+    """Test data: a rest-to-rest quintic (minimum-jerk) motion through each waypoint in turn, for tests that drive
+    an arm without a planner.
+
+    Each segment lasts long enough that no joint exceeds ``speed_scale`` times its velocity and acceleration
+    limits. The result is sampled every ``sample_dt`` seconds.
+    """
+    waypoints = np.atleast_2d(np.asarray(waypoints, dtype=float))
+    if len(waypoints) < 2:
+        raise ValueError("min_jerk_through needs at least two waypoints")
+    vmax, amax = scaled_limits(max_velocity, max_acceleration, speed_scale)
+    times, positions, velocities = [0.0], [waypoints[0]], [np.zeros(waypoints.shape[1])]
+    t0 = 0.0
+    for a, b in pairwise(waypoints):
+        delta = b - a
+        dist = np.abs(delta)
+        duration = float(
+            max(
+                np.max(MIN_JERK_PEAK_VELOCITY * dist / vmax),
+                np.max(np.sqrt(MIN_JERK_PEAK_ACCELERATION * dist / amax)),
+                sample_dt,
+            )
+        )
+        n = max(2, int(np.ceil(duration / sample_dt)))
+        for k in range(1, n + 1):
+            u = k / n
+            s = 10 * u**3 - 15 * u**4 + 6 * u**5
+            ds = (30 * u**2 - 60 * u**3 + 30 * u**4) / duration
+            times.append(t0 + u * duration)
+            positions.append(a + s * delta)
+            velocities.append(ds * delta)
+        t0 += duration
+    return JointTrajectory(np.array(times), np.array(positions), np.array(velocities))

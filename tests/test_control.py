@@ -4,11 +4,11 @@ import mujoco
 import numpy as np
 import pytest
 
-from helpers import ARMS, tcp_ik
+from helpers import ARMS, min_jerk_through, tcp_ik
 from roboscript.backends import BackendError
 from roboscript.backends.mujoco_backend import MujocoBackend
 from roboscript.sim.world_file import parse_world
-from roboscript.trajectory import JointTrajectory, min_jerk_through
+from roboscript.trajectory import JointTrajectory
 
 ROBOTS = ARMS
 TABLE = 0.82

@@ -17,13 +17,13 @@ pytest.importorskip("franky_sim", reason="the franky extra is not installed (mak
 
 import yaml
 
+from helpers import min_jerk_through
 from roboscript.backends.franky import franky_backend
 from roboscript.bench.tasks import get_task
 from roboscript.drivers.base import DriverError
 from roboscript.frankysim.launch import FrankySim
 from roboscript.robot_config import config_path, franky_at, load_robot_config
 from roboscript.robots import get_robot
-from roboscript.trajectory import min_jerk_through
 
 BASE = (-0.45, 0.0, 0.82)
 

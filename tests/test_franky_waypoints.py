@@ -5,9 +5,10 @@ from __future__ import annotations
 
 import numpy as np
 
+from helpers import min_jerk_through
 from roboscript.drivers.franky import waypoint_samples
 from roboscript.robots import get_robot
-from roboscript.trajectory import JointTrajectory, min_jerk_through
+from roboscript.trajectory import JointTrajectory
 
 
 def _plan() -> JointTrajectory:

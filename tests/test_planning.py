@@ -21,10 +21,9 @@ from roboscript.planning import (
     cartesian_path,
     ik_solutions,
     planner_names,
-    solve_ik,
     time_parameterize,
 )
-from roboscript.planning.approaches import straight_approach
+from roboscript.planning.approaches import approaches
 from roboscript.planning.ground_truth_scene import ground_truth_motion
 from roboscript.planning.ik import TCP_POSE_COLLIDES, IKSearch
 from roboscript.planning.planner import (
@@ -65,7 +64,7 @@ def test_fk_of_ik_is_within_1mm_and_1_degree(table_world):
     home = backend.joint_positions()
     for _ in range(15):
         target = kinematics.fk(rng.uniform(kinematics.lower, kinematics.upper))
-        q = solve_ik(kinematics, target, home)
+        q = ik_solutions(kinematics, target, home)[0]
         reached = kinematics.fk(q)
         assert np.linalg.norm(reached.position - target.position) < 1e-3
         assert np.degrees(rotation_angle_between(reached.quaternion, target.quaternion)) < 1.0
@@ -364,7 +363,7 @@ def test_straight_approach_ends_on_the_targets_branch_along_a_line(robot):
     """Near the base, a vertical approach passes close to a singularity: the approach must still be a line."""
     _, motion = planner_for(objects_world(), robot)
     target = Transform(np.array([-0.15, -0.1, TABLE + 0.03]), DOWN)
-    goal, approach = straight_approach(motion, target, 0.1)
+    goal, approach = approaches(motion, target, 0.1, first=True)[0]
     assert approach is not None
     np.testing.assert_allclose(approach[-1], goal)
     start = motion.kinematics.fk(approach[0]).position

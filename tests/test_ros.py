@@ -26,6 +26,7 @@ import yaml
 
 pytest.importorskip("rospy", reason="ROS 1 is not installed here (scripts/setup.sh installs it on Debian)")
 
+from helpers import min_jerk_through
 from roboscript.assembly import build_tools
 from roboscript.backends.base import BackendError
 from roboscript.backends.driven import MotionRefused
@@ -38,7 +39,7 @@ from roboscript.ros.driver import _advertised
 from roboscript.ros.launch import SimProcess, start_master, start_sim
 from roboscript.rossim.server import DISTURB_TOPIC
 from roboscript.sim.world_catalog import load_world
-from roboscript.trajectory import JointTrajectory, min_jerk_through
+from roboscript.trajectory import JointTrajectory
 
 WORLD = "world_2_pick_and_place"
 REAL_TIME_FACTOR = 2.0

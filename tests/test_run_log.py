@@ -8,11 +8,11 @@ import json
 import numpy as np
 import pytest
 
+from helpers import min_jerk_through
 from roboscript.backends.logged import LoggedBackend
 from roboscript.backends.mujoco_backend import MujocoBackend
 from roboscript.replay import read_run_log, replay_on_twin, replay_report
 from roboscript.run_log import JsonRunLog, logged_namespace, read_json_log
-from roboscript.trajectory import min_jerk_through
 
 WORLD = "world_2_pick_and_place"
 

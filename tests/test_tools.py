@@ -349,18 +349,18 @@ def test_a_handle_met_head_on_at_the_edge_of_reach_is_grasped_and_pulled():
         handle = tools.get_object_center_position("cabinet.handle_1")
         normal = np.asarray(tools.get_plane_normal("cabinet.drawer_1", handle))
         found = []
-        straight_approaches = approach_search.straight_approaches
+        straight_lines = approach_search.straight_lines
 
         def recording(motion, target, distance, *args, **kwargs):  # the real search, its answers kept
-            options = straight_approaches(motion, target, distance, *args, **kwargs)
+            options = straight_lines(motion, target, distance, *args, **kwargs)
             found.append((target.rotation[:, 2], approach_search.approach_length(motion, options[0][1])))
             return options
 
-        approach_search.straight_approaches = recording
+        approach_search.straight_lines = recording
         try:
             chosen = tools.parse_horizontal_grasp_pose("cabinet.handle_1", approach_direction=-normal)
         finally:
-            approach_search.straight_approaches = straight_approaches
+            approach_search.straight_lines = straight_lines
         approach = chosen.rotation_matrix()[:, 2]
         assert float(approach @ -normal) >= np.cos(0.8) - 1e-6  # within the preferred cone
         nearest = [length for axis, length in found if float(axis @ -normal) >= float(found[0][0] @ -normal) - 1e-6]

@@ -1,21 +1,15 @@
 """Joint trajectories as time-stamped points, the form a real arm's trajectory controller accepts.
 
 A :class:`JointTrajectory` holds positions and velocities at increasing times and is sampled by cubic Hermite
-interpolation between them. :func:`min_jerk_through` makes one through waypoints, stopping at each, within
-per-joint velocity and acceleration limits (the planning layer brings better time parameterisations).
+interpolation between them; :func:`roboscript.planning.timing.time_parameterize` makes one along a planned path
+within per-joint velocity and acceleration limits.
 """
 
 from __future__ import annotations
 
 from dataclasses import dataclass
-from itertools import pairwise
 
 import numpy as np
-
-# Peak speed and acceleration of the quintic rest-to-rest profile s(u) = 10u^3 - 15u^4 + 6u^5, per unit distance
-# and unit time.
-_MIN_JERK_PEAK_VELOCITY = 1.875
-_MIN_JERK_PEAK_ACCELERATION = 5.7735
 
 
 @dataclass(frozen=True)
@@ -88,43 +82,3 @@ def scaled_limits(
     if not 0 < speed_scale <= 1:
         raise ValueError(f"speed_scale must be in (0, 1], got {speed_scale}")
     return np.asarray(max_velocity, dtype=float) * speed_scale, np.asarray(max_acceleration, dtype=float) * speed_scale
-
-
-def min_jerk_through(
-    waypoints: np.ndarray,
-    max_velocity: np.ndarray,
-    max_acceleration: np.ndarray,
-    speed_scale: float = 1.0,
-    sample_dt: float = 0.01,
-) -> JointTrajectory:
-    """A rest-to-rest quintic (minimum-jerk) motion through each waypoint in turn.
-
-    Each segment lasts long enough that no joint exceeds ``speed_scale`` times its velocity and acceleration
-    limits. The result is sampled every ``sample_dt`` seconds.
-    """
-    waypoints = np.atleast_2d(np.asarray(waypoints, dtype=float))
-    if len(waypoints) < 2:
-        raise ValueError("min_jerk_through needs at least two waypoints")
-    vmax, amax = scaled_limits(max_velocity, max_acceleration, speed_scale)
-    times, positions, velocities = [0.0], [waypoints[0]], [np.zeros(waypoints.shape[1])]
-    t0 = 0.0
-    for a, b in pairwise(waypoints):
-        delta = b - a
-        dist = np.abs(delta)
-        duration = float(
-            max(
-                np.max(_MIN_JERK_PEAK_VELOCITY * dist / vmax),
-                np.max(np.sqrt(_MIN_JERK_PEAK_ACCELERATION * dist / amax)),
-                sample_dt,
-            )
-        )
-        n = max(2, int(np.ceil(duration / sample_dt)))
-        for k in range(1, n + 1):
-            u = k / n
-            s = 10 * u**3 - 15 * u**4 + 6 * u**5
-            ds = (30 * u**2 - 60 * u**3 + 30 * u**4) / duration
-            times.append(t0 + u * duration)
-            positions.append(a + s * delta)
-            velocities.append(ds * delta)
-        t0 += duration
-    return JointTrajectory(np.array(times), np.array(positions), np.array(velocities))

@@ -11,6 +11,7 @@ from __future__ import annotations
 import dataclasses
 
 from roboscript.bench.tasks import Task
+from roboscript.bench.trial_world import TrialWorld, attempt_record
 from roboscript.codegen.sandbox import ExecutionResult
 from roboscript.errors import UsageError
 from roboscript.perception.modes import PerceptionMode
@@ -39,19 +40,18 @@ def franky_perception(mode: PerceptionMode) -> PerceptionMode:
     return mode
 
 
-class FrankyTrialWorld:
-    """One attempt's world through libfranka, used as :class:`roboscript.bench.trial._TrialWorld` is."""
+class FrankyTrialWorld(TrialWorld):
+    """One attempt's world served by franky-sim, the tools driving its FR3 through libfranka."""
 
     def __init__(self, spec, task: Task):
         if spec.robot != "fr3":
             raise UsageError(f"--backend franky drives an FR3 through libfranka: pass --robot fr3 (got {spec.robot})")
         if spec.video or spec.record:
             raise UsageError("--video and --record are not taken through libfranka; run the mujoco backend for them")
-        self.spec, self.task = spec, task
-        self.recorder = None
-        self.sim = self.backend = self.cameras = None
+        super().__init__(spec, task)
+        self.sim = self.cameras = None
 
-    def __enter__(self) -> FrankyTrialWorld:
+    def build(self) -> None:
         from roboscript.assembly import build_tools
         from roboscript.backends.franky import franky_backend
         from roboscript.frankysim.launch import FrankySim  # the franky extra's
@@ -59,30 +59,22 @@ class FrankyTrialWorld:
         from roboscript.sim.world_catalog import load_world
 
         spec = self.spec
-        try:
-            world = load_world(self.task.world).randomized(spec.seed)
-            self.sim = FrankySim(world=self.task.world, seed=spec.seed)
-            self.mirror = WorldMirror(self.sim, world)
-            self.cameras = MirrorCameras(self.mirror)
-            self.backend = franky_backend(franky_sim_config(self.sim.host), cameras=self.cameras)
-            tools = build_tools(self.backend, franky_perception(spec.perception), seed=spec.seed, scene=world)
-            self.namespace = tools.namespace()
-        except BaseException:
-            self.__exit__()
-            raise
-        self.sim_start = self.backend.time()
-        return self
+        world = load_world(self.task.world).randomized(spec.seed)
+        self.sim = FrankySim(world=self.task.world, seed=spec.seed)
+        self.mirror = WorldMirror(self.sim, world)
+        self.cameras = MirrorCameras(self.mirror)
+        self.backend = franky_backend(franky_sim_config(self.sim.host), cameras=self.cameras)
+        tools = build_tools(self.backend, franky_perception(spec.perception), seed=spec.seed, scene=world)
+        self.namespace = tools.namespace()
 
     def judge(self, result: ExecutionResult) -> dict:
-        from roboscript.bench.attempts import attempt_record
-
         self.backend.wait(SETTLE)
         self.mirror.sync()
         truth = self.mirror.ground_truth
         checks = [c.evaluate(truth).to_dict() for c in self.task.build_checks(truth)] if self.spec.world is None else []
         return attempt_record(result, checks, self.backend.time() - self.sim_start)
 
-    def __exit__(self, *exc) -> None:
+    def close(self, built: bool) -> None:
         if self.backend is not None:
             self.backend.close()
         if self.cameras is not None:

@@ -13,7 +13,7 @@ import shutil
 import subprocess
 import tempfile
 
-from roboscript.bench.tasks import Task
+from roboscript.bench.trial_world import TrialWorld, attempt_record
 from roboscript.codegen.sandbox import ExecutionResult
 from roboscript.perception.modes import SEGMENTATION, PerceptionMode, perception_mode
 from roboscript.processes import at_process_exit
@@ -60,14 +60,12 @@ def ros_perception(mode: PerceptionMode) -> PerceptionMode:
     return mode if mode.detector is not None else perception_mode("full", SEGMENTATION)
 
 
-class RosTrialWorld:
-    """One attempt's world through ROS, used as :class:`roboscript.bench.trial._TrialWorld` is."""
+class RosTrialWorld(TrialWorld):
+    """One attempt's world served by ros-sim, the tools on the ROS backend."""
 
-    def __init__(self, spec, task: Task):
-        self.spec, self.task = spec, task
-        self.recorder = None
+    sim = None
 
-    def __enter__(self) -> RosTrialWorld:
+    def build(self) -> None:
         from roboscript.assembly import build_tools
         from roboscript.backends.ros import ros_backend
         from roboscript.ros.launch import start_sim
@@ -77,37 +75,29 @@ class RosTrialWorld:
         if spec.video:
             raise ValueError("--video is not recorded through ROS yet; record the twin with the mujoco backend")
         uri = _process_master()
-        self.sim = self.backend = None
-        try:
-            self.sim = start_sim(
-                self.task.world,
-                spec.robot,
-                uri,
-                REAL_TIME_FACTOR,
-                seed=spec.seed,
-                randomize=True,
-                task=self.task.id if spec.world is None else None,
-                suite=spec.suite,
-            )
-            self.backend = ros_backend(spec.robot_config or ros_config_for(spec.robot))
-            mode = ros_perception(spec.perception)
-            tools = build_tools(self.backend, mode, seed=spec.seed, scene=load_world(self.task.world))
-            self.namespace = tools.namespace()
-        except BaseException:
-            self.__exit__()
-            raise
-        self.sim_start = self.backend.time()
-        return self
+        self.sim = start_sim(
+            self.task.world,
+            spec.robot,
+            uri,
+            REAL_TIME_FACTOR,
+            seed=spec.seed,
+            randomize=True,
+            task=self.task.id if spec.world is None else None,
+            suite=spec.suite,
+        )
+        self.backend = ros_backend(spec.robot_config or ros_config_for(spec.robot))
+        mode = ros_perception(spec.perception)
+        tools = build_tools(self.backend, mode, seed=spec.seed, scene=load_world(self.task.world))
+        self.namespace = tools.namespace()
 
     def judge(self, result: ExecutionResult) -> dict:
-        from roboscript.bench.attempts import attempt_record
         from roboscript.ros.launch import evaluate_on_twin
 
         self.backend.wait(1.0)
         checks = evaluate_on_twin() if self.spec.world is None else []
         return attempt_record(result, checks, self.backend.time() - self.sim_start)
 
-    def __exit__(self, *exc) -> None:
+    def close(self, built: bool) -> None:
         if self.backend is not None:
             self.backend.close()
         if self.sim is not None:

@@ -11,15 +11,15 @@ from collections.abc import Callable
 from dataclasses import asdict, dataclass, field, replace
 from pathlib import Path
 
-from roboscript.bench.attempts import attempt_record
 from roboscript.bench.tasks import DEFAULT_SUITE, Task, free_task, get_task
+from roboscript.bench.trial_world import TrialWorld, attempt_record
 from roboscript.codegen.author import ProgramAuthor
 from roboscript.codegen.execute import check_and_execute
 from roboscript.codegen.outcomes import Outcome
 from roboscript.codegen.sandbox import ExecutionResult, Limits
 from roboscript.llm import LLMError, make_llm
 from roboscript.perception.modes import GROUND_TRUTH, PerceptionMode, perception_mode
-from roboscript.phases import PhaseClock, phase
+from roboscript.phases import PhaseClock
 
 BACKENDS = ("mujoco", "ros", "franky")
 
@@ -206,42 +206,30 @@ REPAIRABLE = frozenset(
 )
 
 
-class _TrialWorld:
-    """A task's world built for one attempt: the backend, the tools, the checks, the video."""
+class SimTrialWorld(TrialWorld):
+    """A task's world simulated here for one attempt: the backend, the tools, the checks, the video."""
 
-    def __init__(self, spec: TrialSpec, task: Task):
-        self.spec, self.task = spec, task
+    recorder = recording = None
 
-    def __enter__(self) -> _TrialWorld:
-        with phase("build"):
-            return self._build()
-
-    def _build(self) -> _TrialWorld:
+    def build(self) -> None:
         from roboscript.assembly import build_tools
         from roboscript.backends.mujoco_backend import MujocoBackend
 
         spec = self.spec
         self.backend = MujocoBackend(self.task.world, robot=spec.robot, seed=spec.seed, randomize=True)
-        self.recorder = self.recording = None
-        try:
-            self.ground_truth = self.backend.ground_truth
-            self.checks = self.task.build_checks(self.ground_truth)
-            tools = build_tools(self.backend, spec.perception, seed=spec.seed)
-            self.namespace = tools.namespace()
-            if spec.record:
-                from roboscript.record.recording import TrialRecording
+        self.ground_truth = self.backend.ground_truth
+        self.checks = self.task.build_checks(self.ground_truth)
+        tools = build_tools(self.backend, spec.perception, seed=spec.seed)
+        self.namespace = tools.namespace()
+        if spec.record:
+            from roboscript.record.recording import TrialRecording
 
-                self.recording = TrialRecording(self.backend, tools, _partial(spec.record))
-                self.namespace = self.recording.wrap(self.namespace)
-            if spec.video:
-                from roboscript.bench.video import VideoRecorder
+            self.recording = TrialRecording(self.backend, tools, _partial(spec.record))
+            self.namespace = self.recording.wrap(self.namespace)
+        if spec.video:
+            from roboscript.bench.video import VideoRecorder
 
-                self.recorder = VideoRecorder(self.backend, _partial(spec.video), camera=spec.video_camera)
-        except BaseException:
-            self.backend.close()
-            raise
-        self.sim_start = self.backend.time()
-        return self
+            self.recorder = VideoRecorder(self.backend, _partial(spec.video), camera=spec.video_camera)
 
     def judge(self, result: ExecutionResult) -> dict:
         """The attempt's outcome once what was let go has come to rest."""
@@ -251,14 +239,16 @@ class _TrialWorld:
             self.recording.log_checks(checks)
         return attempt_record(result, checks, self.backend.time() - self.sim_start)
 
-    def __exit__(self, *exc) -> None:
-        if self.recorder is not None:
+    def close(self, built: bool) -> None:
+        # A world that was not built in full keeps no video and no recording: nothing of it ran.
+        if built and self.recorder is not None:
             self.recorder.close()
             os.replace(self.recorder.path, self.spec.video)
-        if self.recording is not None:
+        if built and self.recording is not None:
             self.recording.close()
             os.replace(self.recording.path, self.spec.record)
-        self.backend.close()
+        if self.backend is not None:
+            self.backend.close()
 
 
 def _trial_world(spec: TrialSpec, task: Task):
@@ -270,7 +260,7 @@ def _trial_world(spec: TrialSpec, task: Task):
         from roboscript.bench.franky_trial import FrankyTrialWorld
 
         return FrankyTrialWorld(spec, task)
-    return _TrialWorld(spec, task)
+    return SimTrialWorld(spec, task)
 
 
 def _partial(video: str) -> str:

@@ -11,7 +11,7 @@ from roboscript.planning.errors import (
     TrackingError,
     UnknownPlannerError,
 )
-from roboscript.planning.ik import IKSearch, ik_solutions, solve_ik
+from roboscript.planning.ik import IKSearch, ik_solutions
 from roboscript.planning.kinematics import ArmKinematics
 from roboscript.planning.motion import MotionPlanner
 from roboscript.planning.planner import JointPath, JointPlanner, planner_names
@@ -38,6 +38,5 @@ __all__ = [
     "cartesian_path",
     "ik_solutions",
     "planner_names",
-    "solve_ik",
     "time_parameterize",
 ]

@@ -17,25 +17,8 @@ WIDE_APPROACH_SEARCH = IKSearch(8, 80, 8)  # see approaches
 MIN_APPROACH_FRACTION = 0.5  # of the pre-grasp distance: the least straight approach a grasp is moved in along
 
 
-def straight_approach(
-    motion: MotionPlanner,
-    target: Transform,
-    distance: float,
-    reference: np.ndarray | None = None,
-    search: IKSearch = APPROACH_SEARCH,
-) -> tuple[np.ndarray, np.ndarray | None]:
-    """A configuration at ``target`` and a straight approach to it from ``distance`` back along the TCP's z:
-    the first of :func:`straight_approaches`."""
-    return straight_approaches(motion, target, distance, reference, search, first=True)[0]
-
-
-def straight_approaches(
-    motion: MotionPlanner,
-    target: Transform,
-    distance: float,
-    reference: np.ndarray | None = None,
-    search: IKSearch = APPROACH_SEARCH,
-    first: bool = False,
+def straight_lines(
+    motion: MotionPlanner, target: Transform, distance: float, reference: np.ndarray, search: IKSearch, first: bool
 ) -> list[tuple[np.ndarray, np.ndarray | None]]:
     """Configurations at ``target``, each with a straight approach to it from ``distance`` back along the
     TCP's z, nearest ``reference`` first.
@@ -49,7 +32,6 @@ def straight_approaches(
     line clear for at least :data:`MIN_APPROACH_FRACTION` of ``distance``; or, when every line is blocked
     sooner, the nearest solution with None. Raises :class:`IKError` if ``target`` has no solution.
     """
-    reference = motion.backend.joint_positions() if reference is None else reference
     solutions = ik_solutions(motion.kinematics, target, reference, motion.scene, search)
     preferred = motion.preferences.preferred_for(target, motion.scene.is_valid)
     if preferred is not None:  # chosen for what follows the grasp (a handle's branch that can swing its door)
@@ -80,13 +62,14 @@ def approaches(
     search: IKSearch = APPROACH_SEARCH,
     first: bool = False,
 ) -> list[tuple[np.ndarray, np.ndarray | None]]:
-    """:func:`straight_approaches` (from the present configuration by default), searching
+    """Configurations at ``target``, each with a straight approach to it from ``distance`` back along the TCP's z
+    (:func:`straight_lines`, from the present configuration by default), searching
     :data:`WIDE_APPROACH_SEARCH`'s IK branches where the nearest have no clear line of the full ``distance``: they
     may all be walled in (an arm that has just put something down beside the cabinet)."""
     reference = motion.sync() if reference is None else reference
-    options = straight_approaches(motion, target, distance, reference, search, first)
+    options = straight_lines(motion, target, distance, reference, search, first)
     if approach_length(motion, options[0][1]) < distance - 1e-3:
-        wider = straight_approaches(motion, target, distance, reference, WIDE_APPROACH_SEARCH, first)
+        wider = straight_lines(motion, target, distance, reference, WIDE_APPROACH_SEARCH, first)
         if approach_length(motion, wider[0][1]) > approach_length(motion, options[0][1]):
             options = wider
     return options

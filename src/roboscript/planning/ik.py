@@ -32,25 +32,6 @@ class IKSearch:
 DEFAULT_SEARCH = IKSearch()
 
 
-def solve_ik(
-    kinematics: ArmKinematics,
-    target: Transform,
-    reference: np.ndarray,
-    scene: PlanningScene | None = None,
-    search: IKSearch = DEFAULT_SEARCH,
-    seed: int = 0,
-) -> np.ndarray:
-    """A joint configuration that puts the TCP at ``target``, collision-free in ``scene`` if one is given.
-
-    The first seed is ``reference`` (usually the current configuration), the others are drawn uniformly within
-    the joint limits (deterministically, from ``seed``), as many as ``search`` says (a redundant arm may have free
-    solutions on few branches only).
-    Among the solutions found, the one nearest ``reference`` is returned. Raises :class:`IKError` with the
-    nearest pose reached, or with the collisions of the solutions.
-    """
-    return ik_solutions(kinematics, target, reference, scene, search, seed)[0]
-
-
 def ik_solutions(
     kinematics: ArmKinematics,
     target: Transform,
@@ -60,9 +41,14 @@ def ik_solutions(
     seed: int = 0,
     seeds: Sequence[np.ndarray] = (),
 ) -> list[np.ndarray]:
-    """Up to ``search.solutions`` collision-free solutions, nearest ``reference`` first; see :func:`solve_ik`.
-    ``seeds``: configurations tried right after ``reference``, before the random ones (near the edge of the
-    arm's reach, random seeds may all miss a pose that a configuration chosen for a pose nearby reaches).
+    """Joint configurations that put the TCP at ``target``, collision-free in ``scene`` if one is given: up to
+    ``search.solutions`` of them, nearest ``reference`` first.
+
+    The first seed is ``reference`` (usually the current configuration), then ``seeds`` (near the edge of the arm's
+    reach, random seeds may all miss a pose that a configuration chosen for a pose nearby reaches), then seeds drawn
+    uniformly within the joint limits (deterministically, from ``seed``), as many as ``search`` says (a redundant
+    arm may have free solutions on few branches only). Raises :class:`IKError` with the nearest pose reached, or
+    with the collisions of the solutions.
 
     An arm with a closed form (:attr:`ArmKinematics.closed_form`) has all its solutions at once, and the nearest
     free ones are returned with no seeds drawn. Where it has none within the limits and tolerances, one iterative

@@ -24,7 +24,7 @@ from roboscript.planning.errors import (
     TrackingError,
 )
 from roboscript.planning.goal_preferences import GoalPreferences
-from roboscript.planning.ik import DEFAULT_SEARCH, IKSearch, ik_solutions, solve_ik
+from roboscript.planning.ik import DEFAULT_SEARCH, IKSearch, ik_solutions
 from roboscript.planning.kinematics import ArmKinematics
 from roboscript.planning.planner import JointPath, JointPlanner, pose_distance, same_pose, seed_sampling, whole_turns
 from roboscript.planning.scene import PlanningScene
@@ -218,9 +218,10 @@ class MotionPlanner:
     ) -> np.ndarray:
         """A collision-free configuration for the TCP at ``pose``, nearest ``reference`` (default: current).
 
-        A smaller ``search`` makes a quick screen of many candidate poses; see :func:`solve_ik`."""
+        A smaller ``search`` makes a quick screen of many candidate poses; see
+        :func:`~roboscript.planning.ik.ik_solutions`."""
         reference = self.backend.joint_positions() if reference is None else reference
-        return solve_ik(self.kinematics, pose, reference, self.scene, search)
+        return ik_solutions(self.kinematics, pose, reference, self.scene, search)[0]
 
     def ik_choices(
         self, pose: Transform, reference: np.ndarray, search: IKSearch = DEFAULT_SEARCH
