@@ -54,3 +54,22 @@ def did_you_mean(word: object, choices: Iterable[str], n: int = 3, cutoff: float
     if not close:
         return ""
     return f"did you mean {', '.join(repr(c) if quoted else c for c in close)}?"
+
+
+def unknown_name(
+    what: str, name: object, choices: Iterable[str], listing: str | None = None, n: int = 3, cutoff: float = 0.5
+) -> str:
+    """The one message that refuses a name: ``unknown <what> <name>; did you mean <closest>? <listing>``, the
+    listing being every valid choice unless ``listing`` says otherwise (how to list them where they are many)."""
+    choices = list(choices)
+    close = did_you_mean(name, choices, n=n, cutoff=cutoff)
+    listing = f"valid: {', '.join(choices) or 'none'}" if listing is None else listing
+    return f"unknown {what} {name!r}; " + (f"{close} " if close else "") + listing
+
+
+class UnknownNameError(UsageError, KeyError):
+    """A name that names nothing of its kind (a world, a suite, a study, an object type); the message
+    (:func:`unknown_name`) suggests the closest and says what is valid."""
+
+    def __str__(self) -> str:  # KeyError would print the message in quotes
+        return str(self.args[0])

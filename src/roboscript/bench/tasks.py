@@ -14,7 +14,7 @@ from pathlib import Path
 from roboscript.bench.task_file import Task, TaskFileError, load_suite_file
 from roboscript.codegen.prompt import task_query
 from roboscript.datafile import names_a_file
-from roboscript.errors import did_you_mean
+from roboscript.errors import UnknownNameError, did_you_mean, unknown_name
 from roboscript.sim.world_catalog import load_world
 
 DEFAULT_SUITE = "paper"
@@ -38,9 +38,8 @@ def suite_path(suite: str) -> Path:
         return Path(suite).resolve()
     path = _suite_dir() / f"{suite}.yaml"
     if not path.is_file():
-        close = did_you_mean(suite, suite_names(), n=2, cutoff=0.4)
-        hint = f"{close} " if close else ""
-        raise KeyError(f"unknown suite {suite!r}; {hint}suites: {', '.join(suite_names())}, or a suite file's path")
+        listing = f"suites: {', '.join(suite_names())}, or a suite file's path"
+        raise UnknownNameError(unknown_name("suite", suite, suite_names(), listing, n=2, cutoff=0.4))
     return path
 
 
@@ -70,7 +69,7 @@ def get_task(task_id: str, suite: str = DEFAULT_SUITE) -> Task:
             listing = f"Tasks: {', '.join(tasks)}"
         else:
             listing = f"The suite has {len(tasks)} tasks: `roboscript tasks --suite {suite}` lists them"
-        raise KeyError(f"no task {task_id!r} in suite {suite!r}{hint}. {listing}")
+        raise UnknownNameError(f"no task {task_id!r} in suite {suite!r}{hint}. {listing}")
     return tasks[task_id]
 
 

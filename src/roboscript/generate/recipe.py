@@ -13,8 +13,9 @@ from pathlib import Path
 from typing import Any
 
 from roboscript.datafile import DataFileError, Reader, names_a_file, read_data_file
-from roboscript.errors import did_you_mean
+from roboscript.errors import unknown_name
 from roboscript.objects import object_types
+from roboscript.objects.library import OBJECT_LISTING
 from roboscript.sim.world_file import VALID_ROBOTS
 
 DEFAULT_RECIPE = "tabletop"
@@ -113,9 +114,7 @@ def _types(entry: Reader, names: Any, what: str) -> tuple[str, ...]:
         entry.fail(f"{what} must be a non-empty list of object types (see `roboscript objects`), got {names!r}")
     for name in names:
         if name not in library:
-            close = did_you_mean(name, library)
-            hint = f"{close} " if close else ""
-            entry.fail(f"{what}: unknown object type {name!r}; {hint}see `roboscript objects` for the list")
+            entry.fail(f"{what}: " + unknown_name("object type", name, library, OBJECT_LISTING))
     return tuple(names)
 
 

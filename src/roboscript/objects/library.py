@@ -13,7 +13,7 @@ from importlib import resources
 import numpy as np
 
 from roboscript.datafile import DataFileError, Reader, read_data_file
-from roboscript.errors import did_you_mean
+from roboscript.errors import UnknownNameError, unknown_name
 from roboscript.objects import designs
 from roboscript.objects.designs import COLORS
 from roboscript.objects.shapes import RGBA, Part, parts_bounds
@@ -81,6 +81,9 @@ class ObjectType:
     def footprint_radius(self) -> float:
         lower, upper = self.bounds
         return float(np.max(np.linalg.norm([[lower[0], lower[1]], [upper[0], upper[1]]], axis=1)))
+
+
+OBJECT_LISTING = "`roboscript objects` lists them"  # what a refusal of an object type's name says of the valid ones
 
 
 class CatalogueFileError(DataFileError):
@@ -222,6 +225,5 @@ def get_object_type(name: str) -> ObjectType:
     try:
         return library[name]
     except KeyError:
-        close = did_you_mean(name, library, n=4)
-        hint = f"; {close}" if close else f"; valid types: {', '.join(sorted(library))}"
-        raise KeyError(f"unknown object type {name!r}{hint}") from None
+        listing = f"valid types: {', '.join(sorted(library))}"
+        raise UnknownNameError(unknown_name("object type", name, library, listing, n=4)) from None

@@ -15,7 +15,7 @@ from typing import Literal
 import mujoco
 import numpy as np
 
-from roboscript.errors import did_you_mean
+from roboscript.errors import UnknownNameError, did_you_mean
 from roboscript.geometry import Transform, quat_from_yaw, quat_to_mujoco
 from roboscript.kept import Kept
 from roboscript.names import kind_of
@@ -65,7 +65,7 @@ class SimWorld:
         except KeyError:
             close = did_you_mean(name, self._by_name, cutoff=0.4)
             hint = f"; {close}" if close else ""
-            raise KeyError(f"no object named {name!r} in world {self.spec.name!r}{hint}") from None
+            raise UnknownNameError(f"no object named {name!r} in world {self.spec.name!r}{hint}") from None
 
     def entity_names(self, kinds: tuple[EntityKind, ...] = ("object", "furniture", "part")) -> list[str]:
         return [e.name for e in self.entities if e.kind in kinds]

@@ -6,7 +6,7 @@ from importlib import resources
 from pathlib import Path
 
 from roboscript.datafile import names_a_file
-from roboscript.errors import did_you_mean
+from roboscript.errors import UnknownNameError, unknown_name
 from roboscript.sim.world_file import WorldSpec, load_world_file
 
 
@@ -23,9 +23,8 @@ def world_path(name: str) -> Path:
     """The file of packaged world ``name``; raises ``KeyError`` naming the valid worlds."""
     path = _world_dir() / f"{name}.yaml"
     if not path.is_file():
-        close = did_you_mean(name, world_names(), cutoff=0.4)
-        hint = f"{close} " if close else ""
-        raise KeyError(f"unknown world {name!r}; {hint}valid worlds: {', '.join(world_names())}")
+        names = world_names()
+        raise UnknownNameError(unknown_name("world", name, names, f"valid worlds: {', '.join(names)}", cutoff=0.4))
     return path
 
 

@@ -27,9 +27,10 @@ from typing import Any
 import numpy as np
 
 from roboscript.datafile import DataFileError, Reader, read_data_file
-from roboscript.errors import did_you_mean
+from roboscript.errors import unknown_name
 from roboscript.names import TABLE, kind_of
 from roboscript.objects import ObjectType, object_types
+from roboscript.objects.library import OBJECT_LISTING
 from roboscript.robots import ROBOTS
 from roboscript.sim.cameras import CameraSpec, default_camera_rig
 from roboscript.sim.furniture import CabinetRow, CabinetSpec, TableSpec
@@ -215,8 +216,7 @@ def _parse_objects(source: str, items: Any, part_names: set[str]) -> tuple[Objec
             r.fail(f"name {name!r} must not contain '.' or '/'")
         type_name = r.string("type")
         if type_name not in library:
-            hint = did_you_mean(type_name, library) or "run `roboscript objects` for the list"
-            r.fail(f"unknown object type {type_name!r}; {hint}")
+            r.fail(unknown_name("object type", type_name, library, OBJECT_LISTING))
         if "on" in r.data and "inside" in r.data:
             r.fail("give either 'on' or 'inside', not both")
         support, kind = "table", "table"

@@ -16,8 +16,9 @@ from string import Template
 from typing import Any
 
 from roboscript.datafile import DataFileError, Reader, names_a_file, read_data_file
-from roboscript.errors import did_you_mean
+from roboscript.errors import UnknownNameError, unknown_name
 from roboscript.objects import object_types
+from roboscript.objects.library import OBJECT_LISTING
 
 PLACEHOLDERS = ("object", "words", "grasp")
 _STUDY_FIELDS = {"study", "description", "objects", "grasps", "templates"}
@@ -85,9 +86,7 @@ def _fill(data: Any, values: dict[str, str]) -> Any:
 def choose(options: dict, key: str, kind: str):
     """``options[key]``; a ``KeyError`` naming the closest keys and all of them where there is none."""
     if key not in options:
-        close = did_you_mean(key, options, n=2)
-        hint = f"{close} " if close else ""
-        raise KeyError(f"unknown {kind} {key!r}; {hint}{kind}s: {', '.join(options)}")
+        raise UnknownNameError(unknown_name(kind, key, options, f"{kind}s: {', '.join(options)}", n=2))
     return options[key]
 
 
@@ -160,9 +159,7 @@ def _parse_objects(entry: Reader, value: Any) -> tuple[str, ...]:
         entry.fail(f"field 'objects' must be 'pickable' or a non-empty list of object types, got {value!r}")
     for name in value:
         if name not in library:
-            close = did_you_mean(name, library)
-            hint = f"; {close}" if close else "; `roboscript objects` lists them"
-            entry.fail(f"objects: unknown object type {name!r}{hint}")
+            entry.fail("objects: " + unknown_name("object type", name, library, OBJECT_LISTING))
     return tuple(value)
 
 
@@ -178,7 +175,6 @@ def load_study(name_or_path: str) -> Study:
     else:
         path = Path(str(resources.files("roboscript") / "study" / f"{name_or_path}.yaml"))
         if not path.is_file():
-            close = did_you_mean(name_or_path, study_names(), n=2, cutoff=0.4)
-            hint = f"{close} " if close else ""
-            raise KeyError(f"unknown study {name_or_path!r}; {hint}studies: {', '.join(study_names())}, or a file")
+            listing = f"studies: {', '.join(study_names())}, or a file"
+            raise UnknownNameError(unknown_name("study", name_or_path, study_names(), listing, n=2, cutoff=0.4))
     return parse_study(read_data_file(path, StudyFileError), str(path))
