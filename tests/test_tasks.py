@@ -172,3 +172,19 @@ def test_the_tasks_command_shows_the_original_queries():
     command = [sys.executable, "-m", "roboscript.cli", "tasks", "--suite", "nope"]
     bad = subprocess.run(command, capture_output=True, text=True, timeout=120)
     assert bad.returncode == 2 and "unknown suite 'nope'" in bad.stderr
+
+
+def test_every_packaged_task_has_its_reference_program_and_a_variant_may_share_another_suites():
+    for suite in suite_names():
+        for task in load_suite(suite).values():
+            assert task.reference_program().strip(), (suite, task.id)  # raises where the file is missing
+    assert load_suite("cluttered")["hard_1"].reference == load_suite("paper")["hard_1"].reference
+
+
+def test_a_reference_field_must_name_a_program_beside_the_suite_file(tmp_path):
+    data = _suite(reference="paper/nothing_here.py")
+    with pytest.raises(TaskFileError, match=r"reference: no program at .*nothing_here\.py"):
+        parse_suite(data, "mine.yaml", base=tmp_path)
+    (tmp_path / "shared.py").write_text("open_gripper()\n")
+    task = parse_suite(_suite(reference="shared.py"), "mine.yaml", base=tmp_path)[0]
+    assert task.reference_program() == "open_gripper()\n"

@@ -45,7 +45,7 @@ CHECK_KINDS = ("in", "on", "near", "at", "joint")
 _QUERY = re.compile(r"^\s*#?\s*objects\s*=\s*\[(?P<names>[^\]]*)\]\s*;\s*#\s?(?P<instruction>.*)$", re.DOTALL)
 _ID = re.compile(r"^[A-Za-z0-9_.-]+$")
 _SUITE_FIELDS = {"suite", "version", "description", "source", "tasks"}
-_TASK_FIELDS = {"id", "label", "world", "query", "checks"}
+_TASK_FIELDS = {"id", "label", "world", "query", "checks", "reference"}
 
 
 class TaskFileError(DataFileError):
@@ -91,7 +91,8 @@ class CheckSpec:
 class Task:
     """A benchmark task: its world, the query an LLM is given, and the checks of its result.
 
-    ``reference``: the file of its verified program (``<suite>/<id>.py`` beside the suite file), if there is one.
+    ``reference``: the file of its verified program (``<suite>/<id>.py`` beside the suite file, or the file the
+    task's ``reference`` field names from there), if there is one.
     """
 
     id: str
@@ -281,6 +282,12 @@ def _parse_task(source: str, index: int, data: Any, suite: str, base: Path, prog
     specs = tuple(_parse_check(source, f"{label}.checks[{k}]", c, world) for k, c in enumerate(checks))
     label_in_source = entry.text("label")
     reference = programs / f"{task_id}.py" if programs is not None else None
+    if "reference" in data:  # another task's program, where it does the same (a suite's variant of a task)
+        if programs is None:
+            entry.fail("field 'reference' needs the suite to be a file, whose folder it is found from")
+        reference = (base / entry.string("reference")).resolve()
+        if not reference.is_file():
+            entry.fail(f"reference: no program at {reference} (give a path from the suite file's folder)")
     return Task(task_id, suite, world_ref, query, specs, label_in_source, reference)
 
 
