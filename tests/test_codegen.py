@@ -15,7 +15,7 @@ from roboscript.api import ToolAPI
 from roboscript.bench.benchmark import run_benchmark
 from roboscript.bench.runner import run_isolated
 from roboscript.bench.tasks import get_task
-from roboscript.bench.trial import TrialSpec
+from roboscript.bench.trial import LLMAuthor, TrialSpec
 from roboscript.codegen.agent import CodeAgent
 from roboscript.codegen.checker import check_program, undefined_calls
 from roboscript.codegen.extract import extract_code
@@ -184,7 +184,7 @@ LIFT = "```python\ndef lift(height):\n    move_in_direction([0, 0, 1], height)\n
 
 def test_an_undefined_helper_is_generated_and_the_task_done_through_a_real_server():
     with ScriptedChatServer([{"text": MAIN}, {"text": HELPER}, {"text": LIFT}]) as server:
-        spec = TrialSpec("simple_0", "panda", 0, 0, program="", timeout=120, llm=f"openai:scripted@{server.url}")
+        spec = TrialSpec("simple_0", "panda", 0, 0, LLMAuthor(f"openai:scripted@{server.url}"), timeout=120)
         (record,) = run_isolated([spec])
     assert record.ok, record.error
     assert record.outcome == Outcome.OK.value and record.success
@@ -225,7 +225,7 @@ def test_a_model_whose_every_helper_calls_new_names_is_asked_a_bounded_number_of
 
 
 def test_a_model_that_cannot_be_reached_is_an_llm_error_trial():
-    spec = TrialSpec("simple_0", "panda", 0, 0, program="", timeout=60, llm="openai:m@http://127.0.0.1:9/v1")
+    spec = TrialSpec("simple_0", "panda", 0, 0, LLMAuthor("openai:m@http://127.0.0.1:9/v1"), timeout=60)
     (record,) = run_isolated([spec])
     assert record.outcome == Outcome.LLM_ERROR.value and "cannot reach" in record.error
     assert not record.success
@@ -260,8 +260,8 @@ def test_checker_errors_are_fed_back_and_the_repaired_program_runs():
     fixed = "```python\n" + get_task("simple_0").reference_program() + "```"
     with ScriptedChatServer([{"text": broken + "```"}, {"text": broken + "```"}, {"text": fixed}]) as server:
         llm = f"openai:scripted@{server.url}"
-        unrepaired = TrialSpec("simple_0", "panda", 0, 0, program="", timeout=120, llm=llm)
-        repaired = TrialSpec("simple_0", "panda", 0, 0, program="", timeout=120, llm=llm, repair_rounds=2)
+        unrepaired = TrialSpec("simple_0", "panda", 0, 0, LLMAuthor(llm), timeout=120)
+        repaired = TrialSpec("simple_0", "panda", 0, 0, LLMAuthor(llm, 2), timeout=120)
         first, second = run_isolated([unrepaired]) + run_isolated([repaired])
     assert first.outcome == Outcome.BAD_ARGUMENTS.value and "has no argument 'obj'" in first.error
     assert first.repairs == 0 and not first.success and first.attempts == []
@@ -317,13 +317,13 @@ def test_an_llm_that_fails_during_repair_leaves_the_attempt_standing_with_the_re
     failing = "```python\nsteps = {}\nnext_step = steps['place']\n```"
     with ScriptedChatServer([{"text": failing}, {"status": 500}]) as server:
         llm = f"openai:scripted@{server.url}"
-        spec = TrialSpec("simple_0", "panda", 0, 0, program="", timeout=60, llm=llm, repair_rounds=2)
+        spec = TrialSpec("simple_0", "panda", 0, 0, LLMAuthor(llm, 2), timeout=60)
         (record,) = run_isolated([spec])
     assert record.outcome == Outcome.RUNTIME_ERROR.value and "KeyError" in record.error
     (attempt,) = record.attempts
     assert attempt["repair_error"].startswith("LLMError:") and "500" in attempt["repair_error"]
     with pytest.raises(ValueError, match="repair rounds must be 0 or more"):
-        TrialSpec("simple_0", "panda", 0, 0, program="", llm=llm, repair_rounds=-1)
+        LLMAuthor(llm, -1)
 
 
 def test_the_prompt_names_every_kind_of_thing_the_gripper_cannot_pick_up():

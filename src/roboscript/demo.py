@@ -12,7 +12,7 @@ from pathlib import Path
 
 from roboscript.bench.runner import run_isolated
 from roboscript.bench.tasks import DEFAULT_SUITE, get_task
-from roboscript.bench.trial import TrialRecord, TrialSpec
+from roboscript.bench.trial import LLMAuthor, TrialRecord, TrialSpec
 from roboscript.llm.openai_compatible import MODEL_ENV
 from roboscript.perception.modes import GROUND_TRUTH, PerceptionMode
 
@@ -59,11 +59,9 @@ def run_demo(
         plan.robot,
         0,
         seed,
-        program,
+        LLMAuthor(plan.llm, repair_rounds) if plan.llm is not None else program,
         timeout,
         None if backend == "ros" else str(video),  # through ROS no video is recorded yet
-        llm=plan.llm,
-        repair_rounds=repair_rounds if plan.llm is not None else 0,
         perception=perception,
         suite=plan.suite,
         backend=backend,

@@ -14,7 +14,7 @@ from roboscript.bench.runner import run_isolated
 from roboscript.bench.stored_programs import PREFIX as PROGRAMS_PREFIX
 from roboscript.bench.stored_programs import StoredProgram, load_program_store
 from roboscript.bench.tasks import DEFAULT_SUITE, get_task, load_suite
-from roboscript.bench.trial import TrialRecord, TrialSpec
+from roboscript.bench.trial import LLMAuthor, TrialRecord, TrialSpec
 from roboscript.perception.modes import GROUND_TRUTH, PerceptionMode
 
 POLICIES = ("reference", "llm:SPEC", "programs:PATH")
@@ -68,15 +68,13 @@ def default_out(
 
 def trial_specs(
     task: str,
-    program: str | StoredProgram,
+    program: str | StoredProgram | LLMAuthor,
     robot: str,
     trials: int,
     seed: int,
     timeout: float,
     video: str | None = None,
-    llm: str | None = None,
     instruction: str | None = None,
-    repair_rounds: int = 0,
     world: str | None = None,
     perception: PerceptionMode | str = GROUND_TRUTH,
     suite: str = DEFAULT_SUITE,
@@ -88,9 +86,6 @@ def trial_specs(
     suffix."""
     if trials < 1:
         raise ValueError(f"trials must be at least 1, got {trials}")
-    source = None
-    if isinstance(program, StoredProgram):
-        program, source = program.program, program.source
     specs = []
     for i in range(trials):
         path, recording = _numbered(video, i, trials), _numbered(record, i, trials)
@@ -103,13 +98,10 @@ def trial_specs(
                 program,
                 timeout,
                 path,
-                llm=llm,
                 instruction=instruction,
-                repair_rounds=repair_rounds,
                 world=world,
                 perception=perception,
                 suite=suite,
-                program_source=source,
                 backend=backend,
                 robot_config=robot_config,
                 record=recording,
@@ -159,6 +151,7 @@ def open_run(
     """Opens (or reopens, refusing other settings or programs) the run directory ``out`` and lists the trials it
     still needs; ``programs`` are the policy's (looked up here where not given)."""
     programs = programs if programs is not None else policy_programs(policy, tasks, suite)
+    llm = policy_llm(policy)
     texts = {t: p.program for t, p in programs.items()}
     run = RunDirectory(
         out,
@@ -172,13 +165,11 @@ def open_run(
         for t in tasks
         for s in trial_specs(
             t,
-            programs[t],
+            programs[t] if llm is None else LLMAuthor(llm, repair_rounds),
             robot,
             trials,
             seed,
             timeout,
-            llm=policy_llm(policy),
-            repair_rounds=repair_rounds,
             perception=perception,
             suite=suite,
             backend=backend,

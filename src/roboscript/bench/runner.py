@@ -28,7 +28,7 @@ LLM_GRACE = 600.0  # seconds an LLM may take to write (or repair) one program, h
 
 def wall_budget(spec: TrialSpec) -> float:
     """How long a trial may take before its process is killed: each attempt's limit and margins."""
-    per_attempt = spec.timeout + KILL_GRACE + (LLM_GRACE if spec.llm is not None else 0.0)
+    per_attempt = spec.timeout + KILL_GRACE + (LLM_GRACE if spec.author is not None else 0.0)
     return spec.attempts() * per_attempt
 
 

@@ -11,6 +11,7 @@ from collections.abc import Callable
 from dataclasses import asdict, dataclass, field, replace
 from pathlib import Path
 
+from roboscript.bench.stored_programs import StoredProgram
 from roboscript.bench.tasks import DEFAULT_SUITE, Task, free_task, get_task
 from roboscript.bench.trial_world import TrialWorld, attempt_record
 from roboscript.codegen.author import ProgramAuthor
@@ -25,30 +26,41 @@ BACKENDS = ("mujoco", "ros", "franky")
 
 
 @dataclass(frozen=True)
+class LLMAuthor:
+    """A program the trial has an LLM write from the task's query: ``llm`` is an LLM spec (see
+    :func:`roboscript.llm.make_llm`); ``repair_rounds``, rounds of feeding errors (checker, runtime, planning) back
+    to it."""
+
+    llm: str
+    repair_rounds: int = 0
+
+    def __post_init__(self) -> None:
+        if self.repair_rounds < 0:
+            raise ValueError(f"repair rounds must be 0 or more, got {self.repair_rounds}")
+
+
+@dataclass(frozen=True)
 class TrialSpec:
     """What to run: a program on a task's world with one robot and one seed.
 
-    With ``llm`` (an LLM spec, see :func:`roboscript.llm.make_llm`) the program is generated in the trial from the
-    task's query, and ``program`` is ignored.
+    ``program`` is where the program comes from, one value: its text (a :class:`StoredProgram` where it says where
+    it came from), or an :class:`LLMAuthor`, which writes it in the trial from the task's query.
     """
 
     task: str
     robot: str
     trial: int
     seed: int
-    program: str
+    program: str | StoredProgram | LLMAuthor
     timeout: float = 300.0
     video: str | None = None
     video_camera: str = "camera_left"
     memory_limit: int = 2 * 1024**3
-    llm: str | None = None
     instruction: str | None = None  # asked of the LLM instead of the task's own instruction
-    repair_rounds: int = 0  # rounds of feeding errors (checker, runtime, planning) back to the LLM
     world: str | None = None  # a world name or file to run in without a task (no checks); ``task`` is then a label
     # Where the tools' knowledge comes from (roboscript.perception.modes); a name is parsed into a mode at once.
     perception: PerceptionMode | str = GROUND_TRUTH
     suite: str = DEFAULT_SUITE  # the suite ``task`` is of: a packaged suite's name or a suite file's path
-    program_source: str | None = None  # where a stored program came from (a file, an entry of one)
     # mujoco; ros: the world served by ros-sim, the tools on the ROS backend; franky: the world served by franky-sim,
     # the tools driving its FR3 through libfranka
     backend: str = "mujoco"
@@ -56,17 +68,29 @@ class TrialSpec:
     record: str | None = None  # an MCAP file to record the trial into (roboscript.record)
 
     def __post_init__(self) -> None:
-        if self.repair_rounds < 0:
-            raise ValueError(f"repair rounds must be 0 or more, got {self.repair_rounds}")
+        if not isinstance(self.program, str | StoredProgram | LLMAuthor):
+            raise TypeError(f"a trial's program is its text, a StoredProgram or an LLMAuthor, got {self.program!r}")
         if self.timeout <= 0:
             raise ValueError(f"the time limit must be positive, got {self.timeout} s")
         object.__setattr__(self, "perception", perception_mode(self.perception))
         if self.backend not in BACKENDS:
             raise ValueError(f"unknown backend {self.backend!r}; backends: {', '.join(BACKENDS)}")
 
+    @property
+    def author(self) -> LLMAuthor | None:
+        """The LLM that writes the program, if one does."""
+        return self.program if isinstance(self.program, LLMAuthor) else None
+
+    @property
+    def program_text(self) -> str | None:
+        """The program's text, where it is given (not written in the trial)."""
+        if isinstance(self.program, StoredProgram):
+            return self.program.program
+        return None if isinstance(self.program, LLMAuthor) else self.program
+
     def attempts(self) -> int:
         """How many times the program may run: once, and once more after each repair round."""
-        return 1 + (self.repair_rounds if self.llm is not None else 0)
+        return 1 + (self.author.repair_rounds if self.author is not None else 0)
 
 
 COULD_NOT_RUN = "the trial could not be run"  # how the record of a trial that never ran begins its error
@@ -142,20 +166,20 @@ def run_trial(spec: TrialSpec, announce: Callable[[float | None], None] | None =
     failure: ExecutionResult | None = None  # the LLM could not be asked
     while True:
         with _trial_world(spec, task) as world:
-            if spec.llm is not None and author is None and failure is None:
+            if spec.author is not None and author is None and failure is None:
                 query = task.query_for(spec.instruction)
                 try:
-                    author = ProgramAuthor(make_llm(spec.llm), query, world.backend.base_pose().position[:2])
+                    author = ProgramAuthor(make_llm(spec.author.llm), query, world.backend.base_pose().position[:2])
                 except LLMError as exc:
                     failure = ExecutionResult(Outcome.LLM_ERROR, f"LLMError: {exc}", "")
-            program = spec.program if spec.llm is None else (author.program if author else None)
+            program = spec.program_text if spec.author is None else (author.program if author else None)
             if program is None:
                 result = failure
             else:
                 limits = Limits(spec.timeout, spec.memory_limit).scaled_to_load()
                 result = check_and_execute(program, world.namespace, limits, announce)
             attempt = world.judge(result)
-        attempt["program"] = program if spec.llm is not None else None
+        attempt["program"] = program if spec.author is not None else None
         attempts.append(attempt)
         if author is None or len(attempts) >= spec.attempts():
             break
@@ -186,7 +210,7 @@ def run_trial(spec: TrialSpec, announce: Callable[[float | None], None] | None =
         attempts=[{k: v for k, v in a.items() if k != "output"} for a in attempts]
         if len(attempts) > 1 or "repair_error" in last
         else [],
-        program_source=spec.program_source,
+        program_source=spec.program.source if isinstance(spec.program, StoredProgram) else None,
         phases=phases,
         judged_by=last["judged_by"],
     )

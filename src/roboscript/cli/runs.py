@@ -99,6 +99,7 @@ def cmd_run(args: argparse.Namespace) -> int:
     from roboscript.bench.metrics import task_result
     from roboscript.bench.runner import run_isolated
     from roboscript.bench.tasks import free_task, get_task
+    from roboscript.bench.trial import LLMAuthor
     from roboscript.cli.robot import robot_requested
     from roboscript.llm import make_llm
     from roboscript.sim.world_catalog import load_world
@@ -113,15 +114,13 @@ def cmd_run(args: argparse.Namespace) -> int:
         return _run_llm_on_robot(args, llm, label)
     specs = trial_specs(
         label,
-        "",
+        LLMAuthor(args.llm or llm.name, args.repair),
         args.robot,
         args.trials,
         args.seed,
         args.timeout,
         args.video,
-        llm=args.llm or llm.name,
         instruction=args.instruction,
-        repair_rounds=args.repair,
         world=args.world,
         perception=args.perception,
         suite=args.suite,
