@@ -52,10 +52,10 @@ def test_an_entry_of_the_catalogue_reads_as_the_recipe_it_names(tmp_path):
 )
 def test_a_wrong_entry_is_named_with_what_is_wrong_and_what_would_be_valid(tmp_path, change, says):
     path = _catalogue(tmp_path, APPLE.replace(*change))
-    with pytest.raises(CatalogueFileError, match=r"object catalogue file .*: object type 'apple': " + says):
+    with pytest.raises(CatalogueFileError, match=r"object catalogue file .*: catalogue\[0\] 'apple': " + says):
         read_catalogue(path)
 
 
 def test_a_type_listed_twice_is_refused(tmp_path):
-    with pytest.raises(CatalogueFileError, match="object type 'apple': listed twice"):
+    with pytest.raises(CatalogueFileError, match=r"catalogue\[1\] 'apple': 'apple' is listed twice"):
         read_catalogue(_catalogue(tmp_path, APPLE + APPLE))

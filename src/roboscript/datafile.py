@@ -84,6 +84,15 @@ class Reader:
         return tuple(float(v) for v in value)
 
 
+def entry_label(field: str, index: int, item: Any, key: str = "name") -> str:
+    """How an error names the ``index``-th entry of a list ``field``: ``objects[2] 'apple'`` where the entry has
+    its ``key``, ``objects[2]`` where it has none yet."""
+    label = f"{field}[{index}]"
+    if isinstance(item, dict) and isinstance(item.get(key), str):
+        label += f" {item[key]!r}"
+    return label
+
+
 class _Yaml12Loader(yaml.SafeLoader):
     """YAML with YAML 1.2 booleans: only true/false. YAML 1.1 would read the key ``on:`` as ``True``."""
 

@@ -34,7 +34,7 @@ from typing import Any
 
 from roboscript.bench.checks import Check
 from roboscript.codegen.prompt import task_query
-from roboscript.datafile import DataFileError, Reader, names_a_file, read_data_file
+from roboscript.datafile import DataFileError, Reader, entry_label, names_a_file, read_data_file
 from roboscript.errors import did_you_mean
 from roboscript.names import kind_of
 from roboscript.sim.ground_truth import GroundTruth
@@ -256,9 +256,7 @@ def _load_task_world(entry: Reader, world: str, base: Path) -> tuple[str, WorldS
 
 
 def _parse_task(source: str, index: int, data: Any, suite: str, base: Path, programs: Path | None) -> Task:
-    label = f"tasks[{index}]"
-    if isinstance(data, dict) and isinstance(data.get("id"), str):
-        label += f" {data['id']!r}"
+    label = entry_label("tasks", index, data, key="id")
     entry = _entry(source, label, data, _TASK_FIELDS)
     task_id = entry.string("id")
     if not _ID.match(task_id):

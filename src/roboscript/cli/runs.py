@@ -19,6 +19,24 @@ from roboscript.cli.options import (
 )
 
 
+def _trial_options(args: argparse.Namespace, instruction: str | None) -> dict:
+    """What ``exec`` and ``run`` tell each of their trials, from their shared options."""
+    return {
+        "robot": args.robot,
+        "trials": args.trials,
+        "seed": args.seed,
+        "timeout": args.timeout,
+        "video": args.video,
+        "instruction": instruction,
+        "world": args.world,
+        "perception": args.perception,
+        "suite": args.suite,
+        "backend": args.backend,
+        "robot_config": args.robot_config,
+        "record": args.record,
+    }
+
+
 def cmd_exec(args: argparse.Namespace) -> int:
     from roboscript.bench.benchmark import progress_printer, trial_specs
     from roboscript.bench.metrics import task_result
@@ -34,22 +52,7 @@ def cmd_exec(args: argparse.Namespace) -> int:
     if robot_requested(args):
         return run_on_running_robot(args, program, scene)
     label = free_task(args.world, "run the program").id if args.world else args.task
-    specs = trial_specs(
-        label,
-        program,
-        args.robot,
-        args.trials,
-        args.seed,
-        args.timeout,
-        args.video,
-        perception=args.perception,
-        suite=args.suite,
-        backend=args.backend,
-        robot_config=args.robot_config,
-        world=args.world,
-        instruction="run the program" if args.world else None,
-        record=args.record,
-    )
+    specs = trial_specs(label, program, **_trial_options(args, "run the program" if args.world else None))
     records = run_isolated(specs, args.jobs, None if args.json else progress_printer(len(specs)))
     result = task_result(label, args.robot, records)
     if args.json:
@@ -112,22 +115,7 @@ def cmd_run(args: argparse.Namespace) -> int:
     llm = make_llm(args.llm)  # fails here, clearly, when no LLM is configured
     if robot_requested(args):
         return _run_llm_on_robot(args, llm, label)
-    specs = trial_specs(
-        label,
-        LLMAuthor(args.llm or llm.name, args.repair),
-        args.robot,
-        args.trials,
-        args.seed,
-        args.timeout,
-        args.video,
-        instruction=args.instruction,
-        world=args.world,
-        perception=args.perception,
-        suite=args.suite,
-        backend=args.backend,
-        robot_config=args.robot_config,
-        record=args.record,
-    )
+    specs = trial_specs(label, LLMAuthor(args.llm or llm.name, args.repair), **_trial_options(args, args.instruction))
     records = run_isolated(specs, args.jobs)
     result = task_result(label, args.robot, records)
     if args.json:

@@ -12,7 +12,7 @@ from importlib import resources
 
 import numpy as np
 
-from roboscript.datafile import DataFileError, Reader, read_data_file
+from roboscript.datafile import DataFileError, Reader, entry_label, read_data_file
 from roboscript.errors import UnknownNameError, unknown_name
 from roboscript.objects import designs
 from roboscript.objects.designs import COLORS
@@ -129,10 +129,9 @@ def read_catalogue(path: str) -> dict[str, ObjectType]:
         raise CatalogueFileError(path, "top level", f"expected a list of object types, got {type(entries).__name__}")
     library: dict[str, ObjectType] = {}
     for index, data in enumerate(entries):
-        name = data.get("name", f"entry {index + 1}") if isinstance(data, dict) else f"entry {index + 1}"
-        kind = _object_type(Reader(path, f"object type {name!r}", data, FIELDS, CatalogueFileError))
+        kind = _object_type(Reader(path, entry_label("catalogue", index, data), data, FIELDS, CatalogueFileError))
         if kind.name in library:
-            raise CatalogueFileError(path, f"object type {kind.name!r}", "listed twice")
+            raise CatalogueFileError(path, entry_label("catalogue", index, data), f"{kind.name!r} is listed twice")
         library[kind.name] = kind
     return library
 
@@ -142,6 +141,8 @@ def _object_type(entry: Reader) -> ObjectType:
     for word in (color, shade or color):
         if word not in COLORS:
             entry.fail(f"colour {word!r} is not one of {', '.join(COLORS)}")
+    if entry.string("shape") not in SHAPES:
+        entry.fail(f"shape {entry.data['shape']!r} is not one of {', '.join(SHAPES)}")
     flags = {key: entry.data.get(key, False) for key in ("round", "container", "round_floor")}
     for key, value in flags.items():
         if not isinstance(value, bool):

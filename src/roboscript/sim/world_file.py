@@ -26,7 +26,7 @@ from typing import Any
 
 import numpy as np
 
-from roboscript.datafile import DataFileError, Reader, read_data_file
+from roboscript.datafile import DataFileError, Reader, entry_label, read_data_file
 from roboscript.errors import unknown_name
 from roboscript.names import TABLE, kind_of
 from roboscript.objects import ObjectType, object_types
@@ -175,10 +175,7 @@ def _parse_furniture(source: str, items: Any) -> tuple[CabinetSpec, ...]:
         raise WorldFileError(source, "furniture", f"must be a list, got {type(items).__name__}")
     cabinets = []
     for i, item in enumerate(items):
-        entry = f"furniture[{i}]"
-        if isinstance(item, dict) and isinstance(item.get("name"), str):
-            entry += f" {item['name']!r}"
-        r = _reader(source, entry, item, _CABINET_FIELDS)
+        r = _reader(source, entry_label("furniture", i, item), item, _CABINET_FIELDS)
         kind = r.string("type")
         if kind != "cabinet":
             r.fail(f"unknown furniture type {kind!r}; valid types: cabinet")
@@ -205,10 +202,7 @@ def _parse_objects(source: str, items: Any, part_names: set[str]) -> tuple[Objec
     placements: list[ObjectPlacement] = []
     seen: set[str] = set()
     for i, item in enumerate(items):
-        entry = f"objects[{i}]"
-        if isinstance(item, dict) and isinstance(item.get("name"), str):
-            entry += f" {item['name']!r}"
-        r = _reader(source, entry, item, _OBJECT_FIELDS)
+        r = _reader(source, entry_label("objects", i, item), item, _OBJECT_FIELDS)
         name = r.string("name")
         if name in seen or name in part_names or name == TABLE_NAME:
             r.fail(f"name {name!r} is already used; object names must be unique")
