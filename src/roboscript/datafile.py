@@ -6,12 +6,14 @@ from __future__ import annotations
 import json
 import math
 import re
+from dataclasses import dataclass
+from importlib import resources
 from pathlib import Path
 from typing import Any, ClassVar, NoReturn
 
 import yaml
 
-from roboscript.errors import UsageError, did_you_mean
+from roboscript.errors import UnknownNameError, UsageError, did_you_mean, unknown_name
 
 DATA_SUFFIXES = (".yaml", ".yml", ".json")
 
@@ -123,6 +125,36 @@ def read_data_file(path: str | Path, error: type[DataFileError]) -> Any:
         return json.loads(text) if path.suffix == ".json" else load_yaml(text)
     except (yaml.YAMLError, json.JSONDecodeError) as exc:
         raise error(str(path), "file", f"is not valid {path.suffix.lstrip('.').upper()}: {exc}") from exc
+
+
+@dataclass(frozen=True)
+class PackagedFiles:
+    """The data files of one kind that the package ships (``roboscript/<folder>/*.yaml``: worlds, suites, studies,
+    recipes, robot configurations): each found by its name, and any file of the kind by its path."""
+
+    folder: str
+    kind: str  # what one is called in a refusal: "world", "suite"
+    others: str = "or a file's path"  # what else a refusal says is valid
+
+    def directory(self) -> Path:
+        return Path(str(resources.files("roboscript") / self.folder))
+
+    def names(self) -> list[str]:
+        """The packaged ones' names, sorted."""
+        return sorted(p.stem for p in self.directory().glob("*.yaml"))
+
+    def path(self, reference: str | Path, names: list[str] | None = None, n: int = 2, cutoff: float = 0.4) -> Path:
+        """The file ``reference`` names: itself where it is a file's path, else the packaged one of that name;
+        :class:`~roboscript.errors.UnknownNameError` with the closest names where there is none (``names``: the
+        packaged ones in the order a refusal lists them)."""
+        if names_a_file(reference):
+            return Path(reference)
+        path = self.directory() / f"{reference}.yaml"
+        if not path.is_file():
+            names = self.names() if names is None else names
+            listing = f"{self.kind}s: {', '.join(names)}" + (f", {self.others}" if self.others else "")
+            raise UnknownNameError(unknown_name(self.kind, reference, names, listing, n=n, cutoff=cutoff))
+        return path
 
 
 def names_a_file(reference: str | Path) -> bool:

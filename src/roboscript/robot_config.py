@@ -11,13 +11,12 @@ lists them).
 from __future__ import annotations
 
 from dataclasses import dataclass, replace
-from importlib import resources
 from pathlib import Path
 
 import numpy as np
 
 from roboscript.camera_config import CameraConfig, parse_cameras
-from roboscript.datafile import DataFileError, Reader, names_a_file, read_data_file
+from roboscript.datafile import DataFileError, PackagedFiles, Reader, names_a_file, read_data_file
 from roboscript.errors import UsageError
 from roboscript.geometry import Transform
 from roboscript.robots import ROBOTS, RobotDescription, get_robot
@@ -132,10 +131,12 @@ def ros_config_for(robot: str) -> str:
     return DEFAULT_CONFIGS[robot]
 
 
+CONFIGS = PackagedFiles("robot_configs", "robot configuration")
+
+
 def config_names() -> list[str]:
     """The packaged robot configurations."""
-    folder = resources.files("roboscript") / "robot_configs"
-    return sorted(p.name.removesuffix(".yaml") for p in folder.iterdir() if p.name.endswith(".yaml"))
+    return CONFIGS.names()
 
 
 def config_path(reference: str | Path) -> Path:
@@ -145,7 +146,7 @@ def config_path(reference: str | Path) -> Path:
     names = config_names()
     if str(reference) not in names:
         raise RobotConfigError(str(reference), "file", f"no such packaged configuration; packaged: {', '.join(names)}")
-    return Path(str(resources.files("roboscript") / "robot_configs" / f"{reference}.yaml"))
+    return CONFIGS.directory() / f"{reference}.yaml"
 
 
 def load_robot_config(reference: str | Path) -> RobotConfig:

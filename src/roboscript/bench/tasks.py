@@ -8,13 +8,12 @@ worlds with other objects and shortened instructions. The format is :mod:`robosc
 from __future__ import annotations
 
 from functools import lru_cache
-from importlib import resources
 from pathlib import Path
 
 from roboscript.bench.task_file import Task, TaskFileError, load_suite_file
 from roboscript.codegen.prompt import task_query
-from roboscript.datafile import names_a_file
-from roboscript.errors import UnknownNameError, did_you_mean, unknown_name
+from roboscript.datafile import PackagedFiles
+from roboscript.errors import UnknownNameError, did_you_mean
 from roboscript.sim.world_catalog import load_world
 
 DEFAULT_SUITE = "paper"
@@ -22,25 +21,17 @@ FREE_SUITE = "free"
 LISTED_TASKS = 20  # a suite with more tasks than this is not listed whole in an error
 
 
-def _suite_dir() -> Path:
-    return Path(str(resources.files("roboscript") / "suites"))
+SUITES = PackagedFiles("suites", "suite", others="or a suite file's path")
 
 
 def suite_names() -> list[str]:
     """The packaged suites, the default first."""
-    names = sorted(p.stem for p in _suite_dir().glob("*.yaml"))
-    return sorted(names, key=lambda n: n != DEFAULT_SUITE)
+    return sorted(SUITES.names(), key=lambda n: n != DEFAULT_SUITE)
 
 
 def suite_path(suite: str) -> Path:
     """The file of a packaged suite, or ``suite`` itself when it is a suite file's path."""
-    if names_a_file(suite):
-        return Path(suite).resolve()
-    path = _suite_dir() / f"{suite}.yaml"
-    if not path.is_file():
-        listing = f"suites: {', '.join(suite_names())}, or a suite file's path"
-        raise UnknownNameError(unknown_name("suite", suite, suite_names(), listing, n=2, cutoff=0.4))
-    return path
+    return SUITES.path(suite, suite_names()).resolve()
 
 
 @lru_cache(maxsize=16)
@@ -53,7 +44,7 @@ def load_suite(suite: str = DEFAULT_SUITE) -> dict[str, Task]:
     path = suite_path(suite)
     tasks = _load(path)
     named = next(iter(tasks.values())).suite
-    if path.parent == _suite_dir() and named != path.stem:
+    if path.parent == SUITES.directory().resolve() and named != path.stem:
         raise TaskFileError(str(path), "suite", f"names suite {named!r}; a packaged suite's file is named after it")
     return tasks
 

@@ -8,11 +8,9 @@ problem is a :class:`RecipeFileError` naming the file, the entry and what is wro
 from __future__ import annotations
 
 from dataclasses import dataclass
-from importlib import resources
-from pathlib import Path
 from typing import Any
 
-from roboscript.datafile import DataFileError, Reader, names_a_file, read_data_file
+from roboscript.datafile import DataFileError, PackagedFiles, Reader, read_data_file
 from roboscript.errors import unknown_name
 from roboscript.objects import object_types
 from roboscript.objects.library import OBJECT_LISTING
@@ -217,17 +215,15 @@ def parse_recipe(data: Any, source: str = "<memory>") -> Recipe:
     )
 
 
+RECIPES = PackagedFiles("generate", "recipe")
+
+
 def recipe_names() -> list[str]:
     """The packaged recipes."""
-    return sorted(p.stem for p in Path(str(resources.files("roboscript") / "generate")).glob("*.yaml"))
+    return RECIPES.names()
 
 
 def load_recipe(name_or_path: str = DEFAULT_RECIPE) -> Recipe:
     """A packaged recipe by name, or any recipe file by path."""
-    if names_a_file(name_or_path):
-        path = Path(name_or_path)
-    else:
-        path = Path(str(resources.files("roboscript") / "generate" / f"{name_or_path}.yaml"))
-        if not path.is_file():
-            raise KeyError(f"unknown recipe {name_or_path!r}; recipes: {', '.join(recipe_names())}, or a file's path")
+    path = RECIPES.path(name_or_path)
     return parse_recipe(read_data_file(path, RecipeFileError), str(path))

@@ -10,12 +10,10 @@ is a :class:`StudyFileError` that names the file, the entry and what is wrong.
 from __future__ import annotations
 
 from dataclasses import dataclass
-from importlib import resources
-from pathlib import Path
 from string import Template
 from typing import Any
 
-from roboscript.datafile import DataFileError, Reader, names_a_file, read_data_file
+from roboscript.datafile import DataFileError, PackagedFiles, Reader, read_data_file
 from roboscript.errors import UnknownNameError, unknown_name
 from roboscript.objects import object_types
 from roboscript.objects.library import OBJECT_LISTING
@@ -163,18 +161,15 @@ def _parse_objects(entry: Reader, value: Any) -> tuple[str, ...]:
     return tuple(value)
 
 
+STUDIES = PackagedFiles("study", "study", others="or a file")
+
+
 def study_names() -> list[str]:
     """The packaged studies."""
-    return sorted(p.stem for p in Path(str(resources.files("roboscript") / "study")).glob("*.yaml"))
+    return STUDIES.names()
 
 
 def load_study(name_or_path: str) -> Study:
     """A packaged study by name (``objects``), or a study file by path."""
-    if names_a_file(name_or_path):
-        path = Path(name_or_path)
-    else:
-        path = Path(str(resources.files("roboscript") / "study" / f"{name_or_path}.yaml"))
-        if not path.is_file():
-            listing = f"studies: {', '.join(study_names())}, or a file"
-            raise UnknownNameError(unknown_name("study", name_or_path, study_names(), listing, n=2, cutoff=0.4))
+    path = STUDIES.path(name_or_path)
     return parse_study(read_data_file(path, StudyFileError), str(path))
