@@ -58,3 +58,12 @@ def test_builtin_bases_are_kept_and_the_classifier_catches_by_branch():
     assert classify_exception(UnknownObjectError("x", ["apple"])) is Outcome.RUNTIME_ERROR
     assert classify_exception(ZeroDivisionError()) is Outcome.RUNTIME_ERROR
     assert error_message(UnknownObjectError("x", ["apple"])).startswith("no object named 'x'")
+
+
+def test_a_bad_value_given_to_a_run_is_a_usage_error_and_still_a_value_error():
+    from roboscript.bench.benchmark import trial_specs
+    from roboscript.errors import InvalidArgumentError, UsageError
+
+    with pytest.raises(InvalidArgumentError, match="trials must be at least 1, got 0") as caught:
+        trial_specs("simple_0", "open_gripper()", "panda", 0, 0, 60.0)
+    assert isinstance(caught.value, UsageError) and isinstance(caught.value, ValueError)

@@ -32,6 +32,11 @@ class UsageError(RoboScriptError):
     """An invalid request: the message names what was wrong and what would be valid."""
 
 
+class InvalidArgumentError(UsageError, ValueError):
+    """A value given to a command, a run or a call that cannot be used (too few trials, a bad mode, a missing
+    file); the message says what was given and what would be valid."""
+
+
 def error_message(exc: BaseException) -> str:
     """The message of ``exc`` as a person should read it (a ``KeyError`` shows its text without quotes)."""
     if isinstance(exc, KeyError) and exc.args:

@@ -15,6 +15,7 @@ from roboscript.bench.stored_programs import PREFIX as PROGRAMS_PREFIX
 from roboscript.bench.stored_programs import StoredProgram, load_program_store
 from roboscript.bench.tasks import DEFAULT_SUITE, get_task, load_suite
 from roboscript.bench.trial import LLMAuthor, TrialRecord, TrialSpec
+from roboscript.errors import InvalidArgumentError
 from roboscript.perception.modes import GROUND_TRUTH, PerceptionMode
 
 POLICIES = ("reference", "llm:SPEC", "programs:PATH")
@@ -26,7 +27,7 @@ def policy_llm(policy: str) -> str | None:
         return None
     if policy.startswith("llm:") and len(policy) > 4:
         return policy[4:]
-    raise ValueError(
+    raise InvalidArgumentError(
         f"unknown policy {policy!r}; policies: {', '.join(POLICIES)} (e.g. llm:openai:gpt-4o, programs:generated/)"
     )
 
@@ -85,7 +86,7 @@ def trial_specs(
     """Trial ``i`` uses seed ``seed + i``; with several trials, videos and recordings get a ``_trial<i>``
     suffix."""
     if trials < 1:
-        raise ValueError(f"trials must be at least 1, got {trials}")
+        raise InvalidArgumentError(f"trials must be at least 1, got {trials}")
     specs = []
     for i in range(trials):
         path, recording = _numbered(video, i, trials), _numbered(record, i, trials)

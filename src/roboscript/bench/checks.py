@@ -15,6 +15,7 @@ from dataclasses import dataclass
 import numpy as np
 from scipy.spatial import Delaunay, QhullError
 
+from roboscript.errors import InvalidArgumentError
 from roboscript.sim.ground_truth import GroundTruth
 
 FRACTION = 0.8
@@ -96,7 +97,7 @@ class Check:
         if self.kind == "joint":
             value = gt.joint(self.subject).value
             return CheckResult(self.name, value > self.threshold, f"at {value:.3f}")
-        raise ValueError(f"unknown check kind {self.kind!r}; kinds: in, on, near, at, joint")
+        raise InvalidArgumentError(f"unknown check kind {self.kind!r}; kinds: in, on, near, at, joint")
 
     def to_dict(self) -> dict:
         return {

@@ -9,13 +9,17 @@ from pathlib import Path
 
 from roboscript.bench.metrics import METRICS
 from roboscript.bench.results import LABELS
+from roboscript.errors import InvalidArgumentError
 
 
 def load_summary(run: Path) -> dict:
     """A run directory's ``summary.json``, with a clear error for anything else."""
     path = Path(run) / "summary.json"
     if not path.is_file():
-        raise ValueError(f"{run} is not a benchmark run directory (no summary.json); `roboscript bench` writes one")
+        raise InvalidArgumentError(
+            f"{run} is not a benchmark run directory (no summary.json); `roboscript bench` writes "
+            "one"
+        )
     return json.loads(path.read_text())
 
 
@@ -28,7 +32,7 @@ def run_label(summary: dict) -> str:
 def compare_runs(runs: Sequence[Path], metric: str = "all") -> str:
     """Markdown tables comparing ``runs``; tasks are those of the first run, in its order."""
     if not runs:
-        raise ValueError("give at least one run directory")
+        raise InvalidArgumentError("give at least one run directory")
     summaries = [load_summary(r) for r in runs]
     tasks = list(summaries[0]["tasks"])
     metrics = METRICS if metric == "all" else (metric,)

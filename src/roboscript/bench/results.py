@@ -23,6 +23,7 @@ from typing import ClassVar
 
 from roboscript.bench.metrics import METRICS, metrics
 from roboscript.bench.trial import TrialRecord
+from roboscript.errors import InvalidArgumentError
 
 LABELS = {
     "grammar_correctness": "Grammar correctness",
@@ -107,7 +108,7 @@ class RunDirectory:
                 previous["perception"] = "gt"
             for key, default in self.FIXED.items():
                 if previous.get(key, default) != run.get(key, default):
-                    raise ValueError(
+                    raise InvalidArgumentError(
                         f"{self.path} holds a run with {key}={previous.get(key, default)!r}, not "
                         f"{run.get(key, default)!r}; "
                         "resume it with the same settings or choose another --out"
@@ -115,7 +116,7 @@ class RunDirectory:
             for task, digest in run["programs"].items():
                 old = previous.get("programs", {}).get(task)
                 if old is not None and old != digest:
-                    raise ValueError(
+                    raise InvalidArgumentError(
                         f"{self.path} holds results of another program for {task} ({old}, now {digest}); "
                         "choose another --out"
                     )

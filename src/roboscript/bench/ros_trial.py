@@ -15,6 +15,7 @@ import tempfile
 
 from roboscript.bench.trial_world import TrialWorld, attempt_record
 from roboscript.codegen.sandbox import ExecutionResult
+from roboscript.errors import InvalidArgumentError
 from roboscript.perception.modes import SEGMENTATION, PerceptionMode, perception_mode
 from roboscript.processes import at_process_exit
 from roboscript.robot_config import ros_config_for
@@ -53,7 +54,7 @@ def ros_perception(mode: PerceptionMode) -> PerceptionMode:
     """The mode a ROS trial runs with: everything from the robot's sensors; its 2D boxes from the segmentation topic
     unless a detector was given."""
     if mode.from_truth - {"2d"}:
-        raise ValueError(
+        raise InvalidArgumentError(
             f"perception {mode} takes {', '.join(sorted(mode.from_truth))} from ground truth, which a robot does not "
             "have: through ROS use full (or gt-2d, which reads the robot's segmentation topic)"
         )
@@ -73,7 +74,10 @@ class RosTrialWorld(TrialWorld):
 
         spec = self.spec
         if spec.video:
-            raise ValueError("--video is not recorded through ROS yet; record the twin with the mujoco backend")
+            raise InvalidArgumentError(
+                "--video is not recorded through ROS yet; record the twin with the mujoco "
+                "backend"
+            )
         uri = _process_master()
         self.sim = start_sim(
             self.task.world,

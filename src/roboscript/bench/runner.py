@@ -20,6 +20,7 @@ from multiprocessing.connection import wait
 from roboscript.bench import workers
 from roboscript.bench.trial import COULD_NOT_RUN, TrialRecord, TrialSpec
 from roboscript.codegen.outcomes import Outcome
+from roboscript.errors import InvalidArgumentError
 from roboscript.load import load_factor
 
 KILL_GRACE = 60.0  # seconds beyond the program's limit for world building and judging
@@ -128,7 +129,7 @@ class TrialPool:
 
     def __init__(self, jobs: int = 1, serve_args: tuple = ()):
         if jobs < 1:
-            raise ValueError(f"jobs must be at least 1, got {jobs}")
+            raise InvalidArgumentError(f"jobs must be at least 1, got {jobs}")
         self.jobs, self._serve_args = jobs, serve_args
         self._context = trial_context()
         self._idle: list[_Worker] = []

@@ -4,6 +4,8 @@ from __future__ import annotations
 
 import math
 
+from roboscript.errors import InvalidArgumentError
+
 Z95 = 1.959964  # the standard normal's 97.5% quantile: a two-sided 95% interval
 
 
@@ -13,7 +15,7 @@ def wilson_interval(successes: int, trials: int, z: float = Z95) -> tuple[float,
     if trials <= 0:
         return (0.0, 1.0)
     if not 0 <= successes <= trials:
-        raise ValueError(f"successes must be within 0..{trials}, got {successes}")
+        raise InvalidArgumentError(f"successes must be within 0..{trials}, got {successes}")
     p = successes / trials
     denominator = 1 + z * z / trials
     centre = (p + z * z / (2 * trials)) / denominator

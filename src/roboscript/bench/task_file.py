@@ -35,7 +35,7 @@ from typing import Any
 from roboscript.bench.checks import Check
 from roboscript.codegen.prompt import task_query
 from roboscript.datafile import DataFileError, Reader, entry_label, names_a_file, read_data_file
-from roboscript.errors import did_you_mean
+from roboscript.errors import InvalidArgumentError, did_you_mean
 from roboscript.names import kind_of
 from roboscript.sim.ground_truth import GroundTruth
 from roboscript.sim.world_catalog import load_world
@@ -136,7 +136,7 @@ def parse_query(query: str) -> tuple[list[str], str]:
     eval-items form with a leading ``# `` too). Raises ``ValueError`` naming the expected form."""
     match = _QUERY.match(query) if isinstance(query, str) else None
     if match is None:
-        raise ValueError(f"a query reads 'objects = [table, apple, ...] ; # instruction', got {query!r}")
+        raise InvalidArgumentError(f"a query reads 'objects = [table, apple, ...] ; # instruction', got {query!r}")
     names = [n.strip().strip("'\"") for n in match["names"].split(",")]
     return [n for n in names if n], match["instruction"]
 

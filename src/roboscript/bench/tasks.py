@@ -13,7 +13,7 @@ from pathlib import Path
 from roboscript.bench.task_file import Task, TaskFileError, load_suite_file
 from roboscript.codegen.prompt import task_query
 from roboscript.datafile import PackagedFiles
-from roboscript.errors import UnknownNameError, did_you_mean
+from roboscript.errors import InvalidArgumentError, UnknownNameError, did_you_mean
 from roboscript.sim.world_catalog import load_world
 
 DEFAULT_SUITE = "paper"
@@ -68,7 +68,7 @@ def free_task(world: str, instruction: str | None) -> Task:
     """An instruction in any world (a name or a world file): nothing to check it against, so no checks. Its query
     lists every name of the world."""
     if not instruction:
-        raise ValueError(f"an instruction is needed to run in world {world!r} without a task")
+        raise InvalidArgumentError(f"an instruction is needed to run in world {world!r} without a task")
     label = world.rsplit("/", 1)[-1].split(".", 1)[0]
     query = task_query(load_world(world).query_names(), instruction)
     return Task(f"free:{label}", FREE_SUITE, world, query, ())

@@ -18,6 +18,7 @@ from roboscript.codegen.author import ProgramAuthor
 from roboscript.codegen.execute import check_and_execute
 from roboscript.codegen.outcomes import Outcome
 from roboscript.codegen.sandbox import ExecutionResult, Limits
+from roboscript.errors import InvalidArgumentError
 from roboscript.llm import LLMError, make_llm
 from roboscript.perception.modes import GROUND_TRUTH, PerceptionMode, perception_mode
 from roboscript.phases import PhaseClock
@@ -36,7 +37,7 @@ class LLMAuthor:
 
     def __post_init__(self) -> None:
         if self.repair_rounds < 0:
-            raise ValueError(f"repair rounds must be 0 or more, got {self.repair_rounds}")
+            raise InvalidArgumentError(f"repair rounds must be 0 or more, got {self.repair_rounds}")
 
 
 @dataclass(frozen=True)
@@ -71,10 +72,10 @@ class TrialSpec:
         if not isinstance(self.program, str | StoredProgram | LLMAuthor):
             raise TypeError(f"a trial's program is its text, a StoredProgram or an LLMAuthor, got {self.program!r}")
         if self.timeout <= 0:
-            raise ValueError(f"the time limit must be positive, got {self.timeout} s")
+            raise InvalidArgumentError(f"the time limit must be positive, got {self.timeout} s")
         object.__setattr__(self, "perception", perception_mode(self.perception))
         if self.backend not in BACKENDS:
-            raise ValueError(f"unknown backend {self.backend!r}; backends: {', '.join(BACKENDS)}")
+            raise InvalidArgumentError(f"unknown backend {self.backend!r}; backends: {', '.join(BACKENDS)}")
 
     @property
     def author(self) -> LLMAuthor | None:

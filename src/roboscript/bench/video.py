@@ -12,6 +12,7 @@ from pathlib import Path
 import numpy as np
 
 from roboscript.backends.base import Backend
+from roboscript.errors import InvalidArgumentError
 
 VIDEO_SIZE = (480, 360)  # width, height of a trial's video
 
@@ -33,7 +34,7 @@ class VideoRecorder:
         except ImportError:
             raise RuntimeError("--video needs imageio-ffmpeg: pip install 'roboscript[video]'") from None
         if camera not in backend.camera_names():
-            raise ValueError(f"no camera {camera!r} to record; cameras: {', '.join(backend.camera_names())}")
+            raise InvalidArgumentError(f"no camera {camera!r} to record; cameras: {', '.join(backend.camera_names())}")
         self.backend, self.camera, self.fps = backend, camera, fps
         self.width, self.height = width, height
         self.path = Path(path)

@@ -14,7 +14,7 @@ from collections.abc import Callable
 from pathlib import Path
 from typing import TYPE_CHECKING
 
-from roboscript.errors import UsageError
+from roboscript.errors import InvalidArgumentError, UsageError
 
 if TYPE_CHECKING:
     from roboscript.robot_config import RobotConfig
@@ -200,13 +200,19 @@ def cmd_ros_sim(args: argparse.Namespace) -> int:
     robot = args.robot or load_world(args.world).robot
     config = load_robot_config(args.robot_config or ros_config_for(robot))
     if config.robot.name != robot:
-        raise ValueError(f"robot configuration {config.name} is for the {config.robot.name}, not the {robot}")
+        raise InvalidArgumentError(f"robot configuration {config.name} is for the {config.robot.name}, not the {robot}")
     if not os.environ.get("ROS_MASTER_URI"):
-        raise ValueError("ROS_MASTER_URI is not set: start a master (rosmaster --core -p 11311) and export its URI")
+        raise InvalidArgumentError(
+            "ROS_MASTER_URI is not set: start a master (rosmaster --core -p 11311) and export its "
+            "URI"
+        )
     try:
         from roboscript.rossim.server import serve
     except ImportError as exc:
-        raise ValueError(f"ros-sim needs ROS 1 (rospy, actionlib): see the README's ROS section ({exc})") from None
+        raise InvalidArgumentError(
+            "ros-sim needs ROS 1 (rospy, actionlib): see the README's ROS section "
+            f"({exc})"
+        ) from None
     task = None
     if args.task:
         from roboscript.bench.tasks import get_task

@@ -17,6 +17,7 @@ from roboscript.cli.options import (
     print_result,
     rounds,
 )
+from roboscript.errors import InvalidArgumentError
 
 
 def _trial_options(args: argparse.Namespace, instruction: str | None) -> dict:
@@ -47,7 +48,7 @@ def cmd_exec(args: argparse.Namespace) -> int:
     scene = args.world or get_task(args.task, args.suite).world
     path = Path(args.program)
     if not path.is_file():
-        raise ValueError(f"no program file {str(path)!r}")
+        raise InvalidArgumentError(f"no program file {str(path)!r}")
     program = path.read_text()
     if robot_requested(args):
         return run_on_running_robot(args, program, scene)
@@ -69,7 +70,7 @@ def cmd_bench(args: argparse.Namespace) -> int:
     from roboscript.bench.benchmark import default_out, run_label
 
     if args.repair and not args.policy.startswith("llm:"):
-        raise ValueError("--repair needs an LLM policy (--policy llm:SPEC)")
+        raise InvalidArgumentError("--repair needs an LLM policy (--policy llm:SPEC)")
     out = args.out or default_out(
         run_label(args.policy, args.repair), args.robot, args.perception, args.suite, args.backend
     )

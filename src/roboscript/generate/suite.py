@@ -17,6 +17,7 @@ import yaml
 
 from roboscript.bench.task_file import load_suite_file
 from roboscript.codegen.prompt import task_query
+from roboscript.errors import InvalidArgumentError
 from roboscript.generate.families import FAMILIES, FIRST_FAMILIES, TemplateTask
 from roboscript.generate.recipe import Recipe
 from roboscript.generate.scene import Scene
@@ -99,7 +100,7 @@ def write_suite(tasks: Sequence[GeneratedTask], folder: str | Path, name: str, d
     """Writes the suite file ``<folder>/<name>.yaml``, its worlds (``<folder>/<name>/worlds/``) and the oracle
     programs (``<folder>/<name>/<id>.py``); returns the suite file's path, loaded back and validated."""
     if not tasks:
-        raise ValueError("no tasks to write: no family fits the generated worlds")
+        raise InvalidArgumentError("no tasks to write: no family fits the generated worlds")
     folder = Path(folder)
     programs = folder / name
     worlds = programs / "worlds"

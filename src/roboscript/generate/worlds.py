@@ -16,6 +16,7 @@ from pathlib import Path
 import numpy as np
 import yaml
 
+from roboscript.errors import InvalidArgumentError
 from roboscript.generate.recipe import Recipe, row_kind
 from roboscript.generate.scene import DRAWERS_USED
 from roboscript.objects import get_object_type
@@ -205,7 +206,7 @@ def generate_worlds(
     """Writes ``count`` worlds (``<prefix>_<i>.yaml``) into ``out`` and returns their paths; ``on_world`` is told
     of each as it is written (a top view, progress)."""
     if count < 1:
-        raise ValueError(f"count must be at least 1, got {count}")
+        raise InvalidArgumentError(f"count must be at least 1, got {count}")
     out = Path(out)
     out.mkdir(parents=True, exist_ok=True)
     paths = []

@@ -7,7 +7,7 @@ import json
 from abc import ABC, abstractmethod
 from dataclasses import asdict, dataclass, field
 
-from roboscript.errors import RoboScriptError
+from roboscript.errors import InvalidArgumentError, RoboScriptError
 
 
 class LLMError(RoboScriptError, RuntimeError):
@@ -26,13 +26,22 @@ class LLMRequest:
     def __post_init__(self):
         for i, message in enumerate(self.messages):
             if not isinstance(message, dict) or set(message) != {"role", "content"}:
-                raise ValueError(f"message {i} must be a dict with exactly 'role' and 'content', got {message!r}")
+                raise InvalidArgumentError(
+                    f"message {i} must be a dict with exactly 'role' and 'content', got "
+                    f"{message!r}"
+                )
             if message["role"] not in ("system", "user", "assistant"):
-                raise ValueError(f"message {i} has role {message['role']!r}; use 'system', 'user' or 'assistant'")
+                raise InvalidArgumentError(
+                    f"message {i} has role {message['role']!r}; use 'system', 'user' or "
+                    "'assistant'"
+                )
             if not isinstance(message["content"], str):
-                raise ValueError(f"message {i} content must be a string, got {type(message['content']).__name__}")
+                raise InvalidArgumentError(
+                    f"message {i} content must be a string, got "
+                    f"{type(message['content']).__name__}"
+                )
         if self.max_tokens < 1:
-            raise ValueError(f"max_tokens must be at least 1, got {self.max_tokens}")
+            raise InvalidArgumentError(f"max_tokens must be at least 1, got {self.max_tokens}")
 
     def key(self, model: str) -> str:
         """A stable hash of the request and the model it is for (for the response store)."""

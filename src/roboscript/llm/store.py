@@ -12,6 +12,7 @@ import tempfile
 from dataclasses import asdict
 from pathlib import Path
 
+from roboscript.errors import InvalidArgumentError
 from roboscript.llm.base import LLM, LLMError, LLMRequest, LLMResponse
 
 
@@ -72,7 +73,7 @@ class StoredLLM(LLM):
 
     def __init__(self, inner: LLM, store: ResponseStore, mode: str = "cache"):
         if mode not in ("cache", "record"):
-            raise ValueError(f"mode must be 'cache' or 'record', got {mode!r}")
+            raise InvalidArgumentError(f"mode must be 'cache' or 'record', got {mode!r}")
         self.inner, self.store, self.mode = inner, store, mode
         self.name = inner.name
 

@@ -14,6 +14,7 @@ from dataclasses import dataclass
 import mujoco
 import numpy as np
 
+from roboscript.errors import InvalidArgumentError
 from roboscript.geometry import Transform, matrix_to_quat, quat_to_mujoco
 from roboscript.phases import timed
 from roboscript.robot_io import CameraFrame
@@ -203,7 +204,7 @@ class Renderer:
     ) -> CameraFrame:
         """Depth, and optionally RGB and segmentation, from camera ``name`` with its calibration."""
         if spec is not None and (spec.width, spec.height) != (self.width, self.height):
-            raise ValueError(
+            raise InvalidArgumentError(
                 f"camera {camera!r} is {spec.width}x{spec.height} but this renderer renders "
                 f"{self.width}x{self.height}; create a Renderer of that size"
             )

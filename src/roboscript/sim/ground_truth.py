@@ -11,6 +11,7 @@ from dataclasses import dataclass
 import mujoco
 import numpy as np
 
+from roboscript.errors import InvalidArgumentError
 from roboscript.geometry import Box3D, Transform
 from roboscript.sim.furniture import compartment_interior
 from roboscript.sim.world import Entity, SimWorld
@@ -143,14 +144,14 @@ class GroundTruth:
         """Tight world axis-aligned box around every geom of ``name`` (exact for primitives)."""
         geoms = self._entity_geoms[self.entity(name).name]
         if len(geoms) == 0:
-            raise ValueError(f"{name!r} has no geometry")
+            raise InvalidArgumentError(f"{name!r} has no geometry")
         return geoms_box(self.model, self.data, geoms)
 
     def local_box(self, name: str, frame: Transform) -> Box3D:
         """Tight box around every geom of ``name`` in the axes of ``frame`` (exact for primitives)."""
         geoms = self._entity_geoms[self.entity(name).name]
         if len(geoms) == 0:
-            raise ValueError(f"{name!r} has no geometry")
+            raise InvalidArgumentError(f"{name!r} has no geometry")
         return geoms_box(self.model, self.data, geoms, frame)
 
     def outline(self, name: str) -> np.ndarray:
@@ -176,11 +177,11 @@ class GroundTruth:
         while self.model.body_jntnum[body] == 0 and body > 0:
             body = self.model.body_parentid[body]
         if body <= 0:
-            raise ValueError(f"{name!r} is not articulated; articulated parts: {self._articulated()}")
+            raise InvalidArgumentError(f"{name!r} is not articulated; articulated parts: {self._articulated()}")
         j = self.model.body_jntadr[body]
         jtype = int(self.model.jnt_type[j])
         if jtype not in (int(mujoco.mjtJoint.mjJNT_SLIDE), int(mujoco.mjtJoint.mjJNT_HINGE)):
-            raise ValueError(f"{name!r} moves freely; articulated parts: {self._articulated()}")
+            raise InvalidArgumentError(f"{name!r} moves freely; articulated parts: {self._articulated()}")
         return JointInfo(
             name=self.model.joint(j).name,
             type="prismatic" if jtype == int(mujoco.mjtJoint.mjJNT_SLIDE) else "revolute",

@@ -13,6 +13,7 @@ from collections.abc import Callable
 import mujoco
 import numpy as np
 
+from roboscript.errors import InvalidArgumentError
 from roboscript.phases import timed
 from roboscript.robot_io import ExecutionReport, GripperReport
 from roboscript.sim.world import SimWorld
@@ -156,10 +157,13 @@ class Simulator:
         """
         r = self.robot
         if trajectory.dof != len(r.qpos):
-            raise ValueError(f"trajectory has {trajectory.dof} joints, the {r.description.name} arm has {len(r.qpos)}")
+            raise InvalidArgumentError(
+                f"trajectory has {trajectory.dof} joints, the {r.description.name} arm has "
+                f"{len(r.qpos)}"
+            )
         deviation = float(np.max(np.abs(trajectory.positions[0] - self.joint_positions())))
         if deviation > max_start_deviation:
-            raise ValueError(
+            raise InvalidArgumentError(
                 f"trajectory starts {deviation:.3f} rad away from the current configuration; it must start at "
                 f"the robot's joint positions {np.round(self.joint_positions(), 4).tolist()}"
             )
@@ -169,7 +173,7 @@ class Simulator:
         )
         if np.any(bad):
             i = int(np.argmax(bad))
-            raise ValueError(
+            raise InvalidArgumentError(
                 f"trajectory point {i} (t={trajectory.times[i]:.3f} s) leaves the joint limits: "
                 f"{np.round(trajectory.positions[i], 4).tolist()} not within {np.round(r.joint_lower, 4).tolist()}"
                 f" .. {np.round(r.joint_upper, 4).tolist()}"
@@ -209,7 +213,7 @@ class Simulator:
     def set_gripper(self, closed: float, timeout: float = 1.5) -> GripperReport:
         """Commands the gripper (0 open .. 1 closed) and steps until the fingers stop or ``timeout`` passes."""
         if not 0.0 <= closed <= 1.0:
-            raise ValueError(f"gripper command must be within 0 (open) and 1 (closed), got {closed}")
+            raise InvalidArgumentError(f"gripper command must be within 0 (open) and 1 (closed), got {closed}")
         g = self.robot.description.gripper
         self.data.ctrl[self.robot.gripper_actuator] = g.open_ctrl + closed * (g.closed_ctrl - g.open_ctrl)
         start = self.time

@@ -16,6 +16,7 @@ import yaml
 
 from roboscript.bench.task_file import load_suite_file
 from roboscript.codegen.prompt import task_query
+from roboscript.errors import InvalidArgumentError
 from roboscript.names import TABLE
 from roboscript.study.study_file import Study, choose
 
@@ -36,7 +37,7 @@ class Cell:
     def from_task_id(task_id: str) -> Cell:
         parts = task_id.split(".")
         if len(parts) != 3:
-            raise ValueError(f"{task_id!r} is not a study cell's task id (template.object.grasp)")
+            raise InvalidArgumentError(f"{task_id!r} is not a study cell's task id (template.object.grasp)")
         return Cell(*parts)
 
 

@@ -16,6 +16,7 @@ from pathlib import Path
 
 from roboscript.bench.trial import TrialRecord, TrialSpec
 from roboscript.datafile import names_a_file
+from roboscript.errors import InvalidArgumentError
 from roboscript.study.sweep import Executor
 
 
@@ -42,7 +43,10 @@ def pack_suite(suite: str) -> dict[str, bytes]:
     packed = {}
     for file in files:
         if not file.is_relative_to(base):
-            raise ValueError(f"{file} is outside the suite's folder {base}; on Ray a suite's files must lie beside it")
+            raise InvalidArgumentError(
+                f"{file} is outside the suite's folder {base}; on Ray a suite's files must lie beside "
+                "it"
+            )
         packed[str(file.relative_to(base))] = file.read_bytes()
     return packed
 

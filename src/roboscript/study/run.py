@@ -8,6 +8,7 @@ from collections.abc import Sequence
 from dataclasses import dataclass
 from pathlib import Path
 
+from roboscript.errors import InvalidArgumentError
 from roboscript.study.cells import Cell
 from roboscript.study.study_file import load_study
 from roboscript.study.sweep import Executor, run_sweep
@@ -55,7 +56,7 @@ def run_study(sweep: Sweep, out: str | Path, executor: Executor, progress: bool 
     """Runs (or resumes) the study's sweep into ``out`` and writes ``study.md``, ``study.csv``, ``study.json`` and
     a bar chart per robot and grasp tool (``objects_<robot>_<grasp>.png``) beside the run directories."""
     if sweep.study is None:
-        raise ValueError("run_study needs a study's sweep (see study_sweep)")
+        raise InvalidArgumentError("run_study needs a study's sweep (see study_sweep)")
     out = Path(out)
     started = time.perf_counter()
     runs = run_sweep(sweep, out, executor, progress)

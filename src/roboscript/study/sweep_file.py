@@ -26,6 +26,7 @@ from pathlib import Path
 from typing import Any
 
 from roboscript.datafile import DataFileError, Reader, names_a_file, read_data_file
+from roboscript.errors import InvalidArgumentError
 
 VIDEO_CHOICES = ("none", "failed", "all")
 _FIELDS = {
@@ -72,9 +73,9 @@ class Sweep:
 
     def __post_init__(self) -> None:
         if self.trials < 1:
-            raise ValueError(f"a sweep needs at least 1 trial, got {self.trials}")
+            raise InvalidArgumentError(f"a sweep needs at least 1 trial, got {self.trials}")
         if self.videos not in VIDEO_CHOICES:
-            raise ValueError(f"videos must be one of {', '.join(VIDEO_CHOICES)}, got {self.videos!r}")
+            raise InvalidArgumentError(f"videos must be one of {', '.join(VIDEO_CHOICES)}, got {self.videos!r}")
 
 
 def _names(reader: Reader, key: str, default: tuple[str, ...] | None) -> tuple[str, ...] | None:
