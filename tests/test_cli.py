@@ -76,9 +76,7 @@ def test_the_commands_offer_every_robot_there_is():
 def test_the_command_line_imports_what_a_command_runs_only_when_it_runs():
     """Importing the command line imports neither the simulator nor the benchmark: a command's implementation is
     imported when the command runs."""
-    probe = (
-        "import sys; import roboscript.cli.main; "
-        "print(sorted(m for m in ('mujoco', 'roboscript.bench.trial', 'roboscript.assembly', 'scipy') if m in sys.modules))"
-    )
+    heavy = "('mujoco', 'roboscript.bench.trial', 'roboscript.assembly', 'scipy')"
+    probe = f"import sys; import roboscript.cli.main; print(sorted(m for m in {heavy} if m in sys.modules))"
     out = subprocess.run([sys.executable, "-c", probe], capture_output=True, text=True, check=True).stdout
     assert out.strip() == "[]"
