@@ -80,3 +80,36 @@ def test_the_command_line_imports_what_a_command_runs_only_when_it_runs():
     probe = f"import sys; import roboscript.cli.main; print(sorted(m for m in {heavy} if m in sys.modules))"
     out = subprocess.run([sys.executable, "-c", probe], capture_output=True, text=True, check=True).stdout
     assert out.strip() == "[]"
+
+
+def test_the_tool_reference_in_the_docs_is_what_the_llm_is_shown(capsys):
+    from pathlib import Path
+
+    assert main(["tools"]) == 0
+    printed = capsys.readouterr().out.strip()
+    page = (Path(__file__).resolve().parents[1] / "docs" / "tool_reference.md").read_text()
+    assert printed in page and "def parse_place_pose(" in printed  # regenerate: roboscript tools
+
+
+def test_version_and_a_closed_pipe_end_quietly():
+    version = subprocess.run([sys.executable, "-m", "roboscript.cli", "--version"], capture_output=True, text=True)
+    assert version.returncode == 0 and version.stdout.startswith("roboscript ")
+    piped = subprocess.run(
+        f"{sys.executable} -m roboscript.cli objects | head -1", shell=True, capture_output=True, text=True
+    )
+    assert piped.stdout.startswith("type") and "Traceback" not in piped.stderr and "BrokenPipe" not in piped.stderr
+
+
+def test_a_trial_that_ran_but_failed_its_checks_is_not_reported_ok():
+    import io
+
+    from roboscript.bench.benchmark import progress_printer
+    from roboscript.bench.trial import TrialRecord
+
+    stream = io.StringIO()
+    report = progress_printer(2, stream)
+    failed = {"check": "in(apple, footed_bowl)", "passed": False, "detail": ""}
+    report(TrialRecord("simple_0", "panda", 0, 0, True, None, [failed], outcome="checks_failed"))
+    report(TrialRecord("simple_0", "panda", 1, 1, True, None, [{**failed, "passed": True}]))
+    first, second = stream.getvalue().splitlines()
+    assert "0/1 checks, checks failed" in first and "1/1 checks, ok" in second

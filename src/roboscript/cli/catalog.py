@@ -94,7 +94,17 @@ def cmd_tasks(args: argparse.Namespace) -> int:
     return 0
 
 
+def cmd_tools(args: argparse.Namespace) -> int:
+    from roboscript.codegen.prompt import tool_reference
+
+    print(tool_reference())
+    return 0
+
+
 def add_catalog_commands(sub) -> None:
+    sub.add_parser("tools", help="the tool API as the LLM sees it: every tool with its doc-string").set_defaults(
+        func=cmd_tools
+    )
     sub.add_parser("worlds", help="list the packaged worlds").set_defaults(func=cmd_worlds)
     sub.add_parser("objects", help="list the object library").set_defaults(func=cmd_objects)
     sub.add_parser("assets", help="show where each robot model is found").set_defaults(func=cmd_assets)
