@@ -17,8 +17,7 @@ def load_summary(run: Path) -> dict:
     path = Path(run) / "summary.json"
     if not path.is_file():
         raise InvalidArgumentError(
-            f"{run} is not a benchmark run directory (no summary.json); `roboscript bench` writes "
-            "one"
+            f"{run} is not a benchmark run directory (no summary.json); `roboscript bench` writes one"
         )
     return json.loads(path.read_text())
 

@@ -75,8 +75,7 @@ class RosTrialWorld(TrialWorld):
         spec = self.spec
         if spec.video:
             raise InvalidArgumentError(
-                "--video is not recorded through ROS yet; record the twin with the mujoco "
-                "backend"
+                "--video is not recorded through ROS yet; record the twin with the mujoco backend"
             )
         uri = _process_master()
         self.sim = start_sim(

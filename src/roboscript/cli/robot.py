@@ -203,15 +203,13 @@ def cmd_ros_sim(args: argparse.Namespace) -> int:
         raise InvalidArgumentError(f"robot configuration {config.name} is for the {config.robot.name}, not the {robot}")
     if not os.environ.get("ROS_MASTER_URI"):
         raise InvalidArgumentError(
-            "ROS_MASTER_URI is not set: start a master (rosmaster --core -p 11311) and export its "
-            "URI"
+            "ROS_MASTER_URI is not set: start a master (rosmaster --core -p 11311) and export its URI"
         )
     try:
         from roboscript.rossim.server import serve
     except ImportError as exc:
         raise InvalidArgumentError(
-            "ros-sim needs ROS 1 (rospy, actionlib): see the README's ROS section "
-            f"({exc})"
+            f"ros-sim needs ROS 1 (rospy, actionlib): see the README's ROS section ({exc})"
         ) from None
     task = None
     if args.task:

@@ -195,13 +195,14 @@ class FrankyDriver(Driver):
             with self._lock:
                 if self._robot.recover_from_errors():
                     return True
-                # libfranka judged the recovery on the newest state it held, which can predate the recovery's
-                # answer: judge it again on states read after it
-                for _ in range(RECOVERY_READS):
-                    time.sleep(0.01)
+            # libfranka judged the recovery on the newest state it held, which can predate the recovery's answer:
+            # judge it again on states read after it (the lock not held while waiting for them)
+            for _ in range(RECOVERY_READS):
+                time.sleep(0.01)
+                with self._lock:
                     if not self._robot.has_errors:
                         return True
-                return False
+            return False
         except self._franky.Exception as error:
             log.warning("recovering from the robot's errors: %s", error)
             return False

@@ -27,18 +27,15 @@ class LLMRequest:
         for i, message in enumerate(self.messages):
             if not isinstance(message, dict) or set(message) != {"role", "content"}:
                 raise InvalidArgumentError(
-                    f"message {i} must be a dict with exactly 'role' and 'content', got "
-                    f"{message!r}"
+                    f"message {i} must be a dict with exactly 'role' and 'content', got {message!r}"
                 )
             if message["role"] not in ("system", "user", "assistant"):
                 raise InvalidArgumentError(
-                    f"message {i} has role {message['role']!r}; use 'system', 'user' or "
-                    "'assistant'"
+                    f"message {i} has role {message['role']!r}; use 'system', 'user' or 'assistant'"
                 )
             if not isinstance(message["content"], str):
                 raise InvalidArgumentError(
-                    f"message {i} content must be a string, got "
-                    f"{type(message['content']).__name__}"
+                    f"message {i} content must be a string, got {type(message['content']).__name__}"
                 )
         if self.max_tokens < 1:
             raise InvalidArgumentError(f"max_tokens must be at least 1, got {self.max_tokens}")

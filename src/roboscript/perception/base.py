@@ -13,7 +13,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from roboscript.errors import UsageError, did_you_mean
+from roboscript.errors import UnknownNameError, did_you_mean
 from roboscript.geometry import Box3D, Transform
 from roboscript.names import TABLE
 from roboscript.perception.footprints import rectangle_outline
@@ -24,7 +24,7 @@ OCCUPANCY_MARGIN = 0.02  # metres around an ignored object's box whose points ar
 DRAWER_FRONT_CLEARANCE = 0.03
 
 
-class UnknownObjectError(UsageError, KeyError):
+class UnknownObjectError(UnknownNameError):
     """No object of that name is known; the message suggests the closest known names."""
 
     def __init__(self, name: object, known: list[str]):
@@ -34,9 +34,6 @@ class UnknownObjectError(UsageError, KeyError):
         hint = f"; {close}" if close else ""
         message = f"no object named {name!r}{hint} Known objects: {', '.join(self.known)}"
         super().__init__(message)
-
-    def __str__(self) -> str:  # KeyError would print the message in quotes
-        return str(self.args[0])
 
 
 class ObjectNotFoundError(UnknownObjectError):

@@ -158,8 +158,7 @@ class Simulator:
         r = self.robot
         if trajectory.dof != len(r.qpos):
             raise InvalidArgumentError(
-                f"trajectory has {trajectory.dof} joints, the {r.description.name} arm has "
-                f"{len(r.qpos)}"
+                f"trajectory has {trajectory.dof} joints, the {r.description.name} arm has {len(r.qpos)}"
             )
         deviation = float(np.max(np.abs(trajectory.positions[0] - self.joint_positions())))
         if deviation > max_start_deviation:

@@ -44,8 +44,7 @@ def pack_suite(suite: str) -> dict[str, bytes]:
     for file in files:
         if not file.is_relative_to(base):
             raise InvalidArgumentError(
-                f"{file} is outside the suite's folder {base}; on Ray a suite's files must lie beside "
-                "it"
+                f"{file} is outside the suite's folder {base}; on Ray a suite's files must lie beside it"
             )
         packed[str(file.relative_to(base))] = file.read_bytes()
     return packed
