@@ -43,13 +43,14 @@ def franky_perception(mode: PerceptionMode) -> PerceptionMode:
 class FrankyTrialWorld(TrialWorld):
     """One attempt's world served by franky-sim, the tools driving its FR3 through libfranka."""
 
+    sim = cameras = None
+
     def __init__(self, spec, task: Task):
         if spec.robot != "fr3":
             raise UsageError(f"--backend franky drives an FR3 through libfranka: pass --robot fr3 (got {spec.robot})")
         if spec.video or spec.record:
             raise UsageError("--video and --record are not taken through libfranka; run the mujoco backend for them")
         super().__init__(spec, task)
-        self.sim = self.cameras = None
 
     def build(self) -> None:
         from roboscript.assembly import build_tools
