@@ -89,7 +89,8 @@ def test_camera_perception_without_open3d_says_which_extra_to_install(monkeypatc
     import importlib.util
 
     from roboscript.assembly import build_perception
-    from roboscript.errors import UsageError
+    from roboscript.errors import MissingExtraError
+    from roboscript.extras import install_hint
 
     real_find_spec = importlib.util.find_spec
 
@@ -99,8 +100,9 @@ def test_camera_perception_without_open3d_says_which_extra_to_install(monkeypatc
 
     monkeypatch.setattr(importlib.util, "find_spec", find_spec)
     with MujocoBackend("world_2_pick_and_place", settle=0) as backend:
-        with pytest.raises(UsageError, match=r"perception gt-2d sees through the cameras, which needs Open3D: pip"):
+        with pytest.raises(MissingExtraError, match=r"--perception gt-2d needs Open3D") as info:
             build_perception(backend, "gt-2d")
+        assert install_hint("perception") in str(info.value)
         assert build_perception(backend, "gt").names()  # ground truth needs no Open3D
 
 

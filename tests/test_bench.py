@@ -100,7 +100,8 @@ def test_a_resumed_run_tries_again_the_trials_that_never_ran_and_counts_each_tri
     assert again.write_summary(["simple_0"])["tasks"]["simple_0"]["whole_task_success"] == 0.5
 
 
-def exec_json(tmp_path, source, *args):
+def exec_json(tmp_path, source, *args, code=0):
+    """``roboscript exec --json`` of ``source`` on simple_0; its exit code must be ``code``."""
     program = tmp_path / "program.py"
     program.write_text(source)
     out = subprocess.run(
@@ -109,14 +110,13 @@ def exec_json(tmp_path, source, *args):
         text=True,
         timeout=600,
     )
-    assert out.returncode == 0, out.stderr
+    assert out.returncode == code, out.stderr
     return json.loads(out.stdout.strip().splitlines()[-1])
 
 
 @pytest.mark.parametrize(
     ("source", "error"),
     [
-        ("open_gripper(\n", "SyntaxError"),
         (
             "x = get_object_center_position('aple')\n",
             "UnknownObjectError: no object named 'aple'; did you mean 'apple'",
@@ -125,15 +125,48 @@ def exec_json(tmp_path, source, *args):
     ],
 )
 def test_exec_reports_each_failing_trial_as_a_grammar_failure_and_goes_on(tmp_path, source, error):
-    result = exec_json(tmp_path, source, "--trials", "2", "--timeout", "3", "--jobs", "2")
+    result = exec_json(tmp_path, source, "--trials", "2", "--timeout", "3", "--jobs", "2", code=1)
     assert result["task"] == "simple_0" and result["trials"] == 2
     assert result["grammar_correctness"] == 0.0 and result["whole_task_success"] == 0.0
     assert [t["trial"] for t in result["per_trial"]] == [0, 1]
     for trial in result["per_trial"]:
         assert trial["ok"] is False and error in trial["error"]
         assert trial["checks"] and trial["checks"][0]["passed"] is False
-    if "line" in error or error == "SyntaxError":
+    if "line" in error:
         assert "(program line 1)" in result["per_trial"][0]["error"]
+
+
+@pytest.mark.parametrize(
+    ("source", "outcome", "error"),
+    [
+        ("print('hello')\nopen_gripper(\n", "syntax", "SyntaxError: '(' was never closed (program line 2)"),
+        ("get_object_names()\n", "unknown_function", "did you mean get_object_name_list"),
+        ("import os\n", "forbidden_construct", "import of 'os' is not allowed"),
+    ],
+)
+def test_exec_reports_a_program_the_checks_refuse_once_before_any_trial(tmp_path, source, outcome, error):
+    """Ten trials of a program that cannot run would say the same thing ten times: it is said once, nothing runs,
+    and the exit status says the task failed."""
+    program = tmp_path / "program.py"
+    program.write_text(source)
+    command = [sys.executable, "-m", "roboscript.cli", "exec", str(program), "--task", "simple_0", "--trials", "10"]
+    out = subprocess.run(command, capture_output=True, text=True, timeout=600)
+    assert out.returncode == 1, out.stderr
+    assert out.stdout.count(error) == 1 and "not run: refused before any trial" in out.stdout
+    assert "trial 0" not in out.stdout + out.stderr and "hello" not in out.stdout  # no trial ran, nothing printed
+    result = exec_json(tmp_path, source, "--trials", "10", code=1)
+    assert result["trials"] == 0 and result["outcome"] == outcome and error in result["error"]
+
+
+def test_an_llm_runs_default_folder_is_named_by_its_model_not_its_endpoint():
+    from roboscript.bench.benchmark import default_out, folder_label
+
+    local = "llm:openai:gpt-4o@http://127.0.0.1:8080/v1"
+    assert default_out(folder_label(local), "panda") == "out/bench/llm-gpt-4o_panda"
+    assert folder_label("llm:llama:/models/qwen2.5-coder-7b.Q4_K_M.gguf", 1) == "llm-qwen2.5-coder-7b.Q4_K_M+repair1"
+    assert folder_label("llm:cache:out/cache=openai:gpt-4o-mini@http://h/v1") == "llm-gpt-4o-mini"
+    assert folder_label("programs:tests/data/gpt4_answers/") == "programs-gpt4_answers"
+    assert folder_label("reference") == "reference"
 
 
 def test_exec_runs_the_reference_program_and_records_a_video(tmp_path):
@@ -263,7 +296,7 @@ def test_exec_json_is_one_document_whatever_the_program_and_the_tools_print(tmp_
     program.write_text(JSON_LOOKING)
     command = [sys.executable, "-m", "roboscript.cli", "exec", str(program), "--task", "simple_0", "--trials", "1"]
     out = subprocess.run([*command, "--json"], capture_output=True, text=True, timeout=600)
-    assert out.returncode == 0, out.stderr
+    assert out.returncode == 1, out.stderr  # the apple is beside the bowl, not in it: the task failed
     result = json.loads(out.stdout)  # the whole of stdout, not its last line
     trial = result["per_trial"][0]
     assert trial["error"] is None, trial["error"]
@@ -271,3 +304,19 @@ def test_exec_json_is_one_document_whatever_the_program_and_the_tools_print(tmp_
     assert lines[:2] == ['{"task": "not the report", "whole_task_success": 1.0}', "[1, 2, 3]"]
     assert any(line.startswith("[notice] parse_place_pose:") and "cm away" in line for line in lines)
     assert lines[-1] == "}"
+
+
+def test_exec_shows_what_the_program_printed_and_what_the_tools_noticed_each_under_its_label(tmp_path):
+    program = tmp_path / "program.py"
+    program.write_text(JSON_LOOKING)
+    video = tmp_path / "beside.mp4"
+    command = [sys.executable, "-m", "roboscript.cli", "exec", str(program), "--task", "simple_0"]
+    out = subprocess.run([*command, "--video", str(video)], capture_output=True, text=True, timeout=600)
+    assert out.returncode == 1, out.stderr
+    assert "  trial 0 (seed 0): checks failed, 0/1 checks" in out.stdout
+    printed = '    printed:\n      {"task": "not the report", "whole_task_success": 1.0}\n      [1, 2, 3]\n      }\n'
+    assert printed in out.stdout
+    notices = out.stdout.split("    notices:\n", 1)[1].splitlines()
+    assert notices[0].startswith("      parse_place_pose:") and "cm away" in notices[0]
+    assert "[notice]" not in out.stdout
+    assert f"    video: {video}" in out.stdout and video.stat().st_size > 0  # where the video went

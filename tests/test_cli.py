@@ -103,7 +103,7 @@ def test_version_and_a_closed_pipe_end_quietly():
 def test_a_trial_that_ran_but_failed_its_checks_is_not_reported_ok():
     import io
 
-    from roboscript.bench.benchmark import progress_printer
+    from roboscript.bench.progress import ProgressBar, progress_printer
     from roboscript.bench.trial import TrialRecord
 
     stream = io.StringIO()
@@ -113,3 +113,76 @@ def test_a_trial_that_ran_but_failed_its_checks_is_not_reported_ok():
     report(TrialRecord("simple_0", "panda", 1, 1, True, None, [{**failed, "passed": True}]))
     first, second = stream.getvalue().splitlines()
     assert "0/1 checks, checks failed" in first and "1/1 checks, ok" in second
+    bar_stream = io.StringIO()
+    bar = ProgressBar(1, stream=bar_stream)
+    bar.update(TrialRecord("simple_0", "panda", 0, 0, True, None, [failed], outcome="checks_failed"))
+    assert bar_stream.getvalue().rstrip().endswith("simple_0 #0: checks failed")
+
+
+def test_help_gives_every_options_default_and_what_the_exit_status_means(capsys):
+    import pytest
+
+    shown = {}
+    for command in ("exec", "bench"):
+        with pytest.raises(SystemExit):
+            main([command, "--help"])
+        shown[command] = " ".join(capsys.readouterr().out.split())  # argparse wraps lines anywhere
+    assert "how many trials, each with its own seed (default: 1)" in shown["exec"]
+    assert "how many trials, each with its own seed (default: 10)" in shown["bench"]
+    assert "--seed SEED trial i uses seed + i for the world's randomisation (default: 0)" in shown["exec"]
+    assert "the arm (default: panda)" in shown["exec"] and "(default: none)" in shown["bench"]  # --videos
+    assert "exit status: 0 when every trial passed its task's checks" in shown["exec"]
+    assert "1 when one did not, 2 for a usage error or a missing optional part" in shown["bench"]
+
+
+def test_a_missing_extra_is_a_usage_error_with_its_install_command_before_any_trial(tmp_path, monkeypatch, capsys):
+    from roboscript import extras
+    from roboscript.bench.runner import TrialPool
+
+    program = tmp_path / "program.py"
+    program.write_text("open_gripper()\n")
+    real = extras.installed
+    # Test doubles: the perception and record extras look absent, and a trial that starts is noted, not run.
+    monkeypatch.setattr(extras, "installed", lambda name: name not in ("perception", "record") and real(name))
+    started = []
+    monkeypatch.setattr(TrialPool, "run", lambda self, specs, *a, **k: started.extend(specs) or [])
+    exec_ = ["exec", str(program), "--task", "simple_0"]
+    assert main([*exec_, "--perception", "full"]) == 2
+    error = capsys.readouterr().err
+    assert error.startswith("roboscript: error: --perception full needs Open3D") and "Traceback" not in error
+    assert f"install it with: {extras.install_hint('perception')}" in error
+    assert main([*exec_, "--record", str(tmp_path / "trial.mcap")]) == 2
+    assert "--record needs mcap (MCAP recordings), which is not installed" in capsys.readouterr().err
+    assert main(["bench", "--tasks", "simple_0", "--perception", "gt-2d", "--out", str(tmp_path / "b")]) == 2
+    assert "--perception gt-2d needs Open3D" in capsys.readouterr().err
+    assert started == [] and not (tmp_path / "b").exists()
+
+
+def test_the_install_hint_in_a_clone_is_the_clones_own_pip(monkeypatch):
+    from roboscript import extras
+
+    root = extras.source_checkout()
+    assert root is not None and (root / "pyproject.toml").is_file()  # the tests run from a clone
+    monkeypatch.chdir(root)
+    monkeypatch.setattr(sys, "executable", str(root / ".venv" / "bin" / "python"))
+    assert extras.install_hint("perception") == ".venv/bin/pip install -e '.[perception]'"
+    monkeypatch.chdir("/")
+    assert extras.install_hint("record") == f"{root}/.venv/bin/pip install -e '{root}[record]'"
+
+
+def test_bench_exits_1_when_a_trial_fails_and_keeps_the_videos_of_the_failures(tmp_path):
+    programs = tmp_path / "programs"
+    programs.mkdir()
+    (programs / "simple_0.py").write_text("open_gripper()\n")  # runs, and leaves the apple where it is
+    out = tmp_path / "run"
+    command = [sys.executable, "-m", "roboscript.cli", "bench", "--tasks", "simple_0", "--videos", "failed"]
+    failing = [*command, "--policy", f"programs:{programs}", "--trials", "2", "--jobs", "2", "--out", str(out)]
+    run = subprocess.run(failing, capture_output=True, text=True, timeout=600)
+    assert run.returncode == 1, run.stderr
+    assert sorted(p.name for p in (out / "videos").iterdir()) == ["simple_0_trial0.mp4", "simple_0_trial1.mp4"]
+    assert f"videos in {out / 'videos'}" in run.stdout
+    assert "2/2 100% | ok 0 failed 2 |" in run.stderr and "simple_0 #1: checks failed" in run.stderr
+    passing = [*command, "--trials", "1", "--jobs", "1", "--out", str(tmp_path / "reference")]
+    run = subprocess.run(passing, capture_output=True, text=True, timeout=600)
+    assert run.returncode == 0, run.stderr
+    assert not list((tmp_path / "reference" / "videos").glob("*.mp4"))  # a success keeps no video

@@ -248,6 +248,7 @@ def test_run_and_bench_with_an_llm_policy_save_each_generated_program(tmp_path):
         out = tmp_path / "bench"
         bench = _cli("bench", "--policy", f"llm:{llm}", "--tasks", "simple_0", "--trials", "1", "--out", str(out))
         assert bench.returncode == 0, bench.stderr
+        assert "1/1 100% | ok 1 failed 0 |" in bench.stderr and "ETA" in bench.stderr  # the progress bar
     (record,) = [json.loads(line) for line in (out / "results.jsonl").read_text().splitlines()]
     assert record["outcome"] == "ok" and record["program"].startswith("# Task")
     assert record["llm_exchanges"][0]["response"] == reply
@@ -305,7 +306,13 @@ def test_run_in_a_world_without_a_task_acts_and_checks_nothing():
         llm = f"openai:scripted@{server.url}"
         run = _cli("run", "Lift the hand a little", "--world", "world_2_pick_and_place", "--llm", llm, "--show-code")
     assert run.returncode == 0, run.stderr
-    assert "trial 0: ok" in run.stdout and "nothing was checked" in run.stdout and "move_in_direction" in run.stdout
+    assert "trial 0 (seed 0): ran to its end" in run.stdout and "nothing was checked" in run.stdout
+    assert "move_in_direction" in run.stdout and "    printed:\n      done" in run.stdout
+    # what the trial is doing is shown as it happens, on stderr
+    stages = ["building the world", "asking openai:scripted@", "checking the program", "running the program",
+              "the program ended; evaluating what it did"]  # fmt: skip
+    at = [run.stderr.find(f"trial 0: {stage}") for stage in stages]
+    assert -1 not in at and at == sorted(at), run.stderr
     assert server.requests[0]["messages"][-1]["content"].endswith("# Lift the hand a little")
     both = _cli("run", "x", "--world", "world_2_pick_and_place", "--task", "simple_0", "--llm", llm)
     assert both.returncode == 2 and "not allowed with argument" in both.stderr

@@ -11,6 +11,7 @@ pytest.importorskip("franky_sim", reason="the franky extra is not installed (mak
 from roboscript.backends.mujoco_backend import MujocoBackend
 from roboscript.bench.tasks import get_task
 from roboscript.bench.trial import TrialSpec, run_trial
+from roboscript.extras import install_hint
 from roboscript.robots import assets, get_robot
 from roboscript.robots.assets import FR3, AssetNotFoundError, resolve_model
 
@@ -27,7 +28,7 @@ def test_without_franky_sim_the_error_says_which_extra_brings_the_fr3(monkeypatc
     with pytest.raises(AssetNotFoundError) as info:
         resolve_model(FR3.directory)
     assert "offline package franky_sim: the package franky_sim is not installed" in str(info.value)
-    assert "pip install 'roboscript[franky]'" in str(info.value)
+    assert install_hint("franky") in str(info.value)
 
 
 def test_the_fr3_holds_its_home_and_its_hand_opens_and_closes_like_the_pandas():
@@ -57,7 +58,7 @@ def test_roboscript_assets_calls_the_fr3_optional_when_its_extra_is_absent_and_a
     monkeypatch.setattr(assets, "_package_dir", lambda package: None if package == "franky_sim" else real(package))
     assert main(["assets"]) == 0  # setup.sh runs it under `set -e` without the extra
     assert (
-        "franka_fr3_hand          not installed (optional: pip install 'roboscript[franky]')" in capsys.readouterr().out
+        f"franka_fr3_hand          not installed (optional: {install_hint('franky')})" in capsys.readouterr().out
     )
     monkeypatch.setattr(assets, "_OFFLINE_SHA256", {**assets._OFFLINE_SHA256, ("franky_sim", FR3.directory): "0" * 64})
     monkeypatch.setattr(assets, "_package_dir", real)

@@ -34,7 +34,7 @@ def test_a_local_gguf_model_runs_the_whole_pipeline_and_its_failure_is_reported(
     command = [sys.executable, "-m", "roboscript.cli", "run", "Place the apple into the footed bowl", "--task",
                "simple_0", "--llm", f"llama:{gguf}", "--timeout", "120", "--video", str(video), "--json"]  # fmt: skip
     run = subprocess.run(command, capture_output=True, text=True, timeout=900)
-    assert run.returncode == 0, run.stderr
+    assert run.returncode == 1, run.stderr  # the run went through, and the task failed
     result = json.loads(run.stdout.strip().splitlines()[-1])
     (trial,) = result["per_trial"]
     (program,) = result["programs"]

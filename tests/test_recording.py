@@ -65,6 +65,7 @@ def test_exec_writes_the_recording_it_is_asked_for(tmp_path):
     program = tmp_path / "p.py"
     program.write_text("detect_objects()\nopen_gripper()\nprint(get_object_center_position('apple'))\n")
     path = tmp_path / "out" / "r.mcap"
-    assert main(["exec", str(program), "--task", "simple_0", "--trials", "1", "--record", str(path)]) == 0
+    # the program leaves the apple where it is: the task fails (exit status 1), and the trial is recorded all the same
+    assert main(["exec", str(program), "--task", "simple_0", "--trials", "1", "--record", str(path)]) == 1
     calls = [m["tool"] for topic, _, m in read_recording(path) if topic == "/tool_calls"]
     assert calls == ["detect_objects", "open_gripper", "get_object_center_position"]

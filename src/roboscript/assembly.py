@@ -8,11 +8,10 @@ modules are the only ones above the backends that know of the simulator.
 
 from __future__ import annotations
 
-import importlib.util
-
+from roboscript import extras
 from roboscript.api.tools import ToolAPI
 from roboscript.backends.base import Backend, BackendError
-from roboscript.errors import UsageError
+from roboscript.errors import MissingExtraError
 from roboscript.perception.base import Perception
 from roboscript.perception.modes import GROUND_TRUTH, PerceptionMode, perception_mode
 from roboscript.planning.motion import MotionPlanner
@@ -44,8 +43,8 @@ def build_perception(
 
     mode = perception_mode(mode)
     _check_truth(backend, mode)
-    if mode.observed_objects or backend.ground_truth is None:
-        _check_camera_pipeline(mode)
+    if mode.uses_cameras(simulated=backend.ground_truth is not None):
+        require_camera_pipeline(mode)
     if backend.ground_truth is None:
         return _perception_from_sensors(backend, mode, seed, scene)
     if not mode.needs_ground_truth:
@@ -154,12 +153,12 @@ def _check_truth(backend: Backend, mode: PerceptionMode) -> None:
         )
 
 
-def _check_camera_pipeline(mode: PerceptionMode) -> None:
+def require_camera_pipeline(mode: PerceptionMode) -> None:
     """The camera pipeline fuses depth images with Open3D, an optional dependency: say so before anything moves."""
-    if importlib.util.find_spec("open3d") is None:
-        raise UsageError(
-            f"perception {mode} sees through the cameras, which needs Open3D: pip install -e '.[perception]' "
-            "(the perception extra); only --perception gt runs without it, and only in simulation"
+    if not extras.installed("perception"):
+        raise MissingExtraError(
+            extras.missing_text("perception", f"--perception {mode}")
+            + " (only --perception gt runs without it, and only in simulation)"
         )
 
 

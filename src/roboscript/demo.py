@@ -14,6 +14,7 @@ from roboscript.bench.runner import run_isolated
 from roboscript.bench.tasks import DEFAULT_SUITE, get_task
 from roboscript.bench.trial import LLMAuthor, TrialRecord, TrialSpec
 from roboscript.llm.openai_compatible import MODEL_ENV
+from roboscript.notices import split_output
 from roboscript.perception.modes import GROUND_TRUTH, PerceptionMode
 
 DEMO_TASK = "simple_0"
@@ -114,6 +115,8 @@ def report_markdown(report: dict, record: TrialRecord) -> str:
         lines += ["", f"Video: `{report['video']}`"]
     if record.program:
         lines += ["", "## Program", "", "```python", record.program.rstrip(), "```"]
-    if record.output.strip():
-        lines += ["", "## Printed output", "", "```", record.output.rstrip(), "```"]
+    printed, notices = split_output(record.output)
+    for title, text in (("Printed by the program", printed), ("Notices from the tools", notices)):
+        if text:
+            lines += ["", f"## {title}", "", "```", *text, "```"]
     return "\n".join(lines) + "\n"

@@ -78,3 +78,8 @@ class UnknownNameError(UsageError, KeyError):
 
     def __str__(self) -> str:  # KeyError would print the message in quotes
         return str(self.args[0])
+
+
+class MissingExtraError(UsageError, RuntimeError):
+    """An optional part (a ``pyproject`` extra) that a request needs is not installed; the message names the extra
+    and the command that installs it (:func:`roboscript.extras.install_hint`)."""

@@ -13,6 +13,7 @@ import logging
 from collections.abc import Iterator
 
 LOGGER = logging.getLogger("roboscript.notices")
+PREFIX = "[notice] "  # how a notice's line begins in the program's output
 MAX_NOTICE = 500  # characters of one notice
 MAX_NOTICES = 20  # notices kept from one tool call
 
@@ -30,6 +31,24 @@ class _Collector(logging.Handler):
     def emit(self, record: logging.LogRecord) -> None:
         if len(self.texts) < MAX_NOTICES:
             self.texts.append(record.getMessage()[:MAX_NOTICE])
+
+
+def notice_line(text: str) -> str:
+    """A notice as a line of the program's output."""
+    return f"{PREFIX}{text}\n"
+
+
+def split_output(output: str) -> tuple[list[str], list[str]]:
+    """A program's output as the lines it printed and the notices the tools gave (without their prefix)."""
+    printed, notices = [], []
+    for line in output.splitlines():
+        if line.startswith(PREFIX):
+            notices.append(line[len(PREFIX) :])
+        else:
+            printed.append(line)
+    while printed and not printed[-1].strip():
+        printed.pop()
+    return printed, notices
 
 
 @contextlib.contextmanager

@@ -5,12 +5,12 @@ from __future__ import annotations
 import re
 import sys
 import time
-from collections.abc import Callable
 from pathlib import Path
 
 from roboscript.bench.metrics import task_result
-from roboscript.bench.results import RunDirectory, provenance
-from roboscript.bench.runner import run_isolated
+from roboscript.bench.progress import ProgressBar
+from roboscript.bench.results import RunDirectory, keep_video, provenance, with_videos
+from roboscript.bench.runner import TrialPool
 from roboscript.bench.stored_programs import PREFIX as PROGRAMS_PREFIX
 from roboscript.bench.stored_programs import StoredProgram, load_program_store
 from roboscript.bench.tasks import DEFAULT_SUITE, get_task, load_suite
@@ -52,19 +52,34 @@ def run_label(policy: str, repair_rounds: int = 0) -> str:
     return f"{policy}+repair{repair_rounds}" if repair_rounds else policy
 
 
+def folder_label(policy: str, repair_rounds: int = 0) -> str:
+    """The policy as a folder's name calls it, short and safe: an LLM policy by its model (``llm-gpt-4o``, not the
+    endpoint's URL), stored programs by their folder or file (``programs-gpt4_answers``), with ``+repair<K>``."""
+    from roboscript.llm.spec import short_name
+
+    llm = policy_llm(policy)
+    if llm is not None:
+        name = f"llm-{short_name(llm)}"
+    elif policy.startswith(PROGRAMS_PREFIX):
+        name = f"programs-{Path(policy[len(PROGRAMS_PREFIX) :].rstrip('/')).stem}"
+    else:
+        name = policy
+    return re.sub(r"[^A-Za-z0-9._+-]+", "_", run_label(name, repair_rounds))
+
+
 def default_out(
-    policy: str,
+    policy: str,  # the folder's label (folder_label)
     robot: str,
     perception: PerceptionMode | str = GROUND_TRUTH,
     suite: str = DEFAULT_SUITE,
     backend: str = "mujoco",
 ) -> str:
     """``out/bench/<policy>_<robot>``, with the suite, the perception mode and the backend where they are not the
-    defaults (``<policy>_<suite>_<perception>_<robot>_ros``), the policy made safe for a directory name."""
+    defaults (``<policy>_<suite>_<perception>_<robot>_ros``); the policy as :func:`folder_label` names it."""
     mode = "" if str(perception) == "gt" else f"_{perception}"
     robot = robot if backend == "mujoco" else f"{robot}_{backend}"
     label = "" if suite == DEFAULT_SUITE else "_" + Path(suite).stem
-    return f"out/bench/{re.sub(r'[^A-Za-z0-9._-]+', '_', policy)}{label}{mode}_{robot}"
+    return f"out/bench/{policy}{label}{mode}_{robot}"
 
 
 def trial_specs(
@@ -116,25 +131,6 @@ def _numbered(path: str | None, trial: int, trials: int) -> str | None:
     if path is None or trials == 1:
         return path
     return str(Path(path).with_name(f"{Path(path).stem}_trial{trial}{Path(path).suffix}"))
-
-
-def progress_printer(total: int, stream=sys.stderr) -> Callable[[TrialRecord], None]:
-    count = [0]
-
-    def report(record: TrialRecord) -> None:
-        count[0] += 1
-        if not record.ok:
-            status = f"error: {record.error.splitlines()[0] if record.error else '?'}"
-        else:  # a program that ran to its end and left the world short of the checks failed all the same
-            status = "checks failed" if record.checks and not record.success else "ok"
-        print(
-            f"[{count[0]}/{total}] {record.task} trial {record.trial}: {record.passed}/{len(record.checks)} checks, "
-            f"{status} ({record.wall_time_s:.1f} s)",
-            file=stream,
-            flush=True,
-        )
-
-    return report
 
 
 def open_run(
@@ -199,9 +195,11 @@ def run_benchmark(
     suite: str = DEFAULT_SUITE,
     backend: str = "mujoco",
     robot_config: str | None = None,
+    videos: str = "none",
 ) -> dict:
     """Runs (or resumes) the benchmark of ``suite`` in ``out``; returns ``{"tasks": {id: exec object},
-    "wall_time_s"}``."""
+    "wall_time_s", "out", "summary"}``. ``videos`` (none, failed, all): which trials keep a video in
+    ``<out>/videos``. ``progress`` shows a bar with the time left on stderr."""
     tasks = list(tasks or load_suite(suite))
     for t in tasks:
         get_task(t, suite)
@@ -209,15 +207,19 @@ def run_benchmark(
     run, specs = open_run(
         out, policy, tasks, robot, trials, seed, timeout, repair_rounds, perception, suite, backend, robot_config
     )
-    printer = progress_printer(len(specs)) if progress else None
+    specs = with_videos(specs, run.path, videos)
+    total = len(tasks) * trials
+    bar = ProgressBar(total, total - len(specs)) if progress else None
 
-    def on_record(record: TrialRecord) -> None:
+    def on_result(spec: TrialSpec, record: TrialRecord) -> None:
+        keep_video(spec, record, videos)
         run.append(record)
         run.write_summary(tasks)
-        if printer:
-            printer(record)
+        if bar is not None:
+            bar.update(record)
 
-    run_isolated(specs, jobs, on_record)
+    with TrialPool(jobs) as pool:
+        pool.run(specs, on_result=on_result)
     summary = run.write_summary(tasks)
     records = run.records()
     return {

@@ -12,6 +12,7 @@ from pathlib import Path
 
 import numpy as np
 
+from roboscript import extras
 from roboscript.bench.stats import wilson_interval
 
 COLOURS = ["#4c72b0", "#dd8452", "#55a868", "#c44e52", "#8172b3", "#937860", "#da8bc3", "#8c8c8c"]
@@ -21,7 +22,7 @@ def _pyplot():
     try:
         import matplotlib
     except ImportError:
-        raise RuntimeError("plots need matplotlib: pip install 'roboscript[report]'") from None
+        raise extras.missing("report", "plots") from None
     matplotlib.use("Agg")  # files only: no display on a cluster node or in CI
     import matplotlib.pyplot as plt
 

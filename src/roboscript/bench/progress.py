@@ -1,13 +1,42 @@
-"""A progress line for long runs: trials done of all, how many succeeded and failed, time spent and an estimate of
-the time left (from this session's pace, so a resumed run does not count what an earlier session did)."""
+"""Progress of a run as its trials end: a line per trial (``exec``), or a bar with trials done of all, how many
+succeeded and failed, time spent and an estimate of the time left (``bench``, sweeps; from this session's pace, so a
+resumed run does not count what an earlier session did)."""
 
 from __future__ import annotations
 
 import sys
 import time
+from collections.abc import Callable
 from typing import TextIO
 
 from roboscript.bench.trial import TrialRecord
+
+
+def trial_status(record: TrialRecord) -> str:
+    """How a trial ended, in a word or two: ``ok`` (every check passed), ``checks failed`` (the program ran to its
+    end and left the world short of them), ``ran`` (it ran to its end and nothing was checked), or its error."""
+    if not record.ok:
+        return f"error: {record.error.splitlines()[0] if record.error else record.outcome}"
+    if not record.checks:
+        return "ran"
+    return "ok" if record.success else "checks failed"
+
+
+def progress_printer(total: int, stream: TextIO | None = None) -> Callable[[TrialRecord], None]:
+    """A line per trial as it ends: ``[2/10] simple_0 trial 1: 0/1 checks, checks failed (3.2 s)``."""
+    count = [0]
+
+    def report(record: TrialRecord) -> None:
+        count[0] += 1
+        checks = f"{record.passed}/{len(record.checks)} checks, " if record.checks else ""
+        print(
+            f"[{count[0]}/{total}] {record.task} trial {record.trial}: {checks}{trial_status(record)} "
+            f"({record.wall_time_s:.1f} s)",
+            file=stream if stream is not None else sys.stderr,
+            flush=True,
+        )
+
+    return report
 
 
 def _duration(seconds: float) -> str:
@@ -58,8 +87,7 @@ class ProgressBar:
     def update(self, record: TrialRecord, label: str = "") -> None:
         self.done += 1
         self.succeeded += record.success
-        status = "ok" if record.success else record.outcome
-        last = f"{label or record.task} #{record.trial}: {status}"
+        last = f"{label or record.task} #{record.trial}: {trial_status(record)}"
         if self.interactive:
             self.stream.write("\r\033[K" + self.line(last))
             if self.finished >= self.total:

@@ -17,12 +17,13 @@ import subprocess
 import time
 from collections import Counter
 from collections.abc import Iterable
+from dataclasses import replace
 from importlib import metadata
 from pathlib import Path
 from typing import ClassVar
 
 from roboscript.bench.metrics import METRICS, metrics
-from roboscript.bench.trial import TrialRecord
+from roboscript.bench.trial import TrialRecord, TrialSpec
 from roboscript.errors import InvalidArgumentError
 
 LABELS = {
@@ -161,8 +162,26 @@ class RunDirectory:
 
 
 def video_path(run_dir: Path, task: str, trial: int) -> Path:
-    """Where a run keeps a trial's video when a sweep keeps videos: ``<run>/videos/<task>_trial<i>.mp4``."""
+    """Where a run keeps a trial's video when it keeps videos: ``<run>/videos/<task>_trial<i>.mp4``."""
     return run_dir / "videos" / f"{task}_trial{trial}.mp4"
+
+
+VIDEO_CHOICES = ("none", "failed", "all")  # which trials of a run keep a video
+
+
+def with_videos(specs: list[TrialSpec], run_dir: Path, videos: str) -> list[TrialSpec]:
+    """The trials, each recording its video into the run (:func:`video_path`) unless ``videos`` is ``none``."""
+    if videos not in VIDEO_CHOICES:
+        raise InvalidArgumentError(f"unknown videos {videos!r}; choose one of: {', '.join(VIDEO_CHOICES)}")
+    if videos == "none":
+        return specs
+    return [replace(s, video=str(video_path(run_dir, s.task, s.trial))) for s in specs]
+
+
+def keep_video(spec: TrialSpec, record: TrialRecord, videos: str) -> None:
+    """Deletes the video of a trial that succeeded where only failed trials keep theirs (``videos: failed``)."""
+    if spec.video and videos == "failed" and record.success:
+        Path(spec.video).unlink(missing_ok=True)
 
 
 def read_records(results: Path) -> list[TrialRecord]:

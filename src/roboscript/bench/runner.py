@@ -115,11 +115,15 @@ class _Worker:
 
 
 def run_isolated(
-    specs: Iterable[TrialSpec], jobs: int = 1, on_record: Callable[[TrialRecord], None] | None = None
+    specs: Iterable[TrialSpec],
+    jobs: int = 1,
+    on_record: Callable[[TrialRecord], None] | None = None,
+    on_stage: Callable[[TrialSpec, str], None] | None = None,
 ) -> list[TrialRecord]:
-    """Runs every trial in a process of its own, at most ``jobs`` at once; ``on_record`` gets each as it ends."""
+    """Runs every trial in a process of its own, at most ``jobs`` at once; ``on_record`` gets each as it ends,
+    ``on_stage`` each stage a trial reports (what it is doing, in words) with the trial's spec."""
     with TrialPool(jobs) as pool:
-        return pool.run(specs, on_record)
+        return pool.run(specs, on_record, on_stage=on_stage)
 
 
 class TrialPool:
@@ -150,9 +154,11 @@ class TrialPool:
         specs: Iterable[TrialSpec],
         on_record: Callable[[TrialRecord], None] | None = None,
         on_result: Callable[[TrialSpec, TrialRecord], None] | None = None,
+        on_stage: Callable[[TrialSpec, str], None] | None = None,
     ) -> list[TrialRecord]:
         """Runs every trial, at most ``jobs`` at once; ``on_record`` gets each record as it ends, ``on_result``
-        the spec it was run from with it. Returns the records in the order they ended."""
+        the spec it was run from with it, ``on_stage`` each stage a trial reports. Returns the records in the order
+        they ended."""
         pending = list(specs)
         busy: dict[object, _Worker] = {}
         records: list[TrialRecord] = []
@@ -183,6 +189,10 @@ class TrialPool:
                         continue
                     if status == "started":
                         worker.trial_pid = payload
+                        continue
+                    if status == "stage":
+                        if on_stage is not None:
+                            on_stage(spec, payload)
                         continue
                     del busy[conn]
                     self._idle.append(worker)

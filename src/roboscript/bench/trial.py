@@ -149,7 +149,11 @@ class TrialRecord:
         return asdict(self)
 
 
-def run_trial(spec: TrialSpec, announce: Callable[[float | None], None] | None = None) -> TrialRecord:
+def run_trial(
+    spec: TrialSpec,
+    announce: Callable[[float | None], None] | None = None,
+    stage: Callable[[str], None] | None = None,
+) -> TrialRecord:
     """Runs one trial in this process, the program in the sandbox (:mod:`roboscript.codegen.sandbox`).
 
     With an LLM and ``repair_rounds``, a program that the checker rejects, or that stops on an error or a planning
@@ -158,16 +162,19 @@ def run_trial(spec: TrialSpec, announce: Callable[[float | None], None] | None =
     (each attempt records into a file of its own, which replaces the video when the attempt is over).
 
     ``announce`` is told by when each program run must be over, and ``None`` after it (the watchdog of
-    :mod:`roboscript.bench.workers`).
+    :mod:`roboscript.bench.workers`); ``stage``, what the trial is doing, in words (a command's progress).
     """
+    stage = stage or _quiet
     clock = PhaseClock()
     task = free_task(spec.world, spec.instruction) if spec.world else get_task(spec.task, spec.suite)
     attempts: list[dict] = []
     author: ProgramAuthor | None = None
     failure: ExecutionResult | None = None  # the LLM could not be asked
     while True:
+        stage("building the world" if not attempts else "building the world again for the repaired program")
         with _trial_world(spec, task) as world:
             if spec.author is not None and author is None and failure is None:
+                stage(f"asking {spec.author.llm} for the program")
                 query = task.query_for(spec.instruction)
                 try:
                     author = ProgramAuthor(make_llm(spec.author.llm), query, world.backend.base_pose().position[:2])
@@ -178,7 +185,8 @@ def run_trial(spec: TrialSpec, announce: Callable[[float | None], None] | None =
                 result = failure
             else:
                 limits = Limits(spec.timeout, spec.memory_limit).scaled_to_load()
-                result = check_and_execute(program, world.namespace, limits, announce)
+                result = check_and_execute(program, world.namespace, limits, announce, stage)
+            stage(f"{_ended(result)}; evaluating what it did")
             attempt = world.judge(result)
         attempt["program"] = program if spec.author is not None else None
         attempts.append(attempt)
@@ -186,6 +194,7 @@ def run_trial(spec: TrialSpec, announce: Callable[[float | None], None] | None =
             break
         if Outcome(attempt["outcome"]) not in REPAIRABLE:
             break
+        stage(f"asking {spec.author.llm} to repair the program (round {len(attempts)} of {spec.author.repair_rounds})")
         try:
             author.repair(result)
         except LLMError as exc:
@@ -215,6 +224,17 @@ def run_trial(spec: TrialSpec, announce: Callable[[float | None], None] | None =
         phases=phases,
         judged_by=last["judged_by"],
     )
+
+
+def _quiet(what: str) -> None:
+    pass
+
+
+def _ended(result: ExecutionResult) -> str:
+    """How a program run ended, in a few words."""
+    if result.outcome is Outcome.OK:
+        return "the program ended"
+    return f"the program stopped: {(result.error or result.outcome.value).splitlines()[0][:120]}"
 
 
 # What a repair round may answer: the checker's findings, errors while running, planning failures, time-outs.

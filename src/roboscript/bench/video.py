@@ -11,6 +11,7 @@ from pathlib import Path
 
 import numpy as np
 
+from roboscript import extras
 from roboscript.backends.base import Backend
 from roboscript.errors import InvalidArgumentError
 
@@ -32,7 +33,7 @@ class VideoRecorder:
         try:
             import imageio_ffmpeg
         except ImportError:
-            raise RuntimeError("--video needs imageio-ffmpeg: pip install 'roboscript[video]'") from None
+            raise extras.missing("video", "--video") from None
         if camera not in backend.camera_names():
             raise InvalidArgumentError(f"no camera {camera!r} to record; cameras: {', '.join(backend.camera_names())}")
         self.backend, self.camera, self.fps = backend, camera, fps

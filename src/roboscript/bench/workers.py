@@ -8,7 +8,8 @@ allows keeping GL state across a fork (:func:`roboscript.sim.shared_gl.fork_safe
 cameras with their shaders compiled. A trial then finds them made instead of spending half a second on them.
 
 The worker and the runner speak over one pipe. The runner sends a :class:`TrialSpec` (or ``None``: stop); the
-worker answers ``("started", pid)`` with the trial's process id, then ``("ok", record)``, ``("error", text)``,
+worker answers ``("started", pid)`` with the trial's process id, ``("stage", text)`` each time the trial says what it
+is doing (building the world, asking the LLM, running the program), then ``("ok", record)``, ``("error", text)``,
 ``("died", exit code)`` or ``("timeout", text)``.
 
 The worker is also the trial's watchdog. The trial tells it, over the pipe it reports on, by when the program it
@@ -81,7 +82,7 @@ def _fork_trial(conn, spec: TrialSpec, run: Callable[[TrialSpec], dict]) -> None
         _trial_child(spec, run, writer)
     os.close(writer)
     conn.send(("started", pid))
-    payload, status, overdue = _outcome(reader, pid)
+    payload, status, overdue = _outcome(reader, pid, lambda text: conn.send(("stage", text)))
     if payload is not None:
         conn.send(pickle.loads(payload))
     elif overdue is not None:
@@ -90,10 +91,12 @@ def _fork_trial(conn, spec: TrialSpec, run: Callable[[TrialSpec], dict]) -> None
         conn.send(("died", os.waitstatus_to_exitcode(status)))
 
 
-def _outcome(reader: int, pid: int) -> tuple[bytes | None, int, str | None]:
+def _outcome(
+    reader: int, pid: int, on_stage: Callable[[str], None] = lambda text: None
+) -> tuple[bytes | None, int, str | None]:
     """The trial's final message (None if it ended without one), its wait status, and why the watchdog killed it
-    (None if it did not). Reads until the final message is whole or the trial has ended, not until the pipe's end:
-    a process the trial started may still hold the pipe open."""
+    (None if it did not); ``on_stage`` gets each stage the trial reports. Reads until the final message is whole or
+    the trial has ended, not until the pipe's end: a process the trial started may still hold the pipe open."""
     frames = _Frames()
     deadline: float | None = None
     status = None
@@ -106,6 +109,8 @@ def _outcome(reader: int, pid: int) -> tuple[bytes | None, int, str | None]:
                 for frame in frames.add(chunk):
                     if frame[:1] == b"D":  # a deadline frame: the program's run must be over by then
                         deadline = _deadline(frame)
+                    elif frame[:1] == b"S":  # a stage frame: what the trial is doing now
+                        on_stage(frame[1:].decode(errors="replace"))
                     else:
                         return frame, os.waitpid(pid, 0)[1], None
                 continue
@@ -123,7 +128,7 @@ def _outcome(reader: int, pid: int) -> tuple[bytes | None, int, str | None]:
                 status = reaped
                 while select.select([reader], [], [], 0)[0] and (chunk := os.read(reader, 1 << 20)):
                     for frame in frames.add(chunk):  # what it wrote just before it ended
-                        if frame[:1] != b"D":
+                        if frame[:1] not in (b"D", b"S"):
                             return frame, status, None
     finally:
         os.close(reader)
@@ -164,8 +169,9 @@ def _write_frame(writer: int, data: bytes) -> None:
 def _trial_child(spec: TrialSpec, run: Callable[[TrialSpec], dict], writer: int) -> None:
     """In the forked trial: run it, write the outcome to the worker, and leave without the worker's clean-up."""
     code = 1
-    global _announce
+    global _announce, _stage
     _announce = functools.partial(_announce_deadline, writer)
+    _stage = functools.partial(_report_stage, writer)
     _limit_memory(TRIAL_MEMORY)
     # Whatever a trial's libraries print (a tool's notice, a planner's log line) goes to stderr: the command's
     # stdout carries its own output alone (one JSON document with --json).
@@ -176,7 +182,7 @@ def _trial_child(spec: TrialSpec, run: Callable[[TrialSpec], dict], writer: int)
             message = ("ok", run(spec))
         except BaseException as exc:  # the world could not be built, or judging failed: report, do not hang
             message = ("error", f"{type(exc).__name__}: {exc}\n{traceback.format_exc(limit=4)}")
-        _write_frame(writer, pickle.dumps(message))  # a pickle starts with b"\x80", never with the deadline's b"D"
+        _write_frame(writer, pickle.dumps(message))  # a pickle starts with b"\x80", never with b"D" or b"S"
         code = 0
     finally:
         run_exit_hooks()  # what the trial started that ends with its process (a ROS trial's master and its home)
@@ -186,6 +192,7 @@ def _trial_child(spec: TrialSpec, run: Callable[[TrialSpec], dict], writer: int)
 
 
 _announce: Callable[[float | None], None] | None = None  # in a trial's process: tells the worker its deadline
+_stage: Callable[[str], None] | None = None  # in a trial's process: tells the worker what the trial is doing
 
 # Address space a trial's process may add to what it was forked with: simulation, perception and planning for one
 # trial take about 2 GiB; a tool driven into unbounded work fails with a MemoryError well before the machine does.
@@ -205,8 +212,12 @@ def _announce_deadline(writer: int, deadline: float | None) -> None:
     _write_frame(writer, b"D" + (b"none" if deadline is None else repr(deadline).encode()))
 
 
+def _report_stage(writer: int, text: str) -> None:
+    _write_frame(writer, b"S" + text.encode())
+
+
 def _run_trial(spec: TrialSpec) -> dict:
-    return run_trial(spec, announce=_announce).to_dict()
+    return run_trial(spec, announce=_announce, stage=_stage).to_dict()
 
 
 def warm_for(spec: TrialSpec) -> None:

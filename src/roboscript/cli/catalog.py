@@ -8,6 +8,7 @@ import sys
 import time
 from pathlib import Path
 
+from roboscript import extras
 from roboscript.cli.options import (
     ROBOT_NAMES,
     add_suite_option,
@@ -50,7 +51,7 @@ def cmd_assets(args: argparse.Namespace) -> int:
             print(f"{name:24s} {found.source}: {found.xml_path}")
         except AssetNotFoundError as exc:
             if optional_and_absent(KNOWN_MODELS[name]):
-                print(f"{name:24s} not installed (optional: pip install 'roboscript[{KNOWN_MODELS[name].extra}]')")
+                print(f"{name:24s} not installed (optional: {extras.install_hint(KNOWN_MODELS[name].extra)})")
                 continue
             print(f"{name:24s} NOT FOUND\n{exc}", file=sys.stderr)
             status = 1

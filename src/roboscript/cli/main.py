@@ -21,12 +21,34 @@ DESCRIPTION = (
     "RoboScript: instructions in words to robot motion. An LLM writes a program against the tool API "
     "(`roboscript tools`), which is checked, run in a sandbox against a simulated or a real arm, and judged."
 )
+EXIT_STATUS = (
+    "exit status: 0 when the command did what it was asked (exec, run, bench, demo: every trial passed its checks), "
+    "1 when it ran and something failed (a task, a check, a robot's run), 2 for a usage error or a missing optional "
+    "part; each command's --help says what its 0 means"
+)
+
+
+class DefaultsShown(argparse.HelpFormatter):
+    """Help that gives every option's default, where the option's own help does not already say it."""
+
+    def _get_help_string(self, action: argparse.Action) -> str:
+        text = action.help or ""
+        quiet = action.default is None or action.default is False or action.default == argparse.SUPPRESS
+        if quiet or "default" in text or "%(default)" in text or not action.option_strings:
+            return text
+        return text + " (default: %(default)s)"
+
+
+class _Parser(argparse.ArgumentParser):
+    def __init__(self, *args, **kwargs):
+        kwargs.setdefault("formatter_class", DefaultsShown)
+        super().__init__(*args, **kwargs)
 
 
 def build_parser() -> argparse.ArgumentParser:
-    parser = argparse.ArgumentParser(prog="roboscript", description=DESCRIPTION)
+    parser = _Parser(prog="roboscript", description=DESCRIPTION, epilog=EXIT_STATUS)
     parser.add_argument("--version", action="version", version=f"roboscript {version('roboscript')}")
-    sub = parser.add_subparsers(dest="command", required=True)
+    sub = parser.add_subparsers(dest="command", required=True, parser_class=_Parser)
     add_catalog_commands(sub)
     add_run_commands(sub)
     add_ros_sim_command(sub)
@@ -49,11 +71,13 @@ def main(argv: list[str] | None = None) -> int:
         and threading.current_thread() is threading.main_thread()
     ):
         signal.signal(signal.SIGTERM, _exit_on_sigterm)
+    from roboscript.cli.preflight import require_extras
     from roboscript.errors import RoboScriptError, error_message
 
     try:
         if hasattr(args, "perception"):
             resolve_perception(args)
+        require_extras(args)
         return args.func(args)
     except (RoboScriptError, KeyError, ValueError) as exc:  # the builtins: argument checks in the commands
         print(f"roboscript: error: {error_message(exc)}", file=sys.stderr)

@@ -20,14 +20,16 @@ def rounds(text: str) -> int:
     return value
 
 
-def add_run_options(parser: argparse.ArgumentParser) -> None:
+def add_run_options(parser: argparse.ArgumentParser, trials: int) -> None:
     from roboscript.bench.runner import default_jobs
 
-    parser.add_argument("--robot", choices=ROBOT_NAMES, default="panda")
-    parser.add_argument("--trials", type=int, default=10)
+    parser.add_argument("--robot", choices=ROBOT_NAMES, default="panda", help="the arm")
+    parser.add_argument("--trials", type=int, default=trials, help="how many trials, each with its own seed")
     parser.add_argument("--seed", type=int, default=0, help="trial i uses seed + i for the world's randomisation")
     parser.add_argument("--timeout", type=float, default=300.0, help="time limit of one program, wall seconds")
-    parser.add_argument("--jobs", type=int, default=default_jobs(), help="trials run at once (one process each)")
+    parser.add_argument(
+        "--jobs", type=int, default=default_jobs(), help="trials run at once, one process each (default: the cores)"
+    )
     parser.add_argument("--json", action="store_true", help="print one JSON object")
     add_perception_option(parser)
     add_suite_option(parser)
@@ -117,26 +119,5 @@ def resolve_perception(args: argparse.Namespace) -> None:
 
 RECORD_HELP = (
     "record the trial into this MCAP file for Foxglove: camera images, perceived boxes, planning scene, planned "
-    "and executed paths, and every tool call with its answer (needs roboscript[record])"
+    "and executed paths, and every tool call with its answer (needs the record extra)"
 )
-
-
-def print_result(result: dict) -> None:
-    print(
-        f"{result['task']} ({result['robot']}, {result['trials']} trials): "
-        f"grammar {result['grammar_correctness']:.2f}, semantic {result['semantic_correctness']:.2f}, "
-        f"finished steps {result['finished_steps_ratio']:.2f}, whole task {result['whole_task_success']:.2f}"
-    )
-    for trial in result["per_trial"]:
-        passed = sum(c["passed"] for c in trial["checks"])
-        line = f"  trial {trial['trial']} (seed {trial['seed']}): {passed}/{len(trial['checks'])} checks"
-        line += f", sim {trial['sim_time_s']:.1f} s, wall {trial['wall_time_s']:.1f} s"
-        printed = trial.get("output", "").strip()
-        if printed:
-            line += "\n    output:" + "".join(f"\n      {text}" for text in printed.splitlines())
-        if trial["error"]:
-            line += f"\n    error: {trial['error']}"
-        for check in trial["checks"]:
-            if not check["passed"]:
-                line += f"\n    failed: {check['check']}: {check['detail']}"
-        print(line)

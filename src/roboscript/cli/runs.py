@@ -14,8 +14,18 @@ from roboscript.cli.options import (
     add_perception_option,
     add_run_options,
     add_suite_option,
-    print_result,
     rounds,
+)
+from roboscript.cli.trial_output import (
+    EXIT_STATUS_HELP,
+    SUCCESS,
+    TASK_FAILED,
+    exit_code,
+    files_written,
+    output_lines,
+    print_refusal,
+    print_result,
+    stage_printer,
 )
 from roboscript.errors import InvalidArgumentError
 
@@ -39,40 +49,49 @@ def _trial_options(args: argparse.Namespace, instruction: str | None) -> dict:
 
 
 def cmd_exec(args: argparse.Namespace) -> int:
-    from roboscript.bench.benchmark import progress_printer, trial_specs
+    from roboscript.bench.benchmark import trial_specs
     from roboscript.bench.metrics import task_result
+    from roboscript.bench.progress import progress_printer
     from roboscript.bench.runner import run_isolated
     from roboscript.bench.tasks import free_task, get_task
     from roboscript.cli.robot import robot_requested, run_on_running_robot
+    from roboscript.codegen.execute import static_refusal
 
     scene = args.world or get_task(args.task, args.suite).world
     path = Path(args.program)
     if not path.is_file():
         raise InvalidArgumentError(f"no program file {str(path)!r}")
     program = path.read_text()
+    label = free_task(args.world, "run the program").id if args.world else args.task
+    refusal = static_refusal(program)  # said once, here, rather than once for each trial
+    if refusal is not None:
+        if args.json:
+            print(json.dumps({"task": label, "robot": args.robot, "trials": 0, "outcome": refusal.outcome.value,
+                              "error": refusal.error}))  # fmt: skip
+        else:
+            print_refusal(str(path), refusal)
+        return TASK_FAILED
     if robot_requested(args):
         return run_on_running_robot(args, program, scene)
-    label = free_task(args.world, "run the program").id if args.world else args.task
     specs = trial_specs(label, program, **_trial_options(args, "run the program" if args.world else None))
     records = run_isolated(specs, args.jobs, None if args.json else progress_printer(len(specs)))
     result = task_result(label, args.robot, records)
+    checked = not args.world
     if args.json:
-        print(json.dumps(result))
+        print(json.dumps({**result, "checked": checked}))
     else:
-        print_result(result)
-    return 0
+        print_result(result, checked, files_written(specs))
+    return exit_code(records, checked)
 
 
 def cmd_bench(args: argparse.Namespace) -> int:
-    from roboscript.bench.benchmark import run_benchmark
+    from roboscript.bench.benchmark import default_out, folder_label, run_benchmark
 
     tasks = [t.strip() for t in args.tasks.split(",") if t.strip()] if args.tasks else None
-    from roboscript.bench.benchmark import default_out, run_label
-
     if args.repair and not args.policy.startswith("llm:"):
         raise InvalidArgumentError("--repair needs an LLM policy (--policy llm:SPEC)")
     out = args.out or default_out(
-        run_label(args.policy, args.repair), args.robot, args.perception, args.suite, args.backend
+        folder_label(args.policy, args.repair), args.robot, args.perception, args.suite, args.backend
     )
     result = run_benchmark(
         args.policy,
@@ -89,13 +108,15 @@ def cmd_bench(args: argparse.Namespace) -> int:
         suite=args.suite,
         backend=args.backend,
         robot_config=args.robot_config,
+        videos=args.videos,
     )
     if args.json:
-        print(json.dumps({"tasks": result["tasks"], "wall_time_s": result["wall_time_s"]}))
+        print(json.dumps({"tasks": result["tasks"], "wall_time_s": result["wall_time_s"], "out": result["out"]}))
     else:
         print((Path(result["out"]) / "summary.md").read_text())
-        print(f"wall time {result['wall_time_s']:.1f} s; results in {result['out']}")
-    return 0
+        kept = f"; videos in {Path(result['out']) / 'videos'}" if args.videos != "none" else ""
+        print(f"wall time {result['wall_time_s']:.1f} s; results in {result['out']}{kept}")
+    return SUCCESS if all(t["whole_task_success"] == 1.0 for t in result["tasks"].values()) else TASK_FAILED
 
 
 def cmd_run(args: argparse.Namespace) -> int:
@@ -117,22 +138,19 @@ def cmd_run(args: argparse.Namespace) -> int:
     if robot_requested(args):
         return _run_llm_on_robot(args, llm, label)
     specs = trial_specs(label, LLMAuthor(args.llm or llm.name, args.repair), **_trial_options(args, args.instruction))
-    records = run_isolated(specs, args.jobs)
+    records = run_isolated(specs, args.jobs, on_stage=None if args.json else stage_printer())
     result = task_result(label, args.robot, records)
+    checked = not args.world
     if args.json:
-        print(json.dumps({**result, "programs": [r.program for r in records]}))
-        return 0
-    for record in records:
+        print(json.dumps({**result, "checked": checked, "programs": [r.program for r in records]}))
+        return exit_code(records, checked)
+    for record in sorted(records, key=lambda r: r.trial):
         for i, attempt in enumerate(record.attempts[:-1]):
             print(f"trial {record.trial}, attempt {i + 1}: {attempt['outcome']}: {attempt['error']} (repaired)")
-        print(f"trial {record.trial}: {record.outcome}" + (f": {record.error}" if record.error else ""))
         if args.show_code and record.program is not None:
-            print(record.program)
-    if args.world:
-        print(f"world {args.world} has no task, so nothing was checked; outcome: {records[0].outcome}")
-        return 0 if all(r.ok for r in records) else 1
-    print_result(result)
-    return 0
+            print(f"trial {record.trial}, the program:\n{record.program}")
+    print_result(result, checked, files_written(specs))
+    return exit_code(records, checked)
 
 
 def _run_llm_on_robot(args: argparse.Namespace, llm, label: str) -> int:
@@ -174,6 +192,8 @@ def cmd_demo(args: argparse.Namespace) -> int:
         f"{status}: {record.outcome}, {record.passed}/{len(record.checks)} checks"
         + (f"; error: {record.error}" if record.error else "")
     )
+    for line in output_lines(record.output, indent=""):
+        print(line)
     print(f"simulated {record.sim_time_s:.1f} s in {record.wall_time_s:.1f} s wall")
     print(f"report: {plan.out / 'report.md'}; video: {plan.out / (task.id + '.mp4')}")
     return 0 if record.success else 1
@@ -190,22 +210,32 @@ def cmd_report(args: argparse.Namespace) -> int:
     return 0
 
 
+VIDEO_HELP = "record camera_left into this MP4 file (with several trials, <stem>_trial<i>.mp4 each)"
+
+
 def add_run_commands(sub) -> None:
     from roboscript.bench.metrics import METRICS
+    from roboscript.bench.results import VIDEO_CHOICES
     from roboscript.cli.robot import add_robot_options
     from roboscript.demo import DEMO_TASK
 
-    run = sub.add_parser("exec", help="run a program on a task's world and evaluate it")
+    run = sub.add_parser(
+        "exec", help="run a program on a task's world and evaluate it", epilog=EXIT_STATUS_HELP
+    )
     run.add_argument("program", help="a Python file written against the tool API")
     scene = run.add_mutually_exclusive_group(required=True)
     scene.add_argument("--task", help="a task id (see `roboscript tasks`): its world, and its checks")
     scene.add_argument("--world", help="a world name or file to act in; without a task nothing is checked")
-    run.add_argument("--video", default=None, help="record camera_left into this MP4 file")
+    run.add_argument("--video", default=None, help=VIDEO_HELP)
     run.add_argument("--record", default=None, help=RECORD_HELP)
-    add_run_options(run)
+    add_run_options(run, trials=1)
     add_robot_options(run)
     run.set_defaults(func=cmd_exec)
-    ask = sub.add_parser("run", help="have an LLM write a program for an instruction, run it and evaluate it")
+    ask = sub.add_parser(
+        "run",
+        help="have an LLM write a program for an instruction, run it and evaluate it",
+        epilog=EXIT_STATUS_HELP,
+    )
     ask.add_argument("instruction", help="what the robot should do, in words")
     where = ask.add_mutually_exclusive_group(required=True)
     where.add_argument("--task", help="the task whose world (and checks) to use")
@@ -223,11 +253,11 @@ def add_run_commands(sub) -> None:
         default=0,
         help="rounds of feeding checker, runtime and planning errors back to the LLM",
     )
-    ask.add_argument("--video", default=None, help="record camera_left into this MP4 file")
+    ask.add_argument("--video", default=None, help=VIDEO_HELP)
     ask.add_argument("--record", default=None, help=RECORD_HELP)
-    add_run_options(ask)
+    add_run_options(ask, trials=1)
     add_robot_options(ask)
-    ask.set_defaults(func=cmd_run, trials=1)
+    ask.set_defaults(func=cmd_run)
     report = sub.add_parser("report", help="runs side by side: markdown, CSV, plots and an HTML page with videos")
     report.add_argument(
         "runs", nargs="+", help="run directories (`roboscript bench`), or folders of them (a sweep's, a study's)"
@@ -237,22 +267,31 @@ def add_run_commands(sub) -> None:
         "--metric",
         default="all",
         choices=["all", *METRICS],
+        help="the metric the tables and plots show",
     )
     report.set_defaults(func=cmd_report)
     demo = sub.add_parser(
-        "demo", help="one task end to end (the configured LLM, else the reference program) with a video and a report"
+        "demo",
+        help="one task end to end (the configured LLM, else the reference program) with a video and a report",
+        epilog="exit status: 0 when the task was done, 1 when it was not, 2 for a usage error or a missing optional "
+        "part",
     )
     demo.add_argument("--task", default=DEMO_TASK, help="the task to run (see `roboscript tasks`)")
-    demo.add_argument("--robot", choices=ROBOT_NAMES, default="panda")
+    demo.add_argument("--robot", choices=ROBOT_NAMES, default="panda", help="the arm")
     demo.add_argument("--llm", default=None, help="an LLM spec (see `run --llm`); default: the environment's")
     demo.add_argument("--repair", type=rounds, default=0, help="repair rounds when an LLM writes the program")
-    demo.add_argument("--seed", type=int, default=0)
+    demo.add_argument("--seed", type=int, default=0, help="the world's randomisation")
     demo.add_argument("--timeout", type=float, default=300.0, help="time limit of the program, wall seconds")
     demo.add_argument("--out", default="out/demo", help="where the video and the report go")
     add_perception_option(demo)
     add_suite_option(demo)
     demo.set_defaults(func=cmd_demo)
-    bench = sub.add_parser("bench", help="run the benchmark (resumes an interrupted run in --out)")
+    bench = sub.add_parser(
+        "bench",
+        help="run the benchmark (resumes an interrupted run in --out)",
+        epilog="exit status: 0 when every trial of every task passed its checks, 1 when one did not, 2 for a usage "
+        "error or a missing optional part",
+    )
     bench.add_argument(
         "--policy",
         default="reference",
@@ -266,7 +305,15 @@ def add_run_commands(sub) -> None:
         help="rounds of feeding checker, runtime and planning errors back (LLM policies); the summary shows both",
     )
     bench.add_argument("--tasks", default=None, help="comma-separated task ids; default: all")
-    bench.add_argument("--out", default=None, help="run directory; default out/bench/<policy>_<robot>")
-    add_run_options(bench)
+    bench.add_argument(
+        "--out", default=None, help="run directory; default out/bench/<policy>_<robot> (an LLM by its model's name)"
+    )
+    bench.add_argument(
+        "--videos",
+        choices=VIDEO_CHOICES,
+        default="none",
+        help="which trials keep a video (camera_left) in <out>/videos: none, failed (the failures, to see why) or all",
+    )
+    add_run_options(bench, trials=10)
     bench.set_defaults(func=cmd_bench)
 

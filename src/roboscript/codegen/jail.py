@@ -36,6 +36,7 @@ from roboscript.codegen.sandbox import (
     run_code,
     shortened,
 )
+from roboscript.notices import notice_line
 
 
 def main(argv: list[str]) -> None:
@@ -131,7 +132,7 @@ def _stand_in(name: str, fd: int, output: io.StringIO):
             channel.send_raw(fd, data)
             reply = channel.receive(fd, protocol.MAX_REPLY)
         for text in reply.get("notices", ()):
-            output.write(f"[notice] {text}\n")
+            output.write(notice_line(text))
         if "return" in reply:
             return wire.from_tree(reply["return"])
         if "timeout" in reply:

@@ -16,6 +16,7 @@ import time
 
 import numpy as np
 
+from roboscript import extras
 from roboscript.drivers.base import (
     CameraSource,
     Driver,
@@ -48,7 +49,7 @@ def _franky():
     try:
         import franky
     except ImportError as error:
-        raise DriverError("a Franka through libfranka needs franky: pip install 'roboscript[franky]'") from error
+        raise DriverError(extras.missing_text("franky", "a Franka through libfranka")) from error
     return franky
 
 

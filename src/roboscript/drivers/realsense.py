@@ -17,6 +17,7 @@ from collections.abc import Sequence
 
 import numpy as np
 
+from roboscript import extras
 from roboscript.camera_config import CameraConfig, RealSenseSettings
 from roboscript.drivers.base import CameraSource, DriverError
 from roboscript.robot_io import CameraFrame
@@ -30,9 +31,7 @@ def _rs():
     try:
         import pyrealsense2
     except ImportError as error:
-        raise DriverError(
-            "RealSense cameras need librealsense's Python package: pip install 'roboscript[realsense]'"
-        ) from error
+        raise DriverError(extras.missing_text("realsense", "RealSense cameras")) from error
     return pyrealsense2
 
 

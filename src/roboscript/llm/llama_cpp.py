@@ -1,4 +1,4 @@
-"""A local GGUF model run in-process by llama.cpp (the ``llama`` extra: ``pip install roboscript[llama]``).
+"""A local GGUF model run in-process by llama.cpp (the ``llama`` extra).
 
 Models with a chat template in their GGUF are asked through it; base models without one get the conversation as
 plain text ending in an assistant turn that has opened a Python code block, and stop where they close it (the
@@ -9,6 +9,7 @@ from __future__ import annotations
 
 import os
 
+from roboscript import extras
 from roboscript.llm.base import LLM, LLMError, LLMRequest, LLMResponse
 
 
@@ -22,7 +23,7 @@ class LlamaCppLLM(LLM):
         try:
             import llama_cpp
         except ImportError as exc:
-            raise LLMError("llama.cpp is not installed: pip install 'roboscript[llama]'") from exc
+            raise LLMError(extras.missing_text("llama", "a local GGUF model (llama:PATH.gguf)")) from exc
         try:
             self._llama = llama_cpp.Llama(
                 model_path=path, n_ctx=n_ctx, n_threads=n_threads or os.cpu_count(), seed=seed, verbose=False

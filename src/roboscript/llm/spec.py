@@ -28,6 +28,19 @@ def configured_spec() -> str | None:
     return None
 
 
+def short_name(spec: str) -> str:
+    """The model a spec names, short enough for a folder or a plot's label: ``openai:gpt-4o@http://host/v1`` is
+    ``gpt-4o``, ``llama:/models/qwen2.5-coder-7b.gguf`` is ``qwen2.5-coder-7b``; a stored LLM is the one it stores."""
+    kind, _, rest = spec.partition(":")
+    if kind == "openai":
+        return rest.partition("@")[0] or spec
+    if kind == "llama":
+        return os.path.splitext(os.path.basename(rest))[0] or spec
+    if kind in ("replay", "record", "cache") and "=" in rest:
+        return short_name(rest.partition("=")[2])
+    return spec
+
+
 def make_llm(spec: str | None = None) -> LLM:
     """The LLM a spec names; with none, the one ``ROBOSCRIPT_LLM`` names, else an OpenAI-compatible endpoint
     configured by ``ROBOSCRIPT_LLM_MODEL`` (and ``ROBOSCRIPT_LLM_BASE_URL``). Raises :class:`LLMError`."""

@@ -74,6 +74,11 @@ class PerceptionMode:
     def observed_scene(self) -> bool:
         return "scene" not in self.from_truth
 
+    def uses_cameras(self, simulated: bool = True) -> bool:
+        """Whether the tools fuse the cameras' RGB-D images (with Open3D, the ``perception`` extra): where objects
+        are observed, and on a robot, which has no ground truth to take them from."""
+        return self.observed_objects or not simulated
+
     @property
     def needs_ground_truth(self) -> bool:
         return bool(self.from_truth)

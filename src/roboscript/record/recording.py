@@ -20,6 +20,7 @@ from pathlib import Path
 
 import numpy as np
 
+from roboscript import extras
 from roboscript.record import foxglove as fg
 
 # Schema names of the channels: Foxglove's own types where one fits, the project's where none does.
@@ -45,7 +46,7 @@ def _writer_class():
     try:
         from mcap.writer import Writer
     except ImportError:
-        raise RuntimeError("--record needs the mcap package: pip install 'roboscript[record]'") from None
+        raise extras.missing("record", "--record") from None
     return Writer
 
 

