@@ -186,3 +186,21 @@ def test_bench_exits_1_when_a_trial_fails_and_keeps_the_videos_of_the_failures(t
     run = subprocess.run(passing, capture_output=True, text=True, timeout=600)
     assert run.returncode == 0, run.stderr
     assert not list((tmp_path / "reference" / "videos").glob("*.mp4"))  # a success keeps no video
+
+
+def test_a_refused_bench_leaves_no_run_folder_behind(tmp_path, capsys):
+    import pytest
+
+    from roboscript.bench.benchmark import run_benchmark
+    from roboscript.errors import InvalidArgumentError
+
+    out = tmp_path / "run"
+    for bad in (["--trials", "0"], ["--jobs", "0"], ["--timeout", "0"]):
+        with pytest.raises(SystemExit) as exit_:
+            main(["bench", "--tasks", "simple_0", "--out", str(out), *bad])
+        assert exit_.value.code == 2
+        assert f"argument {bad[0]}: must be" in capsys.readouterr().err
+    for trials, jobs, timeout in ((0, 1, 60.0), (1, 0, 60.0), (1, 1, 0.0)):
+        with pytest.raises(InvalidArgumentError):
+            run_benchmark("reference", ["simple_0"], "panda", trials, 0, out, jobs, timeout, progress=False)
+    assert not out.exists()  # a later run with other settings is not refused for a run that never was

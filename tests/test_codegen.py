@@ -231,6 +231,14 @@ def test_a_model_that_cannot_be_reached_is_an_llm_error_trial():
     assert not record.success
 
 
+def test_run_with_an_llm_that_cannot_be_reached_is_a_usage_error_not_a_failed_task():
+    run = _cli("run", "Put the apple into the footed bowl", "--task", "simple_0", "--llm", "openai:m@http://127.0.0.1:9/v1")
+    assert run.returncode == 2, run.stdout + run.stderr
+    assert "roboscript: error: the LLM could not be asked, so no program ran: LLMError: cannot reach" in run.stderr
+    assert "trial 0 (seed 0): no program: the LLM could not be asked" in run.stdout
+    assert "failed: in(apple" not in run.stdout  # nothing ran, so no check is reported as failed
+
+
 def _cli(*args: str) -> subprocess.CompletedProcess:
     command = [sys.executable, "-m", "roboscript.cli", *args]
     return subprocess.run(command, capture_output=True, text=True, timeout=600)
@@ -310,7 +318,7 @@ def test_run_in_a_world_without_a_task_acts_and_checks_nothing():
     assert "move_in_direction" in run.stdout and "    printed:\n      done" in run.stdout
     # what the trial is doing is shown as it happens, on stderr
     stages = ["building the world", "asking openai:scripted@", "checking the program", "running the program",
-              "the program ended; evaluating what it did"]  # fmt: skip
+              "the program ended", "evaluating what it did"]  # fmt: skip
     at = [run.stderr.find(f"trial 0: {stage}") for stage in stages]
     assert -1 not in at and at == sorted(at), run.stderr
     assert server.requests[0]["messages"][-1]["content"].endswith("# Lift the hand a little")

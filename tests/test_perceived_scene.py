@@ -109,7 +109,7 @@ def test_modes_name_the_stages_taken_from_ground_truth(mode, truth):
 
 def test_an_unknown_mode_lists_the_modes():
     for bad in ("gt-4d", "gt-2d+gt-2d", "2d", "gt+gt-2d"):
-        with pytest.raises(ValueError, match=r"unknown perception mode .*modes: gt \(ground truth everywhere\)"):
+        with pytest.raises(ValueError, match=r"unknown perception mode .*modes: gt, full, gt-2d, gt-3d, gt-scene"):
             parse_mode(bad)
     assert parse_mode("gt-2d").needs_detector is False and parse_mode("gt-scene").needs_detector is True
 

@@ -150,6 +150,10 @@ def open_run(
 ) -> tuple[RunDirectory, list[TrialSpec]]:
     """Opens (or reopens, refusing other settings or programs) the run directory ``out`` and lists the trials it
     still needs; ``programs`` are the policy's (looked up here where not given)."""
+    if trials < 1:  # before the run directory is made: a refused run leaves nothing behind
+        raise InvalidArgumentError(f"trials must be at least 1, got {trials}")
+    if timeout <= 0:
+        raise InvalidArgumentError(f"the time limit must be positive, got {timeout} s")
     programs = programs if programs is not None else policy_programs(policy, tasks, suite)
     llm = policy_llm(policy)
     texts = {t: p.program for t, p in programs.items()}
@@ -198,11 +202,14 @@ def run_benchmark(
     videos: str = "none",
 ) -> dict:
     """Runs (or resumes) the benchmark of ``suite`` in ``out``; returns ``{"tasks": {id: exec object},
-    "wall_time_s", "out", "summary"}``. ``videos`` (none, failed, all): which trials keep a video in
-    ``<out>/videos``. ``progress`` shows a bar with the time left on stderr."""
+    "wall_time_s", "out", "summary", "ran"}`` (``ran``: how many trials this call ran; the rest were recorded
+    before). ``videos`` (none, failed, all): which trials keep a video in ``<out>/videos``. ``progress`` shows a
+    bar with the time left on stderr."""
     tasks = list(tasks or load_suite(suite))
     for t in tasks:
         get_task(t, suite)
+    if jobs < 1:
+        raise InvalidArgumentError(f"jobs must be at least 1, got {jobs}")
     started = time.perf_counter()
     run, specs = open_run(
         out, policy, tasks, robot, trials, seed, timeout, repair_rounds, perception, suite, backend, robot_config
@@ -230,4 +237,5 @@ def run_benchmark(
         "wall_time_s": round(time.perf_counter() - started, 2),
         "out": str(run.path),
         "summary": summary["tasks"],
+        "ran": len(specs),
     }

@@ -55,12 +55,12 @@ def get_task(task_id: str, suite: str = DEFAULT_SUITE) -> Task:
     tasks = load_suite(suite)
     if task_id not in tasks:
         close = did_you_mean(task_id, tasks, n=2, cutoff=0.6)
-        hint = f"; {close}" if close else ""
+        hint = f"; {close} " if close else ". "
         if len(tasks) <= LISTED_TASKS:
             listing = f"Tasks: {', '.join(tasks)}"
         else:
             listing = f"The suite has {len(tasks)} tasks: `roboscript tasks --suite {suite}` lists them"
-        raise UnknownNameError(f"no task {task_id!r} in suite {suite!r}{hint}. {listing}")
+        raise UnknownNameError(f"no task {task_id!r} in suite {suite!r}{hint}{listing}")
     return tasks[task_id]
 
 

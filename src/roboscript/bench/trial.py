@@ -186,7 +186,8 @@ def run_trial(
             else:
                 limits = Limits(spec.timeout, spec.memory_limit).scaled_to_load()
                 result = check_and_execute(program, world.namespace, limits, announce, stage)
-            stage(f"{_ended(result)}; evaluating what it did")
+            stage(_ended(result))
+            stage("evaluating what it did")
             attempt = world.judge(result)
         attempt["program"] = program if spec.author is not None else None
         attempts.append(attempt)
@@ -234,7 +235,10 @@ def _ended(result: ExecutionResult) -> str:
     """How a program run ended, in a few words."""
     if result.outcome is Outcome.OK:
         return "the program ended"
-    return f"the program stopped: {(result.error or result.outcome.value).splitlines()[0][:120]}"
+    first = (result.error or result.outcome.value).splitlines()[0][:160]
+    if result.outcome is Outcome.LLM_ERROR:
+        return f"no program was written: {first}"
+    return f"the program stopped: {first}"
 
 
 # What a repair round may answer: the checker's findings, errors while running, planning failures, time-outs.

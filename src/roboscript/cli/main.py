@@ -24,7 +24,7 @@ DESCRIPTION = (
 EXIT_STATUS = (
     "exit status: 0 when the command did what it was asked (exec, run, bench, demo: every trial passed its checks), "
     "1 when it ran and something failed (a task, a check, a robot's run), 2 for a usage error or a missing optional "
-    "part; each command's --help says what its 0 means"
+    "part; the --help of exec, run, bench and demo says what their 0 means"
 )
 
 

@@ -20,15 +20,37 @@ def rounds(text: str) -> int:
     return value
 
 
+def count(text: str) -> int:
+    """``--trials``, ``--jobs``: a whole number, 1 or more."""
+    try:
+        value = int(text)
+    except ValueError:
+        raise argparse.ArgumentTypeError(f"expected a whole number, 1 or more, got {text!r}") from None
+    if value < 1:
+        raise argparse.ArgumentTypeError(f"must be 1 or more, got {value}")
+    return value
+
+
+def seconds(text: str) -> float:
+    """``--timeout``: a positive number of seconds."""
+    try:
+        value = float(text)
+    except ValueError:
+        raise argparse.ArgumentTypeError(f"expected a number of seconds, got {text!r}") from None
+    if not value > 0:
+        raise argparse.ArgumentTypeError(f"must be a positive number of seconds, got {text}")
+    return value
+
+
 def add_run_options(parser: argparse.ArgumentParser, trials: int) -> None:
     from roboscript.bench.runner import default_jobs
 
     parser.add_argument("--robot", choices=ROBOT_NAMES, default="panda", help="the arm")
-    parser.add_argument("--trials", type=int, default=trials, help="how many trials, each with its own seed")
+    parser.add_argument("--trials", type=count, default=trials, help="how many trials, each with its own seed")
     parser.add_argument("--seed", type=int, default=0, help="trial i uses seed + i for the world's randomisation")
-    parser.add_argument("--timeout", type=float, default=300.0, help="time limit of one program, wall seconds")
+    parser.add_argument("--timeout", type=seconds, default=300.0, help="time limit of one program, wall seconds")
     parser.add_argument(
-        "--jobs", type=int, default=default_jobs(), help="trials run at once, one process each (default: the cores)"
+        "--jobs", type=count, default=default_jobs(), help="trials run at once, one process each (default: the cores)"
     )
     parser.add_argument("--json", action="store_true", help="print one JSON object")
     add_perception_option(parser)
@@ -83,7 +105,8 @@ def add_perception_option(parser: argparse.ArgumentParser) -> None:
     parser.add_argument(
         "--robot-config",
         default=None,
-        help="with --backend ros: a robot configuration file or packaged name (default: the arm's packaged one)",
+        help="with --backend ros or franky: a robot configuration file or packaged name (default: the arm's "
+        "packaged one)",
     )
     parser.add_argument(
         "--detector",

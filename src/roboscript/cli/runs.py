@@ -15,13 +15,16 @@ from roboscript.cli.options import (
     add_run_options,
     add_suite_option,
     rounds,
+    seconds,
 )
 from roboscript.cli.trial_output import (
     EXIT_STATUS_HELP,
     SUCCESS,
     TASK_FAILED,
+    USAGE,
     exit_code,
     files_written,
+    llm_unreachable,
     output_lines,
     print_refusal,
     print_result,
@@ -59,6 +62,8 @@ def cmd_exec(args: argparse.Namespace) -> int:
 
     scene = args.world or get_task(args.task, args.suite).world
     path = Path(args.program)
+    if path.is_dir():
+        raise InvalidArgumentError(f"{str(path)!r} is a folder; give the program's file (a .py file)")
     if not path.is_file():
         raise InvalidArgumentError(f"no program file {str(path)!r}")
     program = path.read_text()
@@ -115,7 +120,10 @@ def cmd_bench(args: argparse.Namespace) -> int:
     else:
         print((Path(result["out"]) / "summary.md").read_text())
         kept = f"; videos in {Path(result['out']) / 'videos'}" if args.videos != "none" else ""
+        if result["ran"] == 0:
+            print(f"every trial was already recorded in {result['out']}: nothing ran (a new --out starts afresh)")
         print(f"wall time {result['wall_time_s']:.1f} s; results in {result['out']}{kept}")
+        print(f"see each trial, its output and its video: roboscript report {result['out']}")
     return SUCCESS if all(t["whole_task_success"] == 1.0 for t in result["tasks"].values()) else TASK_FAILED
 
 
@@ -138,19 +146,32 @@ def cmd_run(args: argparse.Namespace) -> int:
     if robot_requested(args):
         return _run_llm_on_robot(args, llm, label)
     specs = trial_specs(label, LLMAuthor(args.llm or llm.name, args.repair), **_trial_options(args, args.instruction))
-    records = run_isolated(specs, args.jobs, on_stage=None if args.json else stage_printer())
+    show = None if args.json else stage_printer()
+    for spec in specs if show else []:
+        show(spec, "starting its process")
+    records = run_isolated(specs, args.jobs, on_stage=show)
     result = task_result(label, args.robot, records)
     checked = not args.world
     if args.json:
         print(json.dumps({**result, "checked": checked, "programs": [r.program for r in records]}))
-        return exit_code(records, checked)
+        return _unless_llm_unreachable(records, exit_code(records, checked))
     for record in sorted(records, key=lambda r: r.trial):
         for i, attempt in enumerate(record.attempts[:-1]):
             print(f"trial {record.trial}, attempt {i + 1}: {attempt['outcome']}: {attempt['error']} (repaired)")
         if args.show_code and record.program is not None:
             print(f"trial {record.trial}, the program:\n{record.program}")
     print_result(result, checked, files_written(specs))
-    return exit_code(records, checked)
+    return _unless_llm_unreachable(records, exit_code(records, checked))
+
+
+def _unless_llm_unreachable(records, code: int) -> int:
+    """A run whose LLM could not be asked at all is a usage error (a wrong address, key or model), not a task the
+    robot failed: said once, on stderr, with :data:`USAGE`."""
+    error = llm_unreachable(records)
+    if error is None:
+        return code
+    print(f"roboscript: error: the LLM could not be asked, so no program ran: {error}", file=sys.stderr)
+    return USAGE
 
 
 def _run_llm_on_robot(args: argparse.Namespace, llm, label: str) -> int:
@@ -196,7 +217,7 @@ def cmd_demo(args: argparse.Namespace) -> int:
         print(line)
     print(f"simulated {record.sim_time_s:.1f} s in {record.wall_time_s:.1f} s wall")
     print(f"report: {plan.out / 'report.md'}; video: {plan.out / (task.id + '.mp4')}")
-    return 0 if record.success else 1
+    return _unless_llm_unreachable([record], SUCCESS if record.success else TASK_FAILED)
 
 
 def cmd_report(args: argparse.Namespace) -> int:
@@ -206,7 +227,8 @@ def cmd_report(args: argparse.Namespace) -> int:
     print(report.markdown)
     for note in report.notes:
         print(note, file=sys.stderr)
-    print(f"report of {len(report.runs)} runs: {', '.join(str(p) for p in report.files)}")
+    runs = f"{len(report.runs)} run{'s' if len(report.runs) != 1 else ''}"
+    print(f"report of {runs}: {', '.join(str(p) for p in report.files)}")
     return 0
 
 
@@ -281,7 +303,7 @@ def add_run_commands(sub) -> None:
     demo.add_argument("--llm", default=None, help="an LLM spec (see `run --llm`); default: the environment's")
     demo.add_argument("--repair", type=rounds, default=0, help="repair rounds when an LLM writes the program")
     demo.add_argument("--seed", type=int, default=0, help="the world's randomisation")
-    demo.add_argument("--timeout", type=float, default=300.0, help="time limit of the program, wall seconds")
+    demo.add_argument("--timeout", type=seconds, default=300.0, help="time limit of the program, wall seconds")
     demo.add_argument("--out", default="out/demo", help="where the video and the report go")
     add_perception_option(demo)
     add_suite_option(demo)

@@ -10,6 +10,7 @@ from collections.abc import Callable, Sequence
 from pathlib import Path
 from typing import TextIO
 
+from roboscript.codegen.outcomes import Outcome
 from roboscript.notices import split_output
 
 SUCCESS = 0  # every trial passed its task's checks (without a task: every program ran to its end)
@@ -18,8 +19,29 @@ USAGE = 2  # the command was given something it cannot use, or an optional part 
 EXIT_STATUS_HELP = (
     "exit status: 0 when every trial passed its task's checks (without a task: when every program ran to its end); "
     "1 when a task failed (the program was refused, stopped on an error or left the world short of the checks); "
-    "2 for a usage error or a missing optional part (the message says how to install it)"
+    "2 for a usage error, a missing optional part (the message says how to install it) or an LLM that could not be "
+    "asked at all"
 )
+
+
+# How a trial's outcome reads in a trial's line (its name in JSON and results.jsonl is the key).
+OUTCOME_WORDS = {
+    Outcome.SYNTAX.value: "syntax error",
+    Outcome.UNKNOWN_FUNCTION.value: "unknown function",
+    Outcome.BAD_ARGUMENTS.value: "bad arguments",
+    Outcome.FORBIDDEN_CONSTRUCT.value: "forbidden construct",
+    Outcome.RUNTIME_ERROR.value: "stopped on an error",
+    Outcome.PLANNING_FAILURE.value: "stopped: planning failed",
+    Outcome.TIMEOUT.value: "stopped: out of time",
+    Outcome.SANDBOX_VIOLATION.value: "stopped by the sandbox",
+}
+
+
+def llm_unreachable(records: Sequence) -> str | None:
+    """The LLM's error where it could not be asked in any trial (so nothing ran), else None."""
+    if records and all(r.outcome == Outcome.LLM_ERROR.value for r in records):
+        return records[0].error
+    return None
 
 
 def exit_code(records: Sequence, checked: bool = True) -> int:
@@ -82,8 +104,11 @@ def print_result(
 
 def _trial_lines(trial: dict, checked: bool, files: list[str]) -> list[str]:
     passed = sum(c["passed"] for c in trial["checks"])
-    if not trial["ok"]:
-        status = trial["outcome"]
+    written = trial["outcome"] != Outcome.LLM_ERROR.value
+    if not written:
+        status, checked = "no program: the LLM could not be asked", False  # nothing ran, so there is nothing to judge
+    elif not trial["ok"]:
+        status = OUTCOME_WORDS.get(trial["outcome"], trial["outcome"].replace("_", " "))
     elif not checked:
         status = "ran to its end"
     else:
@@ -95,7 +120,8 @@ def _trial_lines(trial: dict, checked: bool, files: list[str]) -> list[str]:
     lines += output_lines(trial.get("output", ""))
     if trial["error"]:
         lines.append(f"    error: {trial['error']}")
-    lines += [f"    failed: {c['check']}: {c['detail']}" for c in trial["checks"] if not c["passed"]]
+    if checked:
+        lines += [f"    failed: {c['check']}: {c['detail']}" for c in trial["checks"] if not c["passed"]]
     lines += [f"    {line}" for line in files]
     return lines
 

@@ -31,8 +31,8 @@ class UnknownObjectError(UnknownNameError):
 
         self.name, self.known = name, list(known)
         close = did_you_mean(name, self.known, cutoff=0.4, quoted=True)
-        hint = f"; {close}" if close else ""
-        message = f"no object named {name!r}{hint} Known objects: {', '.join(self.known)}"
+        hint = f"; {close} " if close else ". "
+        message = f"no object named {name!r}{hint}Known objects: {', '.join(self.known)}"
         super().__init__(message)
 
 

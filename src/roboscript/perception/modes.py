@@ -110,10 +110,9 @@ def parse_mode(mode: str) -> PerceptionMode:
     for part in mode.split("+"):
         stage = part.removeprefix("gt-")
         if not part.startswith("gt-") or stage not in STAGES or stage in stages:
-            known = "; ".join(f"{m} ({what})" for m, what in PERCEPTION_MODES.items())
             raise ValueError(
-                f"unknown perception mode {mode!r}; modes: {known}; gt-2d, gt-3d and gt-scene combine with '+' "
-                "(e.g. gt-2d+gt-scene)"
+                f"unknown perception mode {mode!r}; modes: {', '.join(PERCEPTION_MODES)}; gt-2d, gt-3d and gt-scene "
+                "combine with '+' (e.g. gt-2d+gt-scene); --help says what each takes from ground truth"
             )
         stages.append(stage)
     return PerceptionMode(mode, frozenset(stages))

@@ -120,8 +120,9 @@ def write_page(runs: Sequence[Run], plots: Sequence[Path], path: Path, title: st
     figures = "\n".join(f'<img src="{_e(os.path.relpath(p, page_dir))}" alt="{_e(p.stem)}">' for p in plots)
     tasks = {t for r in runs for t in r.tasks}
     opened = " open" if len(tasks) <= FOLD_FROM else ""  # a study's hundreds of cells: folded
+    counted = f"{len(tasks)} task{'s' if len(tasks) != 1 else ''}"
     tables = "\n".join(
-        f"<details{opened}><summary><b>{LABELS[m]}</b> ({len(tasks)} tasks)</summary>{_metric_table(runs, m)}</details>"
+        f"<details{opened}><summary><b>{LABELS[m]}</b> ({counted})</summary>{_metric_table(runs, m)}</details>"
         for m in METRICS
     )
     body = f"""<!DOCTYPE html>
