@@ -18,15 +18,19 @@ test-deps:
 	PY=$(PY) ./scripts/install_llama.sh
 	$(PY) -m pip install -q -e ".[dev,perception,detectors,slowtests,ray,report,record,realsense,franky]"
 
+# The suite runs on every core (pytest-xdist), a test file to a worker: a file's fixtures (a ROS master, a trial
+# pool) are made once, and each trial still runs in processes of its own.
+PYTEST := $(PY) -m pytest -q -n auto --dist loadfile
+
 test: test-deps
 	$(VENV)/bin/ruff check --no-cache src tests benchmarks
 	$(VENV)/bin/lint-imports
-	$(PY) -m pytest -q
+	$(PYTEST)
 
 test-fast:
 	$(VENV)/bin/ruff check --no-cache src tests benchmarks
 	$(VENV)/bin/lint-imports
-	$(PY) -m pytest -q -m "not slow"
+	$(PYTEST) -m "not slow"
 
 bench:
 	$(PY) benchmarks/sim_speed.py

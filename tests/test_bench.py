@@ -156,6 +156,7 @@ def test_exec_reports_a_program_the_checks_refuse_once_before_any_trial(tmp_path
     assert "trial 0" not in out.stdout + out.stderr and "hello" not in out.stdout  # no trial ran, nothing printed
     result = exec_json(tmp_path, source, "--trials", "10", code=1)
     assert result["trials"] == 0 and result["outcome"] == outcome and error in result["error"]
+    assert result["per_trial"] == [] and result["grammar_correctness"] == 0.0  # a run's document, with no trial
 
 
 def test_an_llm_runs_default_folder_is_named_by_its_model_not_its_endpoint():

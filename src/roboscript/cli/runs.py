@@ -70,9 +70,9 @@ def cmd_exec(args: argparse.Namespace) -> int:
     label = free_task(args.world, "run the program").id if args.world else args.task
     refusal = static_refusal(program)  # said once, here, rather than once for each trial
     if refusal is not None:
-        if args.json:
-            print(json.dumps({"task": label, "robot": args.robot, "trials": 0, "outcome": refusal.outcome.value,
-                              "error": refusal.error}))  # fmt: skip
+        if args.json:  # the same document as a run's, with no trial, and why none ran
+            none_ran = {**task_result(label, args.robot, []), "checked": not args.world}
+            print(json.dumps({**none_ran, "outcome": refusal.outcome.value, "error": refusal.error}))
         else:
             print_refusal(str(path), refusal)
         return TASK_FAILED
