@@ -204,3 +204,10 @@ def test_a_refused_bench_leaves_no_run_folder_behind(tmp_path, capsys):
         with pytest.raises(InvalidArgumentError):
             run_benchmark("reference", ["simple_0"], "panda", trials, 0, out, jobs, timeout, progress=False)
     assert not out.exists()  # a later run with other settings is not refused for a run that never was
+
+
+def test_a_runs_pace_is_given_in_trials_an_hour():
+    from roboscript.cli.trial_output import throughput
+
+    assert throughput(80, 195.0, 2) == "80 trials in 195 s: 1,477 trials an hour with 2 jobs"
+    assert throughput(1, 9.0) == "1 trial in 9 s: 400 trials an hour"

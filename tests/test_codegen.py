@@ -257,6 +257,7 @@ def test_run_and_bench_with_an_llm_policy_save_each_generated_program(tmp_path):
         bench = _cli("bench", "--policy", f"llm:{llm}", "--tasks", "simple_0", "--trials", "1", "--out", str(out))
         assert bench.returncode == 0, bench.stderr
         assert "1/1 100% | ok 1 failed 0 |" in bench.stderr and "ETA" in bench.stderr  # the progress bar
+        assert "1 trial in " in bench.stdout and " trials an hour with " in bench.stdout
     (record,) = [json.loads(line) for line in (out / "results.jsonl").read_text().splitlines()]
     assert record["outcome"] == "ok" and record["program"].startswith("# Task")
     assert record["llm_exchanges"][0]["response"] == reply

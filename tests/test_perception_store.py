@@ -110,6 +110,8 @@ def test_a_reference_program_passes_with_perception_in_the_loop():
     spec = TrialSpec("simple_0", "panda", 0, 0, task.reference_program(), timeout=300, perception="gt-2d")
     (record,) = run_isolated([spec])
     assert record.success, (record.error, record.checks)
+    # Where the time went is marked: the scene built from what was seen, and the program's own process at work.
+    assert record.phases["scene"] > 0 and record.phases["program"] > 0 and record.phases["perceive"] > 0
     with pytest.raises(ValueError, match="unknown perception mode 'lidar'; modes: gt"):
         TrialSpec("simple_0", "panda", 0, 0, "", perception="lidar")
 

@@ -19,7 +19,9 @@ from typing import TypeVar
 F = TypeVar("F", bound=Callable)
 
 # The phases, in the order they are reported; anything else is a programming error.
-PHASES = ("build", "llm", "render", "perceive", "grasp", "place", "ik", "planning", "physics")
+# "scene": the planning scene built from what perception saw; "program": waiting while the program's own process
+# runs its code between tool calls (its start included).
+PHASES = ("build", "llm", "program", "render", "perceive", "scene", "grasp", "place", "ik", "planning", "physics")
 
 _totals: dict[str, float] = dict.fromkeys(PHASES, 0.0)
 _open: list[list] = []  # [name, when it last resumed] of each phase open, innermost last

@@ -29,6 +29,7 @@ from roboscript.cli.trial_output import (
     print_refusal,
     print_result,
     stage_printer,
+    throughput,
 )
 from roboscript.errors import InvalidArgumentError
 
@@ -122,6 +123,8 @@ def cmd_bench(args: argparse.Namespace) -> int:
         kept = f"; videos in {Path(result['out']) / 'videos'}" if args.videos != "none" else ""
         if result["ran"] == 0:
             print(f"every trial was already recorded in {result['out']}: nothing ran (a new --out starts afresh)")
+        else:
+            print(throughput(result["ran"], result["wall_time_s"], args.jobs))
         print(f"wall time {result['wall_time_s']:.1f} s; results in {result['out']}{kept}")
         print(f"see each trial, its output and its video: roboscript report {result['out']}")
     return SUCCESS if all(t["whole_task_success"] == 1.0 for t in result["tasks"].values()) else TASK_FAILED

@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import argparse
 import re
+import time
 from pathlib import Path
 from typing import TYPE_CHECKING
 
@@ -53,13 +54,18 @@ def cmd_sweep(args: argparse.Namespace) -> int:
     sweep = load_sweep_file(args.sweep_file)
     out = Path(args.out or f"out/sweeps/{re.sub(r'[^A-Za-z0-9._-]+', '_', sweep.name)}")
     executor = make_executor(args)
+    started = time.perf_counter()
     try:
         runs = run_sweep(sweep, out, executor, progress=True)
     finally:
         _close(executor)
     from roboscript.bench.compare import compare_runs
+    from roboscript.cli.trial_output import throughput
 
     print(compare_runs([r.directory.path for r in runs], "whole_task_success"))
+    ran = sum(len(r.pending) for r in runs)
+    if ran:
+        print(throughput(ran, time.perf_counter() - started, getattr(executor, "jobs", None)))
     print(f"results in {out} ({len(runs)} runs); `roboscript report {out}` draws them")
     return 0
 

@@ -44,6 +44,15 @@ def llm_unreachable(records: Sequence) -> str | None:
     return None
 
 
+def throughput(trials: int, wall_s: float, jobs: int | None = None) -> str:
+    """``80 trials in 195 s: 1,477 trials an hour with 2 jobs``: how fast a run went, as runs are compared."""
+    at_once = f" with {jobs} job{'s' if jobs != 1 else ''}" if jobs else ""
+    if trials == 0 or wall_s <= 0:
+        return f"{trials} trials in {wall_s:.0f} s"
+    counted = f"{trials} trial{'s' if trials != 1 else ''}"
+    return f"{counted} in {wall_s:.0f} s: {trials / wall_s * 3600:,.0f} trials an hour{at_once}"
+
+
 def exit_code(records: Sequence, checked: bool = True) -> int:
     """:data:`SUCCESS` when every trial passed (``checked``: its checks; else: its program ran to its end)."""
     passed = all(r.success for r in records) if checked else all(r.ok for r in records)

@@ -32,6 +32,7 @@ from roboscript.codegen import channel, confinement, protocol, wire
 from roboscript.codegen.outcomes import Outcome
 from roboscript.codegen.sandbox import MAX_ERROR, ExecutionResult, Limits, shortened
 from roboscript.errors import RoboScriptError
+from roboscript.phases import phase
 
 EXIT_GRACE = 5.0  # seconds past the time limit before a program's process that does not report is killed
 STARTUP_LIMIT = 60.0  # seconds a program's process may take to start and confine itself (stretched by load)
@@ -191,7 +192,8 @@ class _ToolSide:
         while True:
             cutoff = self.deadline + EXIT_GRACE if self.started is not None else startup
             try:
-                message = channel.receive(self.fd, protocol.MAX_ARGUMENTS + 4096, deadline=cutoff)
+                with phase("program"):  # the program's own process at work (or starting) between tool calls
+                    message = channel.receive(self.fd, protocol.MAX_ARGUMENTS + 4096, deadline=cutoff)
             except channel.ChannelTimeout:
                 return self._kill_for_time() if self.started is not None else self._setup_failed("no answer")
             except (channel.ChannelClosed, ConnectionError):

@@ -254,6 +254,7 @@ class PipelinePerception(Perception):
         motion = register(expected.points, instance.points)
         return expected if motion is None else moved(expected, motion)
 
+    @timed("perceive")
     def hangs_free(self, name: str) -> bool:
         """Looks at ``name`` alone in the hand once it hangs free: where it settled between the fingers (turned,
         slid down) is where it is carried and set down from. The rest of what is known stays as the last full look

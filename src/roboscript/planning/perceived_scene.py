@@ -20,6 +20,7 @@ from roboscript.perception.base import Perception, outside, within
 from roboscript.perception.furniture.carcass import carcass_facing, carcass_panels
 from roboscript.perception.reconstruction.carving import SHELL, seen_through
 from roboscript.perception.reconstruction.memory import remembered
+from roboscript.phases import timed
 from roboscript.planning.occupancy import VOXEL, occupied_boxes
 from roboscript.planning.scene import PlanningScene
 from roboscript.robots.description import RobotDescription
@@ -211,6 +212,7 @@ class PerceivedSceneSource:
         for name in moved:
             self._memory.pop(name, None)
 
+    @timed("scene")
     def current(self) -> PlanningScene:
         looks = getattr(self.perception, "looks", 0)
         if self._scene is None or self._stale or looks != self._looks:
