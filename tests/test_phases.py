@@ -51,7 +51,8 @@ def test_a_decorated_function_is_charged_even_when_it_raises(clock):
 
 
 def test_unknown_phases_are_refused_with_the_known_ones():
-    with pytest.raises(ValueError, match="unknown phase 'thinking'; phases: build, llm, program, render"), phase("thinking"):
+    known = "unknown phase 'thinking'; phases: build, llm, program, render"
+    with pytest.raises(ValueError, match=known), phase("thinking"):
         pass
     with pytest.raises(ValueError, match="unknown phase"):
         timed("thinking")
