@@ -50,3 +50,19 @@ def test_bad_sizes_are_refused():
     with pytest.raises(ValueError, match="thickness must be >= 0 metres"):
         occupied_boxes(np.zeros((3, 3)), thickness=-1)
     assert occupied_boxes(np.zeros((0, 3))) == []
+
+
+def test_cells_are_found_as_numpys_unique_rows_finds_them_in_the_same_order():
+    from roboscript.planning.occupancy import unique_cells
+
+    rng = np.random.default_rng(3)
+    for cells in (
+        rng.integers(-40, 60, size=(5000, 3)),
+        np.array([[7, -2, 3]]),
+        np.array([[0, 0, 0], [0, 0, 0], [-1, 5, 2]]),
+        np.array([[-(2**40), 0, 0], [2**40, 1, 1], [0, 2**30, 5]]),  # too wide to pack: the rows themselves
+        rng.integers(-9, 9, size=(300, 2)),  # columns of a plane
+    ):
+        expected, inverse = np.unique(cells, axis=0, return_inverse=True)
+        found, found_inverse = unique_cells(cells.astype(np.int64))
+        assert np.array_equal(found, expected) and np.array_equal(found_inverse, inverse.reshape(-1))

@@ -42,7 +42,7 @@ def occupied_voxels(points: np.ndarray, voxel: float = VOXEL) -> set[tuple[int, 
     points = np.asarray(points, dtype=float).reshape(-1, 3)
     if len(points) == 0:
         return set()
-    cells = np.unique(np.floor(points / voxel).astype(np.int64), axis=0)
+    cells, _ = unique_cells(np.floor(points / voxel).astype(np.int64))
     return {(int(i), int(j), int(k)) for i, j, k in cells}
 
 
@@ -94,6 +94,27 @@ def _runs(xs: list[int]) -> list[tuple[int, int]]:
     return runs
 
 
+def unique_cells(indices: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """``np.unique(indices, axis=0, return_inverse=True)`` for (N, D) integer cells, the same rows in the same
+    (lexicographic) order: each row is packed into one integer, row-major over the cells' bounding range, so the
+    sort is of N numbers rather than of N rows (a fifth of the time of building a perceived scene went to it)."""
+    indices = np.asarray(indices, dtype=np.int64)
+    if len(indices) == 0 or float(np.prod((np.ptp(indices, axis=0) + 1).astype(float))) >= 2**62:
+        cells, inverse = np.unique(indices, axis=0, return_inverse=True)  # too wide to pack: the rows themselves
+        return cells, inverse.reshape(-1)
+    low = indices.min(axis=0)
+    span = indices.max(axis=0) - low + 1
+    keys = np.zeros(len(indices), dtype=np.int64)
+    for column in range(indices.shape[1]):
+        keys = keys * span[column] + (indices[:, column] - low[column])
+    unique_keys, inverse = np.unique(keys, return_inverse=True)
+    cells = np.empty((len(unique_keys), indices.shape[1]), dtype=np.int64)
+    for column in reversed(range(indices.shape[1])):
+        cells[:, column] = unique_keys % span[column] + low[column]
+        unique_keys = unique_keys // span[column]
+    return cells, inverse.reshape(-1)
+
+
 def occupied_boxes(points: np.ndarray, voxel: float = VOXEL, thickness: float = THICKNESS) -> list[OccupiedBox]:
     """Boxes covering ``points``: each occupied voxel shrunk to the bounding box of its points, voxels whose
     shrunk boxes agree merged (:func:`merge_voxels`), every box grown to at least ``thickness`` along each axis
@@ -105,8 +126,7 @@ def occupied_boxes(points: np.ndarray, voxel: float = VOXEL, thickness: float = 
         raise ValueError(f"voxel must be a positive size in metres, got {voxel}")
     if len(points) == 0:
         return []
-    cells, inverse = np.unique(np.floor(points / voxel).astype(np.int64), axis=0, return_inverse=True)
-    inverse = inverse.reshape(-1)
+    cells, inverse = unique_cells(np.floor(points / voxel).astype(np.int64))
     lows = np.full((len(cells), 3), np.inf)
     highs = np.full((len(cells), 3), -np.inf)
     np.minimum.at(lows, inverse, points)

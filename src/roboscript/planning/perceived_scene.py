@@ -21,7 +21,7 @@ from roboscript.perception.furniture.carcass import carcass_facing, carcass_pane
 from roboscript.perception.reconstruction.carving import SHELL, seen_through
 from roboscript.perception.reconstruction.memory import remembered
 from roboscript.phases import timed
-from roboscript.planning.occupancy import VOXEL, occupied_boxes
+from roboscript.planning.occupancy import VOXEL, occupied_boxes, unique_cells
 from roboscript.planning.scene import PlanningScene
 from roboscript.robots.description import RobotDescription
 from roboscript.robots.mujoco_model import RobotBinding, attach_robot, configure_options
@@ -134,9 +134,9 @@ def filled_below(
     if len(points) == 0:
         return points
     columns = np.floor(points[:, :2] / step).astype(np.int64)
-    keys, inverse = np.unique(columns, axis=0, return_inverse=True)
+    keys, inverse = unique_cells(columns)
     lowest = np.full(len(keys), np.inf)
-    np.minimum.at(lowest, inverse.reshape(-1), points[:, 2])
+    np.minimum.at(lowest, inverse, points[:, 2])
     fill, depth_below = [], []
     for (i, j), low in zip(keys, lowest, strict=True):
         heights = np.arange(floor, low, step)
