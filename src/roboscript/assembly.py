@@ -11,7 +11,6 @@ from __future__ import annotations
 from roboscript import extras
 from roboscript.api.tools import ToolAPI
 from roboscript.backends.base import Backend, BackendError
-from roboscript.errors import MissingExtraError
 from roboscript.perception.base import Perception
 from roboscript.perception.modes import GROUND_TRUTH, PerceptionMode, perception_mode
 from roboscript.planning.motion import MotionPlanner
@@ -155,11 +154,7 @@ def _check_truth(backend: Backend, mode: PerceptionMode) -> None:
 
 def require_camera_pipeline(mode: PerceptionMode) -> None:
     """The camera pipeline fuses depth images with Open3D, an optional dependency: say so before anything moves."""
-    if not extras.installed("perception"):
-        raise MissingExtraError(
-            extras.missing_text("perception", f"--perception {mode}")
-            + " (only --perception gt runs without it, and only in simulation)"
-        )
+    extras.require("perception", f"--perception {mode}")
 
 
 def _detector(mode: PerceptionMode, scene: WorldSpec | None):

@@ -17,17 +17,24 @@ from roboscript.errors import MissingExtraError
 
 @dataclass(frozen=True)
 class Extra:
-    """An extra: the modules it brings (all must import) and what needs it, in a person's words."""
+    """An extra: the modules it brings (all must import), what it brings in a person's words, and what still works
+    without it (said with every message about it, where there is something to say)."""
 
     name: str
     modules: tuple[str, ...]
     brings: str
+    without: str = ""
 
 
 EXTRAS = {
     e.name: e
     for e in (
-        Extra("perception", ("open3d",), "Open3D (perception from the cameras: TSDF fusion)"),
+        Extra(
+            "perception",
+            ("open3d",),
+            "Open3D (perception from the cameras: TSDF fusion)",
+            "only --perception gt runs without it, and only in simulation",
+        ),
         Extra("report", ("matplotlib",), "matplotlib (reports' plots)"),
         Extra("record", ("mcap",), "mcap (MCAP recordings)"),
         Extra("video", ("imageio_ffmpeg",), "imageio-ffmpeg (videos)"),
@@ -88,7 +95,9 @@ def source_checkout() -> Path | None:
 
 def missing_text(name: str, needed_by: str) -> str:
     """What to say when ``needed_by`` (an option, a mode, a tool) needs the extra ``name`` and it is not installed."""
-    return f"{needed_by} needs {_extra(name).brings}, which is not installed; install it with: {install_hint(name)}"
+    extra = _extra(name)
+    text = f"{needed_by} needs {extra.brings}, which is not installed; install it with: {install_hint(name)}"
+    return f"{text} ({extra.without})" if extra.without else text
 
 
 def missing(name: str, needed_by: str) -> MissingExtraError:

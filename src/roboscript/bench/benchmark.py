@@ -150,21 +150,10 @@ def open_run(
 ) -> tuple[RunDirectory, list[TrialSpec]]:
     """Opens (or reopens, refusing other settings or programs) the run directory ``out`` and lists the trials it
     still needs; ``programs`` are the policy's (looked up here where not given)."""
-    if trials < 1:  # before the run directory is made: a refused run leaves nothing behind
-        raise InvalidArgumentError(f"trials must be at least 1, got {trials}")
-    if timeout <= 0:
-        raise InvalidArgumentError(f"the time limit must be positive, got {timeout} s")
     programs = programs if programs is not None else policy_programs(policy, tasks, suite)
     llm = policy_llm(policy)
-    texts = {t: p.program for t, p in programs.items()}
-    run = RunDirectory(
-        out,
-        provenance(
-            run_label(policy, repair_rounds), robot, trials, seed, texts, str(perception), repair_rounds, suite, backend
-        ),
-    )
-    done = run.done()
-    specs = [
+    # Every trial is made (and its settings checked) before the run directory: a refused run leaves nothing behind.
+    every = [
         s
         for t in tasks
         for s in trial_specs(
@@ -179,9 +168,16 @@ def open_run(
             backend=backend,
             robot_config=robot_config,
         )
-        if (s.task, s.robot, s.trial) not in done
     ]
-    return run, specs
+    texts = {t: p.program for t, p in programs.items()}
+    run = RunDirectory(
+        out,
+        provenance(
+            run_label(policy, repair_rounds), robot, trials, seed, texts, str(perception), repair_rounds, suite, backend
+        ),
+    )
+    done = run.done()
+    return run, [s for s in every if (s.task, s.robot, s.trial) not in done]
 
 
 def run_benchmark(
@@ -208,24 +204,22 @@ def run_benchmark(
     tasks = list(tasks or load_suite(suite))
     for t in tasks:
         get_task(t, suite)
-    if jobs < 1:
-        raise InvalidArgumentError(f"jobs must be at least 1, got {jobs}")
     started = time.perf_counter()
-    run, specs = open_run(
-        out, policy, tasks, robot, trials, seed, timeout, repair_rounds, perception, suite, backend, robot_config
-    )
-    specs = with_videos(specs, run.path, videos)
-    total = len(tasks) * trials
-    bar = ProgressBar(total, total - len(specs)) if progress else None
+    with TrialPool(jobs) as pool:  # made first: a bad number of jobs is refused before the run directory is made
+        run, specs = open_run(
+            out, policy, tasks, robot, trials, seed, timeout, repair_rounds, perception, suite, backend, robot_config
+        )
+        specs = with_videos(specs, run.path, videos)
+        total = len(tasks) * trials
+        bar = ProgressBar(total, total - len(specs)) if progress else None
 
-    def on_result(spec: TrialSpec, record: TrialRecord) -> None:
-        keep_video(spec, record, videos)
-        run.append(record)
-        run.write_summary(tasks)
-        if bar is not None:
-            bar.update(record)
+        def on_result(spec: TrialSpec, record: TrialRecord) -> None:
+            keep_video(spec, record, videos)
+            run.append(record)
+            run.write_summary(tasks)
+            if bar is not None:
+                bar.update(record)
 
-    with TrialPool(jobs) as pool:
         pool.run(specs, on_result=on_result)
     summary = run.write_summary(tasks)
     records = run.records()

@@ -9,26 +9,26 @@ import os
 ROBOT_NAMES = ("panda", "ur5e", "fr3")
 
 
-def rounds(text: str) -> int:
-    """``--repair``: a whole number of rounds, 0 or more."""
+def _whole_number(text: str, least: int, expected: str, refused: str) -> int:
+    """``text`` as a whole number of at least ``least``; argparse's error names ``expected`` where it is not one
+    and says ``refused <least> or more`` where it is too small."""
     try:
         value = int(text)
     except ValueError:
-        raise argparse.ArgumentTypeError(f"expected a whole number of rounds, got {text!r}") from None
-    if value < 0:
-        raise argparse.ArgumentTypeError(f"repair rounds must be 0 or more, got {value}")
+        raise argparse.ArgumentTypeError(f"expected {expected}, got {text!r}") from None
+    if value < least:
+        raise argparse.ArgumentTypeError(f"{refused} {least} or more, got {value}")
     return value
+
+
+def rounds(text: str) -> int:
+    """``--repair``: a whole number of rounds, 0 or more."""
+    return _whole_number(text, 0, "a whole number of rounds", "repair rounds must be")
 
 
 def count(text: str) -> int:
     """``--trials``, ``--jobs``: a whole number, 1 or more."""
-    try:
-        value = int(text)
-    except ValueError:
-        raise argparse.ArgumentTypeError(f"expected a whole number, 1 or more, got {text!r}") from None
-    if value < 1:
-        raise argparse.ArgumentTypeError(f"must be 1 or more, got {value}")
-    return value
+    return _whole_number(text, 1, "a whole number, 1 or more", "must be")
 
 
 def seconds(text: str) -> float:

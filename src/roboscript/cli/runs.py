@@ -150,8 +150,9 @@ def cmd_run(args: argparse.Namespace) -> int:
         return _run_llm_on_robot(args, llm, label)
     specs = trial_specs(label, LLMAuthor(args.llm or llm.name, args.repair), **_trial_options(args, args.instruction))
     show = None if args.json else stage_printer()
-    for spec in specs if show else []:
-        show(spec, "starting its process")
+    if show is not None:
+        for spec in specs:
+            show(spec, "starting its process")
     records = run_isolated(specs, args.jobs, on_stage=show)
     result = task_result(label, args.robot, records)
     checked = not args.world

@@ -111,6 +111,8 @@ def _add_pool_options(parser: argparse.ArgumentParser) -> None:
 
 def add_study_commands(sub) -> None:
     """``sweep`` and ``study`` on the ``roboscript`` parser's subcommands."""
+    from roboscript.bench.results import VIDEO_CHOICES
+
     sweep = sub.add_parser("sweep", help="run a sweep file: tasks x trials x policies x robots x perception modes")
     sweep.add_argument("sweep_file", help="a sweep file (YAML or JSON; see roboscript.study.sweep_file)")
     _add_pool_options(sweep)
@@ -130,7 +132,7 @@ def add_study_commands(sub) -> None:
     study.add_argument("--seed", type=int, default=0, help="trial i uses seed + i for the world's randomisation")
     study.add_argument("--timeout", type=float, default=300.0, help="time limit of one program, wall seconds")
     study.add_argument(
-        "--videos", choices=["none", "failed", "all"], default="none", help="record trials' videos (kept: failed/all)"
+        "--videos", choices=VIDEO_CHOICES, default="none", help="record trials' videos (kept: failed/all)"
     )
     _add_pool_options(study)
     study.set_defaults(func=cmd_study)

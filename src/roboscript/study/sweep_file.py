@@ -25,10 +25,10 @@ from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
 
+from roboscript.bench.results import VIDEO_CHOICES
 from roboscript.datafile import DataFileError, Reader, names_a_file, read_data_file
 from roboscript.errors import InvalidArgumentError
 
-VIDEO_CHOICES = ("none", "failed", "all")
 _FIELDS = {
     "sweep", "description", "suite", "study", "tasks", "policies", "robots", "perception", "trials", "seed",
     "timeout", "repair_rounds", "videos",
