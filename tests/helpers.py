@@ -1,5 +1,5 @@
-"""Helpers for tests: worlds built from dicts, a driver test double, and a small IK used only to script joint
-targets in tests.
+"""Helpers for tests: worlds built from dicts, a driver test double, a small IK used only to script joint
+targets in tests, and how a sweep's trials ended.
 
 The project's own IK belongs to the planning layer; this damped-least-squares solver exists so that foundation
 tests can compute joint waypoints without depending on it.
@@ -8,8 +8,10 @@ tests can compute joint waypoints without depending on it.
 from __future__ import annotations
 
 import importlib.util
+import json
 import time
 from itertools import pairwise
+from pathlib import Path
 
 import mujoco
 import numpy as np
@@ -150,3 +152,14 @@ def min_jerk_through(
             velocities.append(ds * delta)
         t0 += duration
     return JointTrajectory(np.array(times), np.array(positions), np.array(velocities))
+
+
+def sweep_outcomes(run_dir: Path) -> dict:
+    """Per (task, trial) of a run directory: its seed, how it ended and which checks passed. Not the simulated
+    time: a planner stops at its first path, and which one it finds first depends on how fast the machine is at
+    that moment."""
+    out = {}
+    for line in (run_dir / "results.jsonl").read_text().splitlines():
+        r = json.loads(line)
+        out[(r["task"], r["trial"])] = (r["seed"], r["outcome"], [c["passed"] for c in r["checks"]])
+    return out

@@ -14,7 +14,9 @@ from pathlib import Path
 import pytest
 import yaml
 
+from helpers import sweep_outcomes
 from roboscript.bench.progress import ProgressBar
+from roboscript.bench.results import read_records
 from roboscript.bench.stats import wilson_interval
 from roboscript.bench.trial import TrialRecord
 from roboscript.study.sweep import LocalExecutor, plan_sweep, run_sweep
@@ -30,16 +32,6 @@ def _sweep(tmp_path: Path, **fields) -> Path:
     path = tmp_path / "sweep.yaml"
     path.write_text(yaml.safe_dump(data))
     return path
-
-
-def _outcomes(run_dir: Path) -> dict:
-    """Per (task, trial): its seed, how it ended and which checks passed. Not the simulated time: a planner stops
-    at its first path, and which one it finds first depends on how fast the machine is at that moment."""
-    out = {}
-    for line in (run_dir / "results.jsonl").read_text().splitlines():
-        r = json.loads(line)
-        out[(r["task"], r["trial"])] = (r["seed"], r["outcome"], [c["passed"] for c in r["checks"]])
-    return out
 
 
 def test_wilson_interval_known_values():
@@ -117,19 +109,28 @@ def test_a_sweep_on_ray_ends_each_trial_as_the_process_pool_does(tmp_path):
 
     sweep = load_sweep_file(_sweep(tmp_path))
     pool_runs = run_sweep(sweep, tmp_path / "pool", LocalExecutor(2), progress=False)
-    os.environ["RAY_AUTH_MODE"] = "disabled"
-    ray.init(num_cpus=2, include_dashboard=False, log_to_driver=False)
+    executor = RayExecutor(jobs=2)  # a local cluster it starts, on loopback
     try:
-        executor = RayExecutor(jobs=2)
         assert ray.cluster_resources()["CPU"] == 2
+        assert [n["NodeManagerAddress"] for n in ray.nodes()] == ["127.0.0.1"]
         ray_runs = run_sweep(sweep, tmp_path / "ray", executor, progress=False)
     finally:
-        ray.shutdown()
+        executor.close()
     (pool_run,), (ray_run,) = pool_runs, ray_runs
-    pooled, rayed = _outcomes(pool_run.directory.path), _outcomes(ray_run.directory.path)
+    pooled, rayed = sweep_outcomes(pool_run.directory.path), sweep_outcomes(ray_run.directory.path)
     assert len(pooled) == 2 * 3 * 2  # 2 objects x 3 grasp tools x 2 trials
     assert rayed == pooled
     assert {o[1] for o in pooled.values()} == {"ok", "planning_failure"}  # the can is wider than the opening
+    assert {r.node for r in pool_run.directory.records()} == {""}
+    assert {r.node for r in ray_run.directory.records()} == {"127.0.0.1"}
+
+
+def test_a_record_keeps_the_node_that_ran_it_and_one_written_before_nodes_were_kept_still_reads(tmp_path):
+    results = tmp_path / "results.jsonl"
+    record = TrialRecord(task="t", robot="panda", trial=0, seed=0, ok=True, error=None, node="10.0.0.2")
+    older = {k: v for k, v in record.to_dict().items() if k != "node"}
+    results.write_text(json.dumps(record.to_dict()) + "\n" + json.dumps({**older, "trial": 1}) + "\n")
+    assert [(r.trial, r.node) for r in read_records(results)] == [(0, "10.0.0.2"), (1, "")]
 
 
 def test_a_killed_sweep_resumes_with_nothing_lost_or_repeated(tmp_path):

@@ -122,6 +122,7 @@ class TrialRecord:
     phases: dict[str, float] = field(default_factory=dict)
     # Which process judged the outcome and the checks, and where the program ran: never the same process.
     judged_by: str = ""
+    node: str = ""  # the address of the Ray node that ran the trial; empty on a local process pool
 
     @property
     def never_ran(self) -> bool:

@@ -81,6 +81,7 @@ class TrialActor:
             video = self.scratch / f"{os.getpid()}_{Path(spec.video).name}"
             spec = replace(spec, video=str(video))
         record = self.pool.run([spec])[0]
+        record.node = _ray().util.get_node_ip_address()
         data = None
         if video is not None and video.is_file():
             data = video.read_bytes()
@@ -90,15 +91,17 @@ class TrialActor:
 
 class RayExecutor(Executor):
     """Runs trials on the Ray cluster at ``address`` (``auto``, ``host:port``), or on a local one that it starts
-    with ``jobs`` CPUs when no address is given; ``jobs`` actors (default: the cluster's CPUs) run at once."""
+    on loopback with ``jobs`` CPUs when no address is given; ``jobs`` actors (default: the cluster's CPUs) run at
+    once. Each record names the node that ran it (``node``, its address)."""
 
     def __init__(self, address: str | None = None, jobs: int | None = None):
         ray = _ray()
         os.environ.setdefault("RAY_AUTH_MODE", "disabled")
         self.started_here = not ray.is_initialized()
-        if self.started_here:
-            options = {"num_cpus": jobs} if address is None and jobs else {}
-            ray.init(address=address, include_dashboard=False, log_to_driver=False, **options)
+        if self.started_here and address is None:
+            _start_local(ray, jobs)
+        elif self.started_here:
+            ray.init(address=address, include_dashboard=False, log_to_driver=False)
         self.jobs = jobs or max(1, int(ray.cluster_resources().get("CPU", 1)))
 
     def run(self, specs: list[TrialSpec], on_result: Callable[[TrialSpec, TrialRecord], None]) -> None:
@@ -142,6 +145,22 @@ class RayExecutor(Executor):
     def close(self) -> None:
         if self.started_here:
             _ray().shutdown()
+
+
+def _start_local(ray, cpus: int | None) -> None:
+    """Starts a Ray cluster of this machine alone, on loopback: its processes listen on 127.0.0.1, not on every
+    interface. Ray replaces 127.0.0.1 with this machine's interface address (for other nodes to join) unless it
+    believes multi-node clusters are off, which it reads from ``RAY_ENABLE_WINDOWS_OR_OSX_CLUSTER`` once, on import;
+    so it is told they are off while it starts (a private constant of Ray's: the extra pins Ray's version)."""
+    from ray._private import ray_constants
+
+    clusters = ray_constants.ENABLE_RAY_CLUSTER
+    ray_constants.ENABLE_RAY_CLUSTER = False
+    try:
+        options = {"num_cpus": cpus} if cpus else {}
+        ray.init(include_dashboard=False, log_to_driver=False, _node_ip_address="127.0.0.1", **options)
+    finally:
+        ray_constants.ENABLE_RAY_CLUSTER = clusters
 
 
 def _lost(spec: TrialSpec, exc: Exception) -> TrialRecord:
