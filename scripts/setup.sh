@@ -10,10 +10,11 @@ PYTHON="${PYTHON:-python3}"
 if command -v apt-get >/dev/null 2>&1; then
   SUDO=""
   if [ "$(id -u)" -ne 0 ]; then SUDO="sudo"; fi
-  echo "== system packages (EGL/OSMesa for offscreen rendering, libusb for Open3D, libseccomp for the sandbox)"
+  echo "== system packages (EGL/OSMesa for offscreen rendering, libusb for Open3D, libseccomp for the sandbox,"
+  echo "   iproute2 for the network namespaces of the two-node Ray test)"
   $SUDO apt-get update -qq
   $SUDO env DEBIAN_FRONTEND=noninteractive apt-get install -y -qq --no-install-recommends \
-    libegl1 libegl-mesa0 libgl1-mesa-dri libosmesa6 libusb-1.0-0 libseccomp2 >/dev/null
+    libegl1 libegl-mesa0 libgl1-mesa-dri libosmesa6 libusb-1.0-0 libseccomp2 iproute2 >/dev/null
 fi
 
 # ROS 1 (Debian's ros_comm) for the ROS backend and `roboscript ros-sim`: optional (ROS=0 leaves it out); the project

@@ -8,6 +8,7 @@ import re
 import signal
 import subprocess
 import sys
+import tempfile
 import time
 from pathlib import Path
 
@@ -109,6 +110,7 @@ def test_a_sweep_on_ray_ends_each_trial_as_the_process_pool_does(tmp_path):
 
     sweep = load_sweep_file(_sweep(tmp_path))
     pool_runs = run_sweep(sweep, tmp_path / "pool", LocalExecutor(2), progress=False)
+    scratch_before = set(Path(tempfile.gettempdir()).glob("roboscript-ray-*"))
     executor = RayExecutor(jobs=2)  # a local cluster it starts, on loopback
     try:
         assert ray.cluster_resources()["CPU"] == 2
@@ -123,6 +125,8 @@ def test_a_sweep_on_ray_ends_each_trial_as_the_process_pool_does(tmp_path):
     assert {o[1] for o in pooled.values()} == {"ok", "planning_failure"}  # the can is wider than the opening
     assert {r.node for r in pool_run.directory.records()} == {""}
     assert {r.node for r in ray_run.directory.records()} == {"127.0.0.1"}
+    # The actors removed their scratch folders (copies of the suite) as the run ended.
+    assert set(Path(tempfile.gettempdir()).glob("roboscript-ray-*")) <= scratch_before
 
 
 def test_a_record_keeps_the_node_that_ran_it_and_one_written_before_nodes_were_kept_still_reads(tmp_path):

@@ -9,6 +9,7 @@ from __future__ import annotations
 
 import contextlib
 import os
+import shutil
 import tempfile
 from collections.abc import Callable
 from dataclasses import replace
@@ -19,6 +20,8 @@ from roboscript.bench.trial import TrialRecord, TrialSpec
 from roboscript.datafile import names_a_file
 from roboscript.errors import InvalidArgumentError
 from roboscript.study.sweep import Executor
+
+CLOSE_TIMEOUT = 30.0  # seconds the actors are given to remove their scratch folders at the end of a run
 
 
 def _ray():
@@ -69,6 +72,10 @@ class TrialActor:
                 (folder / relative).write_bytes(data)
             self.suites[suite] = str(folder / Path(suite).name)
         return self.suites[suite]
+
+    def close(self) -> None:
+        """Removes this actor's scratch folder (its copies of suites, and videos not yet sent)."""
+        shutil.rmtree(self.scratch, ignore_errors=True)
 
     def run(self, spec: TrialSpec, packed_suite: dict[str, bytes] | None = None) -> tuple[dict, bytes | None]:
         """The trial's record, and its video's bytes where it recorded one (written here in a scratch folder:
@@ -138,8 +145,17 @@ class RayExecutor(Executor):
                 if pending:
                     give(actor)
         finally:
+            closing = []
+            busy = {id(actor) for actor, _ in running.values()}  # a run cut short: these are killed as they are
             for actor in actors:
+                if id(actor) in busy:
+                    continue
                 with contextlib.suppress(Exception):  # already dead with its node
+                    closing.append(actor.close.remote())
+            with contextlib.suppress(Exception):  # an actor that does not answer keeps its folder
+                ray.wait(closing, num_returns=len(closing), timeout=CLOSE_TIMEOUT)
+            for actor in actors:
+                with contextlib.suppress(Exception):
                     ray.kill(actor)
 
     def close(self) -> None:
