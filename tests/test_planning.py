@@ -27,6 +27,7 @@ from roboscript.planning.approaches import approaches
 from roboscript.planning.ground_truth_scene import ground_truth_motion
 from roboscript.planning.ik import TCP_POSE_COLLIDES, IKSearch
 from roboscript.planning.planner import (
+    CONSTRAINED_RANGE,
     JointPlanner,
     densify,
     import_ompl,
@@ -473,6 +474,11 @@ def test_a_carried_object_stays_upright_where_the_arm_changes_branch():
     assert keeps_upright(start) and keeps_upright(goal)
     path = motion.planner.plan(start, goal, "RRTConnect", 10.0, constraint=keeps_upright)
     assert max(tilt(q) for q in densify(path.waypoints, motion.scene.lever_arms, 0.005)) <= limit
+    # Under a path constraint the tree grows in short steps (OMPL's default, a fifth of the joint space's extent,
+    # rarely meets the constraint all along): the raw path's states lie no farther apart than that.
+    raw = motion.planner.plan(start, goal, "RRTConnect", 10.0, simplify=False, constraint=keeps_upright)
+    steps = np.linalg.norm(np.diff(raw.waypoints, axis=0), axis=1)
+    assert len(raw.waypoints) > 2 and steps.max() <= CONSTRAINED_RANGE + 1e-9
     backend.close()
 
 
