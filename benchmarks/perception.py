@@ -22,6 +22,7 @@ which the detector was trained on (training renders worlds of another recipe and
 from __future__ import annotations
 
 import argparse
+import dataclasses
 import statistics
 import time
 from collections.abc import Callable
@@ -30,6 +31,7 @@ from pathlib import Path
 
 import numpy as np
 
+from roboscript.assembly import fusion_settings
 from roboscript.backends.mujoco_backend import MujocoBackend
 from roboscript.detector_training.evaluation import Tally
 from roboscript.perception.detection.detector_model import load_detector_model
@@ -62,6 +64,8 @@ def measure(world: str, args: argparse.Namespace, settings: FusionSettings, nois
     spec = load_world(world)
     backend = MujocoBackend(spec, robot=args.robot)
     try:
+        # Fused down to where the product fuses on this backend (not the floor under the table).
+        settings = dataclasses.replace(settings, lowest=fusion_settings(backend).lowest)
         gt = backend.ground_truth
         objects = [e.name for e in gt.world.entities if e.kind == "object"]
         parts = [e.name for e in gt.world.entities if e.kind in ("furniture", "part")]

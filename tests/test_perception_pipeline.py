@@ -7,6 +7,7 @@ import dataclasses
 
 import numpy as np
 import pytest
+from scipy.spatial import cKDTree
 
 from roboscript.backends.mujoco_backend import MujocoBackend
 from roboscript.perception.detection.grounding import (
@@ -17,9 +18,10 @@ from roboscript.perception.detection.grounding import (
     normalize_phrase,
 )
 from roboscript.perception.evaluation import score_instances, tuple_is_correct
-from roboscript.perception.reconstruction.fusion import FusionSettings, depth_problem, fuse
+from roboscript.perception.points import normal_map, pixels_outside, point_map
+from roboscript.perception.reconstruction.fusion import FusionSettings, depth_problem, fuse, heights
 from roboscript.perception.reconstruction.matching import match_views
-from roboscript.perception.reconstruction.observation import observe
+from roboscript.perception.reconstruction.observation import _maps_within, observe, why_not_found
 from roboscript.sim.world_catalog import world_names
 
 
@@ -116,3 +118,50 @@ def test_matching_is_greedy_one_box_per_view_with_majority_labels():
     assert matched[0].votes == {"apple": 2, "lemon": 1}
     lonely = match_views([[vec(0)], [vec(9)]], [[Detection2D("a", box)], [Detection2D("b", box)]])
     assert sorted(m.boxes for m in lonely) == [(-1, 0), (0, -1)]
+
+
+def test_fusion_leaves_out_what_lies_below_the_lowest_height_and_keeps_the_rest():
+    """The floor seen past the table's edges is left out of the fused surface; what stands on the table is fused
+    as before (the table's far edges aside, where the floor's rays no longer pass)."""
+    backend, frames = _look("world_2_pick_and_place")
+    backend.close()
+    for frame in frames:  # each pixel's height is its point's
+        seen = frame.depth > 0
+        np.testing.assert_allclose(heights(frame)[seen], point_map(frame)[seen][:, 2], atol=1e-9)
+    everything = fuse(frames, FusionSettings())
+    lowest = 0.5
+    above = fuse(frames, FusionSettings(lowest=lowest))
+    assert (everything.points[:, 2] < lowest).sum() > 0.1 * len(everything.points)  # the floor is in view
+    assert above.points[:, 2].min() >= lowest - FusionSettings().truncation
+    on_table = everything.points[everything.points[:, 2] > 0.9]
+    gaps, _ = cKDTree(above.points).query(on_table)
+    assert np.median(gaps) == 0.0 and np.mean(gaps < 0.003) > 0.99
+
+
+def test_point_maps_made_within_the_boxes_equal_the_whole_frames_there():
+    backend, frames = _look("world_2_pick_and_place")
+    apple = backend.ground_truth.box("apple")
+    backend.close()
+    boxes = [(100, 50, 220, 160), (300, 200, 401, 300)]
+    for frame in frames:
+        whole = point_map(frame)
+        normals = normal_map(whole, frame.extrinsics.position)
+        points, windowed = _maps_within(frame, None, [Detection2D("a", b) for b in boxes])
+        for x0, y0, x1, y1 in boxes:
+            np.testing.assert_array_equal(points[y0:y1, x0:x1], whole[y0:y1, x0:x1])
+            np.testing.assert_array_equal(windowed[y0:y1, x0:x1], normals[y0:y1, x0:x1])
+        # The pixels a look confined to the apple's box keeps are those whose points lie in it.
+        kept = ~pixels_outside(frame, apple)
+        inside = np.all((whole > apple.lower) & (whole < apple.upper), axis=2)
+        np.testing.assert_array_equal(kept, inside)
+        assert kept.sum() > 50 or frame.name == "camera_top"
+
+
+def test_a_look_whose_masks_leave_nothing_finds_nothing_and_says_so():
+    """A look confined to where nothing is (an in-hand look at an empty hand) fuses nothing and finds nothing."""
+    backend, frames = _look("world_2_pick_and_place")
+    backend.close()
+    nothing = [np.ones(f.depth.shape, dtype=bool) for f in frames]
+    seen = observe(frames, SegmentationGrounder(backend.ground_truth.world.entities), ["apple"], robot_masks=nothing)
+    assert seen.instances == [] and len(seen.scene.points) == 0
+    assert "found 'apple'" in why_not_found(seen, "apple")

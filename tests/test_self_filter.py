@@ -24,7 +24,17 @@ def test_the_robot_is_masked_and_the_scene_is_not(robot):
         world.data.qpos[world.robot.qpos] = q
         mujoco.mj_forward(world.model, world.data)
         frames = [backend.capture(c) for c in backend.camera_names()]
-        masks = SelfFilter(backend.robot, backend.base_pose()).masks(frames, backend.joint_states())
+        self_filter = SelfFilter(backend.robot, backend.base_pose())
+        masks = self_filter.masks(frames, backend.joint_states())
+        # Told only where asked (a look at what the hand holds), the pixels asked about are told as before.
+        wanted = [np.zeros(f.depth.shape, dtype=bool) for f in frames]
+        for w in wanted:
+            w[101:299, 201:499] = True  # odd edges: working pixels (2 x 2 blocks) half in, half out
+            w[5, 7] = True  # and one pixel alone
+        partial = self_filter.masks(frames, backend.joint_states(), wanted)
+    for mask, part, w in zip(masks, partial, wanted, strict=True):
+        np.testing.assert_array_equal(part[w], mask[w])
+        assert part.sum() < mask.sum(), "rays were cast only where asked"
     for frame, mask in zip(frames, masks, strict=True):
         truth = frame.segmentation == robot_index
         assert mask.shape == truth.shape and truth.sum() > 1000

@@ -13,10 +13,13 @@ from roboscript.api.tools import ToolAPI
 from roboscript.backends.base import Backend, BackendError
 from roboscript.perception.base import Perception
 from roboscript.perception.modes import GROUND_TRUTH, PerceptionMode, perception_mode
+from roboscript.perception.reconstruction.fusion import FusionSettings
 from roboscript.planning.motion import MotionPlanner
 from roboscript.sim.world_file import WorldSpec
 
 SCENE_PADDING = 0.005  # metres: contacts closer than this count as collisions in the planning scene
+FUSED_BELOW_BASE = 0.25  # metres below the robot's base (it stands on the table) down to which the cameras' views
+# are fused: the table's edges and anything low beside it, not the floor
 
 
 def build_tools(
@@ -66,7 +69,12 @@ def build_perception(
     else:
         grounder = SegmentationGrounder(world.entities, seed=seed)
     return PipelinePerception(
-        backend, grounder, world.entity_names(("object",)), truth, robot_index=_robot_label(backend)
+        backend,
+        grounder,
+        world.entity_names(("object",)),
+        truth,
+        robot_index=_robot_label(backend),
+        settings=fusion_settings(backend),
     )
 
 
@@ -123,7 +131,20 @@ def _perception_from_sensors(backend: Backend, mode: PerceptionMode, seed: int, 
         grounder, named = _detector(mode, scene), []
     vocabulary = scene.object_names() if scene is not None else named
     robot = SelfFilter(backend.robot, backend.base_pose()) if robot_index is None else None
-    return PipelinePerception(backend, grounder, vocabulary, labels, robot_index=robot_index, self_filter=robot)
+    return PipelinePerception(
+        backend,
+        grounder,
+        vocabulary,
+        labels,
+        robot_index=robot_index,
+        settings=fusion_settings(backend),
+        self_filter=robot,
+    )
+
+
+def fusion_settings(backend: Backend) -> FusionSettings:
+    """How the cameras' views are fused on ``backend``: down to :data:`FUSED_BELOW_BASE` below the robot's base."""
+    return FusionSettings(lowest=float(backend.base_pose().position[2]) - FUSED_BELOW_BASE)
 
 
 def furniture_labels(scene: WorldSpec):

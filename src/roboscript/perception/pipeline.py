@@ -39,7 +39,7 @@ from roboscript.perception.detection.grounding import Grounder, normalize_phrase
 from roboscript.perception.detection.labels import PartLabels
 from roboscript.perception.footprints import outline_of
 from roboscript.perception.furniture.seen_furniture import SeenFurniture, shows_in_pieces
-from roboscript.perception.points import robot_masks, surface_points
+from roboscript.perception.points import pixels_outside, robot_masks, surface_points
 from roboscript.perception.reconstruction.faces import plane_normal_at
 from roboscript.perception.reconstruction.free_space import stands_empty
 from roboscript.perception.reconstruction.fusion import FusionSettings
@@ -65,6 +65,7 @@ MOVED = 0.005  # metres the gripper must have moved since a look for another loo
 JUMP = 0.05  # metres an untouched object's find may lie from where it stood before it must show it has gone
 SAME_PLACE = 0.5  # box IoU above which a find stands where another known object does: it is that one
 MIN_KEPT = 30  # points a find must keep of its own for what a settled thing takes back to be taken
+IN_HAND_REACH = 0.06  # metres round where a carried object should hang within which the in-hand look looks for it
 
 
 class PipelinePerception(Perception):
@@ -165,10 +166,12 @@ class PipelinePerception(Perception):
             if MIN_KEPT <= keep.sum() < len(keep):
                 self.store[name] = dataclasses.replace(obj, points=obj.points[keep], normals=obj.normals[keep])
 
-    def _robot_masks(self, frames: list) -> list[np.ndarray | None]:
+    def _robot_masks(self, frames: list, wanted: list[np.ndarray] | None = None) -> list[np.ndarray | None]:
+        """The robot's pixels in each frame (``wanted``: those of each frame whose answer matters, where only some
+        do)."""
         if self.robot_index is not None or self.self_filter is None:
             return robot_masks(frames, self.robot_index)
-        return self.self_filter.masks(frames, self.backend.joint_states())
+        return self.self_filter.masks(frames, self.backend.joint_states(), wanted)
 
     def _update(self, phrase: str, found: list[Instance3D], seen: Observation) -> set[str]:
         """Puts what was found for ``phrase`` into the store, and returns the names it stored. Earlier objects of
@@ -264,11 +267,20 @@ class PipelinePerception(Perception):
         self.backend.wait(HANG_TIME)
         frames = [self.backend.capture(c) for c in self.backend.camera_names()]
         phrase = self.store[name].phrase
-        seen = observe(frames, self.grounder, [phrase], self.settings, self._robot_masks(frames))
+        expected = self._expected(name)
+        # Only what lies about where it should hang is looked at, and the table below it (what a look measures
+        # heights from): the rest of the scene is as the last look saw it.
+        lower = expected.box.lower - IN_HAND_REACH
+        if self.last is not None:
+            lower[2] = min(lower[2], self.last.support - IN_HAND_REACH)
+        around = Box3D(lower, expected.box.upper + IN_HAND_REACH)
+        away = [pixels_outside(f, around) for f in frames]
+        robot = self._robot_masks(frames, wanted=[~a for a in away])
+        masks = [a if m is None else a | m for a, m in zip(away, robot, strict=True)]
+        seen = observe(frames, self.grounder, [phrase], self.settings, masks)
         found = [i for i in seen.instances if i.label == phrase]
         if not found:
             return False
-        expected = self._expected(name)
         nearest = min(found, key=lambda i: float(np.linalg.norm(i.box.center - expected.box.center)))
         self.store[name] = self._in_hand(expected, nearest)
         return self.store[name] is not expected

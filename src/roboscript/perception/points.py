@@ -7,20 +7,49 @@ from dataclasses import replace
 
 import numpy as np
 
+from roboscript.geometry import Box3D
 from roboscript.phases import timed
 from roboscript.robot_io import CameraFrame
 
 
 @timed("perceive")
-def point_map(frame: CameraFrame, hidden: np.ndarray | None = None) -> np.ndarray:
-    """World coordinates of every pixel, (H, W, 3); NaN where the depth is 0 (nothing seen) and where ``hidden``
-    (H, W) marks a pixel (the robot's own: no surface of the scene)."""
+def point_map(
+    frame: CameraFrame, hidden: np.ndarray | None = None, window: tuple[slice, slice] | None = None
+) -> np.ndarray:
+    """World coordinates of every pixel, (H, W, 3), or of the pixels of ``window`` (rows, columns); NaN where the
+    depth is 0 (nothing seen) and where ``hidden`` (H, W) marks a pixel (the robot's own: no surface of the
+    scene)."""
     h, w = frame.depth.shape
-    rows, cols = np.indices((h, w)).reshape(2, -1)
-    world = _pixels_to_world(frame, rows, cols).reshape(h, w, 3)
+    rows_in, cols_in = window or (slice(0, h), slice(0, w))
+    rows, cols = np.mgrid[rows_in, cols_in]
+    world = _pixels_to_world(frame, rows.ravel(), cols.ravel()).reshape(*rows.shape, 3)
     if hidden is not None:
-        world[hidden] = np.nan
+        world[hidden[rows_in, cols_in]] = np.nan
     return world
+
+
+def pixels_outside(frame: CameraFrame, box: Box3D) -> np.ndarray:
+    """The (H, W) pixels whose point lies outside ``box`` or that see nothing: a look confined to where one thing
+    can be. Points are made only inside the image rectangle the box's corners span."""
+    h, w = frame.depth.shape
+    out = np.ones((h, w), dtype=bool)
+    to_camera = frame.extrinsics.inverse()
+    camera = box.corners() @ to_camera.rotation.T + to_camera.position
+    k = frame.intrinsics
+    if np.any(camera[:, 2] <= 0.01):  # the box reaches behind the camera: every pixel may see into it
+        r0, r1, c0, c1 = 0, h, 0, w
+    else:
+        u = k[0, 0] * camera[:, 0] / camera[:, 2] + k[0, 2]
+        v = k[1, 1] * camera[:, 1] / camera[:, 2] + k[1, 2]
+        c0, c1 = max(int(np.floor(u.min())), 0), min(int(np.ceil(u.max())) + 1, w)
+        r0, r1 = max(int(np.floor(v.min())), 0), min(int(np.ceil(v.max())) + 1, h)
+    if r1 <= r0 or c1 <= c0:
+        return out
+    rows, cols = np.indices((r1 - r0, c1 - c0)).reshape(2, -1)
+    world = _pixels_to_world(frame, rows + r0, cols + c0)
+    inside = np.all((world > box.lower) & (world < box.upper), axis=1)  # NaN (no depth) is outside
+    out[r0:r1, c0:c1] = ~inside.reshape(r1 - r0, c1 - c0)
+    return out
 
 
 def evenly_spread(points: np.ndarray, most: int) -> np.ndarray:

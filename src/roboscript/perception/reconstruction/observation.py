@@ -61,6 +61,9 @@ def observe(
         problems = "; ".join(f"{name}: {why}" for name, why in scene.skipped.items())
         raise ValueError(f"no camera gave a usable depth image ({problems})")
     usable = [f for f in frames if f.name in scene.used]
+    if len(scene.points) == 0:  # the masks left nothing to fuse (a look confined to an empty place): nothing found
+        nothing = [[] for _ in usable]
+        return Observation(usable, scene, nothing, [], nothing, [], [], float("nan"))
     # The robot's own pixels are no object's, nor any part's.
     hidden = dict(zip((f.name for f in frames), robot_masks or [None] * len(frames), strict=True))
     detections = [grounder.detect(without_pixels(f, hidden[f.name]), phrases) for f in usable]
@@ -72,11 +75,30 @@ def observe(
     instances = build_instances(
         matched, scene.points, scene.normals, memberships, projections, support, areas, pieces=pieces
     )
-    maps = [point_map(f, hidden[f.name]) for f in usable]
-    normals = [normal_map(m, f.extrinsics.position) for m, f in zip(maps, usable, strict=True)]
+    windowed = [_maps_within(f, hidden[f.name], ds) for f, ds in zip(usable, detections, strict=True)]
+    maps, normals = [m for m, _ in windowed], [n for _, n in windowed]
     instances = refine_all(instances, detections, maps, normals, support, furniture)
     instances = ground(instances, support)
     return Observation(usable, scene, detections, projections, memberships, matched, instances, support)
+
+
+def _maps_within(
+    frame: CameraFrame, hidden: np.ndarray | None, detections: Sequence[Detection2D]
+) -> tuple[np.ndarray, np.ndarray]:
+    """The frame's point and normal maps (:func:`point_map`, :func:`normal_map`), made only over the rectangle that
+    holds every 2D box (and the pixel round it that the normals on its edge are made from), NaN elsewhere: the
+    refinement reads them nowhere else, and a whole 640x480 frame's maps cost a tenth of a second."""
+    h, w = frame.depth.shape
+    points, normals = np.full((h, w, 3), np.nan), np.full((h, w, 3), np.nan)
+    if not detections:
+        return points, normals
+    boxes = np.array([d.box for d in detections])
+    x0, y0 = max(int(boxes[:, 0].min()) - 1, 0), max(int(boxes[:, 1].min()) - 1, 0)
+    x1, y1 = min(int(boxes[:, 2].max()) + 1, w), min(int(boxes[:, 3].max()) + 1, h)
+    window = (slice(y0, y1), slice(x0, x1))
+    points[window] = point_map(frame, hidden, window)
+    normals[window] = normal_map(points[window], frame.extrinsics.position)
+    return points, normals
 
 
 def why_not_found(seen: Observation, phrase: str, account: str = "") -> str:

@@ -62,15 +62,25 @@ class SelfFilter:
                 self.data.qpos[adr] = value
         mujoco.mj_kinematics(self.model, self.data)
 
-    def masks(self, frames: Sequence[CameraFrame], joint_states: Mapping[str, float]) -> list[np.ndarray]:
-        """Per frame, the (H, W) pixels that show the robot posed at ``joint_states``."""
+    def masks(
+        self,
+        frames: Sequence[CameraFrame],
+        joint_states: Mapping[str, float],
+        wanted: Sequence[np.ndarray] | None = None,
+    ) -> list[np.ndarray]:
+        """Per frame, the (H, W) pixels that show the robot posed at ``joint_states``; with ``wanted`` (per frame,
+        the (H, W) pixels whose answer matters), only those are told (and the pixels within the mask's growth of
+        them), the rest left unmarked."""
         self.pose(joint_states)
-        return [self._mask(f) for f in frames]
+        return [self._mask(f, None if wanted is None else wanted[k]) for k, f in enumerate(frames)]
 
-    def _mask(self, frame: CameraFrame) -> np.ndarray:
+    def _mask(self, frame: CameraFrame, wanted: np.ndarray | None = None) -> np.ndarray:
         h, w = frame.depth.shape
         s = self.stride
-        rows, cols = np.nonzero(self._candidates(frame, (h + s - 1) // s, (w + s - 1) // s))
+        candidates = self._candidates(frame, (h + s - 1) // s, (w + s - 1) // s)
+        if wanted is not None:
+            candidates &= grown(grown(_any_in_blocks(wanted, s)))
+        rows, cols = np.nonzero(candidates)
         out = np.zeros(((h + s - 1) // s, (w + s - 1) // s), dtype=bool)
         if rows.size:
             k = frame.intrinsics
@@ -116,3 +126,11 @@ class SelfFilter:
             if c1 > c0 and r1 > r0:
                 out[r0:r1, c0:c1] = True
         return out
+
+
+def _any_in_blocks(mask: np.ndarray, s: int) -> np.ndarray:
+    """Per working pixel (an ``s`` x ``s`` block of ``mask``), whether any pixel of its block is set."""
+    h, w = mask.shape
+    padded = np.zeros(((h + s - 1) // s * s, (w + s - 1) // s * s), dtype=bool)
+    padded[:h, :w] = mask
+    return padded.reshape(padded.shape[0] // s, s, padded.shape[1] // s, s).any(axis=(1, 3))
