@@ -5,7 +5,7 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
-from roboscript.planning.occupancy import THICKNESS, merge_voxels, occupied_boxes, occupied_voxels
+from roboscript.planning.occupancy import THICKNESS, RememberedBoxes, merge_voxels, occupied_boxes, occupied_voxels
 
 
 def _cover(boxes) -> list[tuple[int, int, int]]:
@@ -66,3 +66,23 @@ def test_cells_are_found_as_numpys_unique_rows_finds_them_in_the_same_order():
         expected, inverse = np.unique(cells, axis=0, return_inverse=True)
         found, found_inverse = unique_cells(cells.astype(np.int64))
         assert np.array_equal(found, expected) and np.array_equal(found_inverse, inverse.reshape(-1))
+
+
+def _corners(boxes) -> list:
+    return [(b.lower.tolist(), b.upper.tolist()) for b in boxes]
+
+
+def test_remembered_boxes_answer_as_occupied_boxes_and_keep_only_the_last_scenes():
+    rng = np.random.default_rng(0)
+    table, block = rng.uniform([0, 0, 0], [0.3, 0.3, 0.001], (500, 3)), rng.uniform([0.1] * 3, [0.15] * 3, (200, 3))
+    remembered = RememberedBoxes()
+    first = remembered.boxes(table)
+    assert _corners(first) == _corners(occupied_boxes(table)) and remembered.hits == 0
+    assert _corners(remembered.boxes(block, 0.01)) == _corners(occupied_boxes(block, 0.01))
+    remembered.next_scene()
+    assert remembered.boxes(table.copy()) is first and remembered.hits == 1  # the same points, not the same array
+    assert _corners(remembered.boxes(table, 0.01)) == _corners(occupied_boxes(table, 0.01))  # another voxel size
+    assert remembered.hits == 1
+    remembered.next_scene()  # the block was not in that scene: forgotten
+    remembered.boxes(block, 0.01)
+    assert remembered.hits == 1

@@ -9,6 +9,7 @@ surfaces where they were seen; a minimum thickness keeps a seen sheet a solid ob
 
 from __future__ import annotations
 
+import hashlib
 import itertools
 from dataclasses import dataclass
 
@@ -157,3 +158,32 @@ def occupied_boxes(points: np.ndarray, voxel: float = VOXEL, thickness: float = 
             down = np.array([0.0, 0.0, grow[2]])
             boxes.append(OccupiedBox(lower - grow / 2 - down / 2, upper + grow / 2 - down / 2))
     return boxes
+
+
+class RememberedBoxes:
+    """:func:`occupied_boxes` that remembers its answers for the point sets of the last scene built: most of what a
+    perceived scene is rebuilt from after a look or a release (the objects not moved, the furniture not touched)
+    is what the scene before was built from, to the point."""
+
+    def __init__(self) -> None:
+        self._kept: dict[tuple, list[OccupiedBox]] = {}
+        self._used: dict[tuple, list[OccupiedBox]] = {}
+        self.hits = 0
+
+    def boxes(self, points: np.ndarray, voxel: float = VOXEL) -> list[OccupiedBox]:
+        """The boxes of ``points`` (as :func:`occupied_boxes`)."""
+        points = np.ascontiguousarray(points, dtype=float).reshape(-1, 3)
+        key = (voxel, points.shape, hashlib.blake2b(points.tobytes(), digest_size=16).digest())
+        boxes = self._used.get(key)
+        if boxes is None:
+            boxes = self._kept.get(key)
+        if boxes is None:
+            boxes = occupied_boxes(points, voxel)
+        else:
+            self.hits += 1
+        self._used[key] = boxes
+        return boxes
+
+    def next_scene(self) -> None:
+        """What the scene just built used is kept for the next; the rest is forgotten."""
+        self._kept, self._used = self._used, {}

@@ -21,7 +21,7 @@ from roboscript.perception.furniture.carcass import carcass_facing, carcass_pane
 from roboscript.perception.reconstruction.carving import SHELL, seen_through
 from roboscript.perception.reconstruction.memory import remembered
 from roboscript.phases import timed
-from roboscript.planning.occupancy import VOXEL, occupied_boxes, unique_cells
+from roboscript.planning.occupancy import VOXEL, RememberedBoxes, occupied_boxes, unique_cells
 from roboscript.planning.scene import PlanningScene
 from roboscript.robots.description import RobotDescription
 from roboscript.robots.mujoco_model import RobotBinding, attach_robot, configure_options
@@ -44,17 +44,22 @@ class SceneContents:
 
 
 def build_perceived_scene(
-    description: RobotDescription, mount: Transform, contents: SceneContents, padding: float = 0.005
+    description: RobotDescription,
+    mount: Transform,
+    contents: SceneContents,
+    padding: float = 0.005,
+    boxes_of: Callable[[np.ndarray, float], list] = occupied_boxes,
 ) -> PlanningScene:
-    """A :class:`PlanningScene` of the robot at ``mount`` and occupancy boxes of ``contents``. Every name in
-    ``contents`` is a body of the scene, even with no points, so tools may allow or forbid contacts with it."""
+    """A :class:`PlanningScene` of the robot at ``mount`` and occupancy boxes of ``contents`` (made by ``boxes_of``,
+    points and voxel size -> boxes, as :func:`occupied_boxes`). Every name in ``contents`` is a body of the scene,
+    even with no points, so tools may allow or forbid contacts with it."""
     spec = mujoco.MjSpec()
     spec.modelname = "perceived"
     configure_options(spec)
     attach_robot(spec, description, mount)
     for name, points in contents.fixed.items():
         body = spec.worldbody.add_body(name=f"fixed/{name}")
-        _add_boxes(body, occupied_boxes(points, VOXEL), np.zeros(3))
+        _add_boxes(body, boxes_of(points, VOXEL), np.zeros(3))
     for name, points in contents.objects.items():
         points = np.asarray(points, dtype=float).reshape(-1, 3)
         origin = points.mean(axis=0) if len(points) else np.zeros(3)
@@ -62,7 +67,7 @@ def build_perceived_scene(
         body.add_freejoint()
         # Planning never steps this model; a fixed mass spares bodies with no points MuJoCo's mass check.
         body.mass, body.inertia, body.explicitinertial = 0.1, [1e-4, 1e-4, 1e-4], True
-        _add_boxes(body, occupied_boxes(points, OBJECT_VOXEL), origin)
+        _add_boxes(body, boxes_of(points, OBJECT_VOXEL), origin)
     model = spec.compile()
     labels = []
     for b in range(model.nbody):
@@ -200,6 +205,7 @@ class PerceivedSceneSource:
         self.robot_state, self.padding = robot_state, padding
         self._memory: dict[str, np.ndarray] = {}  # the fixed surfaces the last scene was built from, by owner
         self.builds = 0
+        self._boxes = RememberedBoxes()
         self._scene: PlanningScene | None = None
         self._looks = -1
         self._stale = True
@@ -218,7 +224,8 @@ class PerceivedSceneSource:
         if self._scene is None or self._stale or looks != self._looks:
             with self.perception.without_looking():
                 contents = self.contents()
-            self._scene = build_perceived_scene(self.description, self.mount, contents, self.padding)
+            self._scene = build_perceived_scene(self.description, self.mount, contents, self.padding, self._boxes.boxes)
+            self._boxes.next_scene()
             self._looks, self._stale = getattr(self.perception, "looks", 0), False
             self.builds += 1
         return self._scene
