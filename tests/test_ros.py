@@ -13,9 +13,11 @@ from __future__ import annotations
 
 import json
 import os
+import shutil
 import signal
 import subprocess
 import sys
+import tempfile
 import threading
 import time
 from pathlib import Path
@@ -310,14 +312,17 @@ def test_a_robot_that_stops_publishing_mid_trajectory_ends_the_motion_with_what_
     assert not _advertised(status)
 
 
-def test_a_drawer_is_opened_by_its_handle_and_boxes_put_in_it_through_exec_on_ros(tmp_path):
+def test_a_drawer_is_opened_by_its_handle_and_boxes_put_in_it_through_exec_on_ros(tmp_path, request):
     """The benchmark's trial through ROS: its own master, ros-sim serving moderate_0's world, the reference program
     (open the second drawer by its handle, put both boxes in it) on the ROS backend, and the checks evaluated by the
     twin on its own state."""
     program = tmp_path / "moderate_0.py"
     program.write_text(get_task("moderate_0").reference_program())
-    scratch = tmp_path / "tmp"
-    scratch.mkdir()
+    # The trial's temp dir, short: a unix socket's path (the process pool's fork server listens on one in it) has
+    # at most 107 characters, and one in pytest's folder for this test overran that once pytest's sessions on the
+    # machine were numbered in the hundreds.
+    scratch = Path(tempfile.mkdtemp(prefix="rs_ros_"))
+    request.addfinalizer(lambda: shutil.rmtree(scratch, ignore_errors=True))
     command = [sys.executable, "-m", "roboscript.cli", "exec", str(program), "--task", "moderate_0"]
     run = subprocess.run(
         [*command, "--backend", "ros", "--trials", "1", "--json"],
