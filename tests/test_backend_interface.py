@@ -114,6 +114,13 @@ def test_a_capture_without_colour_has_the_same_depth_and_segmentation(backend):
     assert np.allclose(plain.extrinsics.matrix(), full.extrinsics.matrix())
 
 
+def test_a_capture_without_segmentation_has_the_same_colour_and_depth(backend):
+    full = backend.capture("camera_left")
+    plain = backend.capture("camera_left", segmentation=False)
+    assert plain.segmentation is None and full.segmentation is not None
+    assert np.array_equal(plain.depth, full.depth) and np.array_equal(plain.rgb, full.rgb)
+
+
 def _mujocos_own_depth_and_segmentation(world, camera: str) -> tuple[np.ndarray, np.ndarray]:
     """What mujoco.Renderer's depth and segmentation modes give, a pass each, in the Renderer's conventions
     (metres, 0 where nothing was hit; entity indices, -1 where none): the reference for the single pass."""

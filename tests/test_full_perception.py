@@ -61,9 +61,9 @@ class SensorsOnly(Backend):
     def camera_names(self):
         return self._simulation.camera_names()
 
-    def capture(self, camera, color=True):
+    def capture(self, camera, color=True, segmentation=True):
         self.captures += 1
-        return replace(self._simulation.capture(camera, color), segmentation=None)
+        return replace(self._simulation.capture(camera, color, segmentation=False), segmentation=None)
 
 
 @pytest.fixture

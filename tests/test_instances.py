@@ -7,13 +7,8 @@ import numpy as np
 import pytest
 
 from roboscript.geometry import Box3D
-from roboscript.perception.reconstruction.instances import (
-    Instance3D,
-    _claimed_by,
-    ground,
-    object_box,
-    without_skirt,
-)
+from roboscript.perception.reconstruction.instances import Instance3D, ground, object_box
+from roboscript.perception.reconstruction.refinement import _claimed_by, without_skirt
 
 TABLE = 0.8
 
@@ -113,7 +108,8 @@ def _one_view(size: int = 120) -> tuple[np.ndarray, np.ndarray]:
 
 def test_the_larger_object_gives_up_the_smaller_ones_surface_and_furniture_keeps_its_own():
     from roboscript.perception.detection.grounding import Detection2D
-    from roboscript.perception.reconstruction.instances import refine_all
+    from roboscript.perception.points import MapSurface
+    from roboscript.perception.reconstruction.refinement import refine_all
 
     points, normals = _one_view()
     detections = [[Detection2D("tray", (0, 0, 120, 120)), Detection2D("cube", (36, 36, 64, 64))]]
@@ -122,12 +118,12 @@ def test_the_larger_object_gives_up_the_smaller_ones_surface_and_furniture_keeps
     instances = [Instance3D("tray", np.zeros((0, 3)), np.zeros((0, 3)), tray_box, (0,))]
     instances.append(Instance3D("cube", np.zeros((0, 3)), np.zeros((0, 3)), cube_box, (1,)))
 
-    tray, cube = refine_all(instances, detections, [points], [normals], TABLE)
+    tray, cube = refine_all(instances, detections, [MapSurface(points, normals)], TABLE)
     assert tray.points[:, 2].max() < TABLE + 0.035  # the cube's top is the cube's
     assert cube.points[:, 2].max() > TABLE + 0.035
     assert tray.box.upper[2] == pytest.approx(TABLE + 0.03, abs=0.002)
 
-    tray, _ = refine_all(instances, detections, [points], [normals], TABLE, furniture={"tray"})
+    tray, _ = refine_all(instances, detections, [MapSurface(points, normals)], TABLE, furniture={"tray"})
     assert tray.points[:, 2].max() > TABLE + 0.035  # a piece of furniture gives nothing up
 
 
@@ -160,7 +156,8 @@ def test_a_few_points_of_the_boxs_side_kept_as_the_blocks_do_not_take_it_down_to
 
 def test_objects_are_refined_smallest_in_space_first_however_small_the_images_show_them():
     from roboscript.perception.detection.grounding import Detection2D
-    from roboscript.perception.reconstruction.instances import refine_all
+    from roboscript.perception.points import MapSurface
+    from roboscript.perception.reconstruction.refinement import refine_all
 
     points, normals = _one_view()
     # The tray's box in the image is the smaller (as a box under a block is, hidden by it from above).
@@ -169,7 +166,7 @@ def test_objects_are_refined_smallest_in_space_first_however_small_the_images_sh
     cube_box = Box3D(np.r_[0.1, 0.1, TABLE], np.r_[0.15, 0.15, TABLE + 0.06])
     instances = [Instance3D("tray", np.zeros((0, 3)), np.zeros((0, 3)), tray_box, (0,))]
     instances.append(Instance3D("cube", np.zeros((0, 3)), np.zeros((0, 3)), cube_box, (1,)))
-    tray, cube = refine_all(instances, detections, [points], [normals], TABLE)
+    tray, cube = refine_all(instances, detections, [MapSurface(points, normals)], TABLE)
     assert tray.points[:, 2].max() < TABLE + 0.035 and cube.points[:, 2].max() > TABLE + 0.035
 
 

@@ -13,7 +13,7 @@ from roboscript.backends.mujoco_backend import MujocoBackend
 from roboscript.geometry import Box3D, Transform
 from roboscript.perception.modes import parse_mode
 from roboscript.planning.ground_truth_scene import ground_truth_scene
-from roboscript.planning.perceived_scene import UNKNOWN, PerceivedSceneSource, sort_points
+from roboscript.planning.perceived_scene import UNKNOWN, PerceivedSceneSource, filled_below, sort_points
 from roboscript.robot_io import CameraFrame
 from roboscript.robots import ROBOT_PREFIX
 from roboscript.robots.panda import PANDA_DESCRIPTION
@@ -135,6 +135,9 @@ class _StillPerception:
     def box(self, name):
         return self.boxes[name]
 
+    def joints(self, name):
+        return []  # its handle was not seen: the drawer's joint cannot be told
+
     def scene_points(self):
         return self.visible
 
@@ -191,3 +194,82 @@ def test_a_cabinets_unseen_sides_and_back_are_solid_and_its_inside_free():
         assert not _inside_a_box(scene, "fixed/cabinet", np.array([x_side - 0.03, 0.55, 1.0]))  # beside it
     finally:
         backend.close()
+
+
+def test_each_column_is_filled_down_to_the_floor_from_its_own_lowest_point():
+    step = 0.005
+    # Two columns: one seen at 4 and 3 cm (filled from 3 cm down), one on the floor itself (nothing to fill).
+    seen = np.array([[0.0012, 0.0031, 0.04], [0.0040, 0.0010, 0.03], [0.0121, 0.0021, 0.0]])
+    filled = filled_below(seen, 0.0, step)
+    assert np.array_equal(filled[:3], seen)
+    fill = filled[3:]
+    assert np.allclose(fill[:, :2], [0.0025, 0.0025])  # the first column's centre
+    assert np.allclose(np.sort(fill[:, 2]), np.arange(0.0, 0.03, step))
+
+
+def test_a_perceived_scene_holds_the_robots_colliding_geoms_only_and_all_of_them():
+    import mujoco
+
+    from roboscript.planning.perceived_scene import SceneContents, build_perceived_scene
+    from roboscript.robots import get_robot
+    from roboscript.robots.mujoco_model import compiled_robot
+
+    for name in ("panda", "ur5e"):
+        description = get_robot(name)
+        mount = Transform(np.array([0.1, 0.2, 0.75]), np.array([1.0, 0.0, 0.0, 0.0]))
+        scene = build_perceived_scene(description, mount, SceneContents({}, {}))
+        full = compiled_robot(description, mount)
+        collides = (full.geom_contype | full.geom_conaffinity) > 0
+
+        def shapes(model, keep):
+            body = [model.body(b).name for b in model.geom_bodyid[keep]]
+            sizes = np.round(model.geom_size[keep], 9).tolist()
+            return sorted(zip(body, model.geom_type[keep].tolist(), sizes, strict=True))
+
+        model = scene.model
+        assert ((model.geom_contype | model.geom_conaffinity) > 0).all()  # nothing that only draws
+        assert shapes(model, np.ones(model.ngeom, bool)) == shapes(full, collides)
+        assert model.nmesh < full.nmesh and model.nbody == full.nbody
+        data, full_data = mujoco.MjData(model), mujoco.MjData(full)
+        mujoco.mj_kinematics(model, data)
+        mujoco.mj_kinematics(full, full_data)
+        assert np.allclose(data.geom_xpos, full_data.geom_xpos[collides])
+
+
+def test_a_part_with_a_perceived_joint_turns_on_it_with_its_handle_and_the_rest_stays():
+    import mujoco
+
+    from roboscript.perception.base import ArticulationJoint
+    from roboscript.planning.perceived_scene import SceneContents, build_perceived_scene
+
+    rng = np.random.default_rng(0)
+    door = np.column_stack([rng.uniform(-0.18, 0.18, 400), np.full(400, 0.37), rng.uniform(1.0, 1.2, 400)])
+    handle = np.column_stack([np.full(50, -0.13), np.full(50, 0.35), rng.uniform(1.08, 1.14, 50)])
+    top = np.column_stack([rng.uniform(-0.2, 0.2, 200), rng.uniform(0.37, 0.7, 200), np.full(200, 1.21)])
+    hinge = ArticulationJoint("cabinet.door_0", "revolute", np.array([0.185, 0.37, 1.1]), np.array([0, 0, 1.0]),
+                              0.0, 0.0, np.pi / 2)  # fmt: skip
+    contents = SceneContents(
+        {},
+        {"cabinet.door_0": door, "cabinet.handle_0": handle, "cabinet": top},
+        {"cabinet.door_0": hinge, "cabinet.handle_0": hinge},
+    )
+    mount = Transform(np.array([0.0, -0.5, 0.75]), np.array([1.0, 0.0, 0.0, 0.0]))
+    scene = build_perceived_scene(PANDA_DESCRIPTION, mount, contents)
+    model, data = scene.model, scene.data
+    labels = np.array(scene.body_labels)
+    jointed = [b for b in np.flatnonzero(labels == "cabinet.door_0") if model.body_jntnum[b] > 0]
+    assert len(jointed) == 1 and model.jnt_type[model.body_jntadr[jointed[0]]] == mujoco.mjtJoint.mjJNT_HINGE
+
+    def centres(label):
+        return data.geom_xpos[np.isin(model.geom_bodyid, np.flatnonzero(labels == label))].copy()
+
+    mujoco.mj_kinematics(model, data)
+    before = {name: centres(name) for name in ("cabinet.door_0", "cabinet.handle_0", "cabinet")}
+    assert np.allclose(before["cabinet.handle_0"].mean(axis=0)[:2], [-0.13, 0.35], atol=0.01)
+    data.qpos[model.jnt_qposadr[model.body_jntadr[jointed[0]]]] = np.pi / 2
+    mujoco.mj_kinematics(model, data)
+    turn = np.array([[0.0, -1.0], [1.0, 0.0]])  # a quarter turn about the vertical hinge
+    for name in ("cabinet.door_0", "cabinet.handle_0"):
+        expected = (before[name][:, :2] - hinge.position[:2]) @ turn.T + hinge.position[:2]
+        assert np.allclose(centres(name)[:, :2], expected, atol=1e-9)
+    assert np.array_equal(centres("cabinet"), before["cabinet"])  # the carcass stays

@@ -18,10 +18,10 @@ from roboscript.perception.detection.grounding import (
     normalize_phrase,
 )
 from roboscript.perception.evaluation import score_instances, tuple_is_correct
-from roboscript.perception.points import normal_map, pixels_outside, point_map
+from roboscript.perception.points import DepthSurface, normal_map, pixels_outside, point_map
 from roboscript.perception.reconstruction.fusion import FusionSettings, depth_problem, fuse, heights
 from roboscript.perception.reconstruction.matching import match_views
-from roboscript.perception.reconstruction.observation import _maps_within, observe, why_not_found
+from roboscript.perception.reconstruction.observation import observe, why_not_found
 from roboscript.sim.world_catalog import world_names
 
 
@@ -138,18 +138,27 @@ def test_fusion_leaves_out_what_lies_below_the_lowest_height_and_keeps_the_rest(
     assert np.median(gaps) == 0.0 and np.mean(gaps < 0.003) > 0.99
 
 
-def test_point_maps_made_within_the_boxes_equal_the_whole_frames_there():
+def test_points_and_normals_made_within_the_boxes_equal_the_whole_frames_maps_there():
     backend, frames = _look("world_2_pick_and_place")
     apple = backend.ground_truth.box("apple")
     backend.close()
-    boxes = [(100, 50, 220, 160), (300, 200, 401, 300)]
+    boxes = [(100, 50, 220, 160), (300, 200, 401, 300), (0, 0, 640, 7), (633, 470, 640, 480)]
     for frame in frames:
-        whole = point_map(frame)
-        normals = normal_map(whole, frame.extrinsics.position)
-        points, windowed = _maps_within(frame, None, [Detection2D("a", b) for b in boxes])
-        for x0, y0, x1, y1 in boxes:
-            np.testing.assert_array_equal(points[y0:y1, x0:x1], whole[y0:y1, x0:x1])
-            np.testing.assert_array_equal(windowed[y0:y1, x0:x1], normals[y0:y1, x0:x1])
+        hidden = np.zeros(frame.depth.shape, dtype=bool)
+        hidden[120:140, 150:260] = True  # a strip across the first box, as the arm would hide
+        for mask in (None, hidden):
+            whole = point_map(frame, mask)
+            normals = normal_map(whole, frame.extrinsics.position)
+            surface = DepthSurface(frame, mask)
+            for x0, y0, x1, y1 in boxes:
+                for stride in (1, 2):
+                    points, made = surface.within((x0, y0, x1, y1), stride)
+                    expected = whole[y0:y1:stride, x0:x1:stride].reshape(-1, 3)
+                    np.testing.assert_array_equal(points, expected)
+                    seen = np.isfinite(expected).all(axis=1)  # a hidden pixel's normal is never read
+                    np.testing.assert_array_equal(
+                        made[seen], normals[y0:y1:stride, x0:x1:stride].reshape(-1, 3)[seen]
+                    )
         # The pixels a look confined to the apple's box keeps are those whose points lie in it.
         kept = ~pixels_outside(frame, apple)
         inside = np.all((whole > apple.lower) & (whole < apple.upper), axis=2)

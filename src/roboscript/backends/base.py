@@ -93,11 +93,13 @@ class Backend(ABC):
         """Names of the RGB-D cameras, in rig order."""
 
     @abstractmethod
-    def capture(self, camera: str, color: bool = True) -> CameraFrame:
+    def capture(self, camera: str, color: bool = True, segmentation: bool = True) -> CameraFrame:
         """One RGB-D frame with calibration; segmentation only where the backend can provide it.
 
         ``color=False`` says the colour image will not be looked at: a backend that must make it (a simulator
         renders it, at more than half a capture's cost) may then leave it out (``rgb`` None); others send it anyway.
+        ``segmentation=False`` says the same of the segmentation image (a simulator then neither reads nor labels
+        it).
         """
 
     def segmentation_labels(self) -> dict[int, str]:

@@ -290,7 +290,7 @@ class DriverBackend(Backend):
     def camera_names(self) -> list[str]:
         return self.driver.camera_names()
 
-    def capture(self, camera: str, color: bool = True) -> CameraFrame:
+    def capture(self, camera: str, color: bool = True, segmentation: bool = True) -> CameraFrame:
         if camera not in self.camera_names():
             raise BackendError(f"no camera named {camera!r}; cameras: {', '.join(self.camera_names()) or 'none'}")
         # A frame from before the last motion ended would show the world as it was.

@@ -113,8 +113,8 @@ class LoggedBackend(Backend):
     def camera_names(self) -> list[str]:
         return self.inner.camera_names()
 
-    def capture(self, camera: str, color: bool = True) -> CameraFrame:
-        return self.inner.capture(camera, color)
+    def capture(self, camera: str, color: bool = True, segmentation: bool = True) -> CameraFrame:
+        return self.inner.capture(camera, color, segmentation)
 
     def segmentation_labels(self) -> dict[int, str]:
         return self.inner.segmentation_labels()

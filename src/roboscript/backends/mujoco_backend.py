@@ -119,12 +119,12 @@ class MujocoBackend(Backend):
             self._renderers[key] = Renderer(self.sim_world.model, self.sim_world.geom_entity, width, height, color)
         return self._renderers[key]
 
-    def capture(self, camera: str, color: bool = True) -> CameraFrame:
+    def capture(self, camera: str, color: bool = True, segmentation: bool = True) -> CameraFrame:
         if camera not in self._cameras:
             raise BackendError(f"no camera named {camera!r}; cameras: {', '.join(self._cameras)}")
         spec = self._cameras[camera]
         renderer = self.renderer(spec.width, spec.height, color)
-        return renderer.capture(self.sim_world.data, camera, spec, color=color)
+        return renderer.capture(self.sim_world.data, camera, spec, segmentation=segmentation, color=color)
 
     def segmentation_labels(self) -> dict[int, str]:
         return {e.index: e.name for e in self.sim_world.entities}

@@ -44,8 +44,9 @@ from roboscript.perception.reconstruction.faces import plane_normal_at
 from roboscript.perception.reconstruction.free_space import stands_empty
 from roboscript.perception.reconstruction.fusion import FusionSettings
 from roboscript.perception.reconstruction.in_hand import register
-from roboscript.perception.reconstruction.instances import Instance3D, claimed_by_boxes
+from roboscript.perception.reconstruction.instances import Instance3D
 from roboscript.perception.reconstruction.observation import Observation, observe, why_not_found
+from roboscript.perception.reconstruction.refinement import claimed_by_boxes
 from roboscript.perception.reconstruction.self_filter import SelfFilter
 from roboscript.perception.seen_objects import (
     SeenObject,
@@ -57,6 +58,7 @@ from roboscript.perception.seen_objects import (
     part_of,
 )
 from roboscript.phases import timed
+from roboscript.robot_io import CameraFrame
 
 SETTLE_TIME = 0.5  # seconds given to what was let go to come to rest before looking again
 HANG_TIME = 0.3  # seconds given to what was just lifted to stop swinging in the hand before looking at it
@@ -117,7 +119,7 @@ class PipelinePerception(Perception):
         self._look(phrases)
 
     def _look(self, asked: list[str]) -> None:
-        frames = [self.backend.capture(c) for c in self.backend.camera_names()]
+        frames = self._capture()
         masks = self._robot_masks(frames)
         # The table is measured (the level surface things stand on), not found.
         furniture_phrases = self.furniture_seen.phrases
@@ -165,6 +167,11 @@ class PipelinePerception(Perception):
             keep = ~claimed_by_boxes(boxes, obj.points)
             if MIN_KEPT <= keep.sum() < len(keep):
                 self.store[name] = dataclasses.replace(obj, points=obj.points[keep], normals=obj.normals[keep])
+
+    def _capture(self) -> list[CameraFrame]:
+        """A frame of every camera, with segmentation only where something here reads it."""
+        segmentation = self.robot_index is not None or self.grounder.reads_segmentation
+        return [self.backend.capture(c, segmentation=segmentation) for c in self.backend.camera_names()]
 
     def _robot_masks(self, frames: list, wanted: list[np.ndarray] | None = None) -> list[np.ndarray | None]:
         """The robot's pixels in each frame (``wanted``: those of each frame whose answer matters, where only some
@@ -265,7 +272,7 @@ class PipelinePerception(Perception):
         if name not in self._carried or self._holding_looks:
             return False
         self.backend.wait(HANG_TIME)
-        frames = [self.backend.capture(c) for c in self.backend.camera_names()]
+        frames = self._capture()
         phrase = self.store[name].phrase
         expected = self._expected(name)
         # Only what lies about where it should hang is looked at, and the table below it (what a look measures

@@ -138,26 +138,33 @@ def occupied_boxes(points: np.ndarray, voxel: float = VOXEL, thickness: float = 
     extent = highs - lows
     thin = extent < voxel / 2
     place = np.where(thin, np.round((lows + highs) / 2 / SIGNATURE_STEP), 0).astype(np.int64)
-    signatures = [(tuple(t), tuple(p)) for t, p in zip(thin.tolist(), place.tolist(), strict=True)]
-    groups: dict[tuple, dict[tuple[int, int, int], int]] = {}
-    for n, (i, j, k) in enumerate(cells):
-        groups.setdefault(signatures[n], {})[(int(i), int(j), int(k))] = n
-    boxes = []
-    for index in groups.values():
+    # Cells grouped by signature, the groups in the order their first cells come.
+    _, signature = unique_cells(np.column_stack([thin, place]).astype(np.int64))
+    order = np.argsort(signature, kind="stable")
+    runs = np.split(order, np.flatnonzero(np.diff(signature[order])) + 1)
+    runs.sort(key=lambda members: int(members[0]))
+    groups = [dict(zip(map(tuple, cells[members].tolist()), members.tolist(), strict=True)) for members in runs]
+    members: list[int] = []  # the cells of every box, box after box
+    starts: list[int] = []  # where each box's cells begin in members
+    for index in groups:
         for first, last in merge_voxels(set(index)):
-            members = [
+            starts.append(len(members))
+            members.extend(
                 index[(i, j, k)]
                 for i in range(first[0], last[0] + 1)
                 for j in range(first[1], last[1] + 1)
                 for k in range(first[2], last[2] + 1)
-            ]
-            lower, upper = lows[members].min(axis=0), highs[members].max(axis=0)
-            grow = np.maximum(thickness - (upper - lower), 0.0)
-            # A thin level sheet was seen from above (the cameras look down): it is solid below its surface,
-            # and a gripper reaching for something flat on it must find its top where it was seen.
-            down = np.array([0.0, 0.0, grow[2]])
-            boxes.append(OccupiedBox(lower - grow / 2 - down / 2, upper + grow / 2 - down / 2))
-    return boxes
+            )
+    cells_of = np.asarray(members, dtype=np.int64)
+    lower = np.minimum.reduceat(lows[cells_of], starts, axis=0)
+    upper = np.maximum.reduceat(highs[cells_of], starts, axis=0)
+    grow = np.maximum(thickness - (upper - lower), 0.0)
+    # A thin level sheet was seen from above (the cameras look down): it is solid below its surface, and a gripper
+    # reaching for something flat on it must find its top where it was seen.
+    down = np.zeros_like(grow)
+    down[:, 2] = grow[:, 2]
+    lower, upper = lower - grow / 2 - down / 2, upper + grow / 2 - down / 2
+    return [OccupiedBox(lo, hi) for lo, hi in zip(lower, upper, strict=True)]
 
 
 class RememberedBoxes:

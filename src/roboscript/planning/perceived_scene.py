@@ -1,6 +1,8 @@
 """A planning scene from what the cameras saw: the robot's own model, each known object as a movable body of
 occupancy boxes (so it can be carried), and every other observed surface as fixed occupancy boxes named after the
-furniture part it lies on (so a gripper may be let touch a drawer it pulls), or ``scene``.
+furniture part it lies on (so a gripper may be let touch a drawer it pulls), or ``scene``. A drawer or door whose
+joint perception estimated turns or slides on that joint, its handle with it: a screen of a door's swing sees the door
+sweep toward the arm, as in the ground-truth scene.
 
 Nothing here reads the simulator's geometry: the input is points. :class:`PerceivedSceneSource` rebuilds the
 scene from a :class:`~roboscript.perception.base.Perception` whenever the robot let something go or perception
@@ -10,13 +12,13 @@ looked again, which is when what was seen may have moved.
 from __future__ import annotations
 
 from collections.abc import Callable, Collection, Mapping
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 
 import mujoco
 import numpy as np
 
 from roboscript.geometry import Box3D, Transform
-from roboscript.perception.base import Perception, outside, within
+from roboscript.perception.base import ArticulationJoint, Perception, UnknownObjectError, outside, within
 from roboscript.perception.furniture.carcass import carcass_facing, carcass_panels
 from roboscript.perception.reconstruction.carving import SHELL, seen_through
 from roboscript.perception.reconstruction.memory import remembered
@@ -37,10 +39,12 @@ BELOW_BASE = 0.05  # metres below the robot's base (the table it stands on) beyo
 
 @dataclass(frozen=True)
 class SceneContents:
-    """Observed points sorted by what they belong to: ``objects`` move (and may be carried), ``fixed`` do not."""
+    """Observed points sorted by what they belong to: ``objects`` move (and may be carried), ``fixed`` do not,
+    but for the parts ``joints`` names: by part (a drawer, a door, a handle), the joint it moves on."""
 
     objects: Mapping[str, np.ndarray]
     fixed: Mapping[str, np.ndarray]
+    joints: Mapping[str, ArticulationJoint] = field(default_factory=dict)
 
 
 def build_perceived_scene(
@@ -56,10 +60,17 @@ def build_perceived_scene(
     spec = mujoco.MjSpec()
     spec.modelname = "perceived"
     configure_options(spec)
-    attach_robot(spec, description, mount)
+    attach_robot(spec, description, mount, visual=False)
+    moving: dict[str, mujoco.MjsBody] = {}  # by moving part, the body that carries its joint
     for name, points in contents.fixed.items():
-        body = spec.worldbody.add_body(name=f"fixed/{name}")
-        _add_boxes(body, boxes_of(points, VOXEL), np.zeros(3))
+        joint = contents.joints.get(name)
+        if joint is None:
+            body = spec.worldbody.add_body(name=f"fixed/{name}")
+            _add_boxes(body, boxes_of(points, VOXEL), np.zeros(3))
+            continue
+        carrier = moving.get(joint.part) or moving.setdefault(joint.part, _jointed_body(spec, joint))
+        body = carrier if name == joint.part else carrier.add_body(name=f"part/{name}")
+        _add_boxes(body, boxes_of(points, VOXEL), np.asarray(joint.position, dtype=float))
     for name, points in contents.objects.items():
         points = np.asarray(points, dtype=float).reshape(-1, 3)
         origin = points.mean(axis=0) if len(points) else np.zeros(3)
@@ -72,12 +83,22 @@ def build_perceived_scene(
     labels = []
     for b in range(model.nbody):
         name = model.body(b).name
-        labels.append(name.split("/", 1)[1] if name.startswith(("fixed/", "object/")) else name)
+        labels.append(name.split("/", 1)[1] if name.startswith(("fixed/", "object/", "part/")) else name)
     objects = {name: model.body(f"object/{name}").id for name in contents.objects}
     # The padding holds against each box only as far as MuJoCo's midphase lets it (the boxes of a body share its
     # compiled margin, zero): holding it fully made planning through observed clutter three to six times slower
     # in gt-2d (hard_0, hard_2) and one trial of 80 ran out of planner time under load. Not yet, then.
     return PlanningScene(model, RobotBinding.bind(model, description), labels, objects, padding, False)
+
+
+def _jointed_body(spec: mujoco.MjSpec, joint: ArticulationJoint) -> mujoco.MjsBody:
+    """A body for ``joint.part`` with its origin on the joint's axis, turning or sliding on it from where it was
+    seen (a joint value of 0)."""
+    body = spec.worldbody.add_body(name=f"part/{joint.part}", pos=list(np.asarray(joint.position, dtype=float)))
+    kind = mujoco.mjtJoint.mjJNT_HINGE if joint.type == "revolute" else mujoco.mjtJoint.mjJNT_SLIDE
+    body.add_joint(name=f"part/{joint.part}", type=kind, axis=list(np.asarray(joint.axis, dtype=float)))
+    body.mass, body.inertia, body.explicitinertial = 0.1, [1e-4, 1e-4, 1e-4], True
+    return body
 
 
 def _add_boxes(body, boxes, origin: np.ndarray) -> None:
@@ -142,18 +163,18 @@ def filled_below(
     keys, inverse = unique_cells(columns)
     lowest = np.full(len(keys), np.inf)
     np.minimum.at(lowest, inverse, points[:, 2])
-    fill, depth_below = [], []
-    for (i, j), low in zip(keys, lowest, strict=True):
-        heights = np.arange(floor, low, step)
-        if len(heights):
-            xy = (np.array([i, j]) + 0.5) * step
-            fill.append(np.column_stack([np.full(len(heights), xy[0]), np.full(len(heights), xy[1]), heights]))
-            depth_below.append(low - heights)
-    if not fill:
+    # Each column's fill is np.arange(floor, lowest, step), made for all columns at once.
+    counts = np.maximum(np.ceil((lowest - floor) / step), 0).astype(np.int64)
+    if counts.sum() == 0:
         return points
-    filled = np.vstack(fill)
+    column = np.repeat(np.arange(len(keys)), counts)
+    level = np.arange(len(column)) - np.repeat(np.cumsum(counts) - counts, counts)
+    heights = floor + level * step
+    xy = (keys[column] + 0.5) * step
+    filled = np.column_stack([xy, heights])
+    depth_below = lowest[column] - heights
     if seen_free is not None:
-        deep = np.concatenate(depth_below) > SHELL
+        deep = depth_below > SHELL
         if deep.any():
             drop = np.zeros(len(filled), dtype=bool)
             drop[deep] = seen_free(filled[deep])
@@ -172,6 +193,22 @@ def carcasses(perception: Perception) -> dict[str, np.ndarray]:
         if facing is not None:
             seen = perception.points(name)
             out[name] = carcass_panels(seen.points, seen.normals, facing)
+    return out
+
+
+def moving_parts(perception: Perception) -> dict[str, ArticulationJoint]:
+    """By furniture part (a drawer, a door, a handle), the joint it moves on, for those whose joint perception can
+    tell now (a part whose front or handle was not seen well enough stays fixed)."""
+    out = {}
+    for name in perception.furniture():
+        if "." not in name:  # the furniture itself: it does not move
+            continue
+        try:
+            joints = perception.joints(name)
+        except (UnknownObjectError, ValueError):
+            continue
+        if len(joints) == 1:
+            out[name] = joints[0]
     return out
 
 
@@ -247,7 +284,7 @@ class PerceivedSceneSource:
         fixed = dict(contents.fixed)
         for name, panels in carcasses(perception).items():
             fixed[name] = np.vstack([fixed.get(name, np.zeros((0, 3))), within_reach(panels, self.mount)])
-        return SceneContents(contents.objects, fixed)
+        return SceneContents(contents.objects, fixed, moving_parts(perception))
 
     def _filled(self, name: str, box: Box3D, frames: list, hidden: list) -> np.ndarray:
         """An object's seen points filled down to its underside, less the fill the last look's views (``hidden``:

@@ -44,10 +44,42 @@ def configure_options(spec: mujoco.MjSpec) -> None:
     spec.stat.extent = 2.0
 
 
-def attach_robot(spec: mujoco.MjSpec, description: RobotDescription, mount: Transform) -> None:
-    """Adds the robot (names prefixed ``robot/``) to ``spec`` with its base frame at ``mount``."""
+def attach_robot(
+    spec: mujoco.MjSpec, description: RobotDescription, mount: Transform, visual: bool = True
+) -> None:
+    """Adds the robot (names prefixed ``robot/``) to ``spec`` with its base frame at ``mount``; with ``visual``
+    false, only the geoms that collide (:func:`strip_visual`)."""
     frame = spec.worldbody.add_frame(pos=list(mount.position), quat=list(quat_to_mujoco(mount.quaternion)))
-    spec.attach(description.build_spec(), prefix=ROBOT_PREFIX, frame=frame)
+    robot = description.build_spec() if visual else _colliding_specs.get(description, lambda: _colliding(description))
+    spec.attach(robot.copy(), prefix=ROBOT_PREFIX, frame=frame)
+
+
+COLLIDING_SPECS_KEPT = 4  # robots' specs stripped to what collides that a process keeps (a perceived scene's each)
+_colliding_specs: Kept[mujoco.MjSpec] = Kept(COLLIDING_SPECS_KEPT)
+
+
+def _colliding(description: RobotDescription) -> mujoco.MjSpec:
+    spec = description.build_spec()
+    strip_visual(spec)
+    return spec
+
+
+def strip_visual(spec: mujoco.MjSpec) -> None:
+    """Removes the geoms that collide with nothing, and the meshes only they drew, from ``spec``.
+
+    A model that is never rendered or stepped (a planning scene) needs only what collides: the visual meshes were
+    four in five of the Panda's and made its compile 0.3 s instead of 0.05 s, paid at every rebuild of a perceived
+    scene. A body whose inertia came from its visual geoms gets another (the UR5e's and FR3's links): only models
+    that are not stepped may be stripped."""
+    kept_meshes = set()
+    for geom in list(spec.geoms):
+        if geom.contype == 0 and geom.conaffinity == 0:
+            spec.delete(geom)
+        elif geom.type == mujoco.mjtGeom.mjGEOM_MESH:
+            kept_meshes.add(geom.meshname)
+    for mesh in list(spec.meshes):
+        if mesh.name not in kept_meshes:
+            spec.delete(mesh)
 
 
 @dataclass(frozen=True)

@@ -47,6 +47,8 @@ def image_box_iou(a: tuple[int, int, int, int], b: tuple[int, int, int, int]) ->
 class Grounder(ABC):
     """Finds the things named by ``phrases`` in one frame."""
 
+    reads_segmentation = False  # whether detect reads the frames' segmentation images (else they need not be made)
+
     @abstractmethod
     def detect(self, frame: CameraFrame, phrases: Sequence[str]) -> list[Detection2D]:
         """Boxes labelled with the phrase they show, at most one label per box."""
@@ -116,6 +118,8 @@ class SegmentationGrounder(Grounder):
     ``entities``: what the segmentation's labels stand for; ``min_pixels``: smaller glimpses are not reported (a
     detector would miss them too).
     """
+
+    reads_segmentation = True
 
     def __init__(
         self,

@@ -27,10 +27,13 @@ def remembered(
     old = np.asarray(old, dtype=float).reshape(-1, 3)
     if len(old) == 0:
         return old
-    keep = np.ones(len(old), dtype=bool)
+    kept = old
     for frame, mask in zip(frames, hidden, strict=True):
+        if len(kept) == 0:
+            break
         if frame.depth is None or not np.isfinite(frame.depth).any():
             continue
-        depth, z, informative = pixel_depths(old, frame, mask)
-        keep &= ~(informative & (depth > z - tolerance))  # seen through, or seen again
-    return old[keep]
+        # Only what the views before kept is projected: the first view drops most of a scene seen again.
+        depth, z, informative = pixel_depths(kept, frame, mask)
+        kept = kept[~(informative & (depth > z - tolerance))]  # seen through, or seen again
+    return kept

@@ -9,16 +9,11 @@ from dataclasses import dataclass
 import numpy as np
 
 from roboscript.perception.detection.grounding import Detection2D, Grounder
-from roboscript.perception.points import normal_map, point_map, without_pixels
+from roboscript.perception.points import DepthSurface, without_pixels
 from roboscript.perception.reconstruction.fusion import FusedScene, FusionSettings, fuse
-from roboscript.perception.reconstruction.instances import (
-    Instance3D,
-    build_instances,
-    ground,
-    refine_all,
-    support_height,
-)
+from roboscript.perception.reconstruction.instances import Instance3D, build_instances, ground, support_height
 from roboscript.perception.reconstruction.matching import MatchedObject, Projection, match_views, membership, project
+from roboscript.perception.reconstruction.refinement import refine_all
 from roboscript.robot_io import CameraFrame
 
 
@@ -53,7 +48,7 @@ def observe(
     """Runs the chain on ``frames`` for the things ``phrases`` name. ``robot_masks``: per frame, the pixels of the
     robot itself (from its model), left out of the fused surface; ``pieces``: the phrases of furniture parts,
     which may be seen in several pieces (an open drawer's front and its inside); ``furniture``: the phrases of
-    furniture and all its parts (see :func:`~roboscript.perception.reconstruction.instances.refine_all`)."""
+    furniture and all its parts (see :func:`~roboscript.perception.reconstruction.refinement.refine_all`)."""
     if not frames:
         raise ValueError("observe needs at least one camera frame")
     scene = fuse(frames, settings, robot_masks)
@@ -75,30 +70,10 @@ def observe(
     instances = build_instances(
         matched, scene.points, scene.normals, memberships, projections, support, areas, pieces=pieces
     )
-    windowed = [_maps_within(f, hidden[f.name], ds) for f, ds in zip(usable, detections, strict=True)]
-    maps, normals = [m for m, _ in windowed], [n for _, n in windowed]
-    instances = refine_all(instances, detections, maps, normals, support, furniture)
+    surfaces = [DepthSurface(f, hidden[f.name]) for f in usable]
+    instances = refine_all(instances, detections, surfaces, support, furniture)
     instances = ground(instances, support)
     return Observation(usable, scene, detections, projections, memberships, matched, instances, support)
-
-
-def _maps_within(
-    frame: CameraFrame, hidden: np.ndarray | None, detections: Sequence[Detection2D]
-) -> tuple[np.ndarray, np.ndarray]:
-    """The frame's point and normal maps (:func:`point_map`, :func:`normal_map`), made only over the rectangle that
-    holds every 2D box (and the pixel round it that the normals on its edge are made from), NaN elsewhere: the
-    refinement reads them nowhere else, and a whole 640x480 frame's maps cost a tenth of a second."""
-    h, w = frame.depth.shape
-    points, normals = np.full((h, w, 3), np.nan), np.full((h, w, 3), np.nan)
-    if not detections:
-        return points, normals
-    boxes = np.array([d.box for d in detections])
-    x0, y0 = max(int(boxes[:, 0].min()) - 1, 0), max(int(boxes[:, 1].min()) - 1, 0)
-    x1, y1 = min(int(boxes[:, 2].max()) + 1, w), min(int(boxes[:, 3].max()) + 1, h)
-    window = (slice(y0, y1), slice(x0, x1))
-    points[window] = point_map(frame, hidden, window)
-    normals[window] = normal_map(points[window], frame.extrinsics.position)
-    return points, normals
 
 
 def why_not_found(seen: Observation, phrase: str, account: str = "") -> str:
