@@ -7,7 +7,7 @@ import numpy as np
 
 from roboscript.api.held import Held
 from roboscript.names import is_part
-from roboscript.perception.base import ArticulationJoint, Perception, UnknownObjectError
+from roboscript.perception.base import Perception, joints_if_known
 from roboscript.planning.contacts import ContactAllowances
 
 NEAR = 0.02  # metres: what lies this near a motion's goal may be touched there
@@ -24,18 +24,9 @@ def grasp_family(perception: Perception, name: str) -> list[str]:
     prefix = name.rpartition(".")[0]
     if is_part(name):
         for other in perception.names():
-            if other.startswith(prefix + ".") and any(j.part in family for j in _joints_if_known(perception, other)):
+            if other.startswith(prefix + ".") and any(j.part in family for j in joints_if_known(perception, other)):
                 family.add(other)
     return sorted(family)
-
-
-def _joints_if_known(perception: Perception, name: str) -> list[ArticulationJoint]:
-    """The joints of ``name``, or none where perception cannot tell them (a part whose handle was not seen): a
-    question about one part should not fail over another."""
-    try:
-        return perception.joints(name)
-    except (UnknownObjectError, ValueError):
-        return []
 
 
 class Touching:

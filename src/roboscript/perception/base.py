@@ -193,6 +193,15 @@ class Perception(ABC):
         saw moves it along; perception that reads the world's state has nothing to do."""
 
 
+def joints_if_known(perception: Perception, name: str) -> list[ArticulationJoint]:
+    """The joints of ``name``, or none where perception cannot tell them (a part whose handle was not seen): a
+    question about one part should not fail over another."""
+    try:
+        return perception.joints(name)
+    except (UnknownObjectError, ValueError):
+        return []
+
+
 def within(points: np.ndarray, box: Box3D, margin: float = 0.0) -> np.ndarray:
     """Which of the points, (N,) bool, lie within ``box`` grown by ``margin``."""
     return np.all((points > box.lower - margin) & (points < box.upper + margin), axis=1)

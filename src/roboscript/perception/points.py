@@ -33,16 +33,7 @@ def pixels_outside(frame: CameraFrame, box: Box3D) -> np.ndarray:
     can be. Points are made only inside the image rectangle the box's corners span."""
     h, w = frame.depth.shape
     out = np.ones((h, w), dtype=bool)
-    to_camera = frame.extrinsics.inverse()
-    camera = box.corners() @ to_camera.rotation.T + to_camera.position
-    k = frame.intrinsics
-    if np.any(camera[:, 2] <= 0.01):  # the box reaches behind the camera: every pixel may see into it
-        r0, r1, c0, c1 = 0, h, 0, w
-    else:
-        u = k[0, 0] * camera[:, 0] / camera[:, 2] + k[0, 2]
-        v = k[1, 1] * camera[:, 1] / camera[:, 2] + k[1, 2]
-        c0, c1 = max(int(np.floor(u.min())), 0), min(int(np.ceil(u.max())) + 1, w)
-        r0, r1 = max(int(np.floor(v.min())), 0), min(int(np.ceil(v.max())) + 1, h)
+    r0, r1, c0, c1 = image_span(frame, box.corners()) or (0, h, 0, w)
     if r1 <= r0 or c1 <= c0:
         return out
     rows, cols = np.indices((r1 - r0, c1 - c0)).reshape(2, -1)
@@ -50,6 +41,27 @@ def pixels_outside(frame: CameraFrame, box: Box3D) -> np.ndarray:
     inside = np.all((world > box.lower) & (world < box.upper), axis=1)  # NaN (no depth) is outside
     out[r0:r1, c0:c1] = ~inside.reshape(r1 - r0, c1 - c0)
     return out
+
+
+def image_span(frame: CameraFrame, corners: np.ndarray, stride: int = 1) -> tuple[int, int, int, int] | None:
+    """The image rectangle (first row, row past the last, first column, column past the last; in blocks of
+    ``stride`` pixels, clipped to the image) that the world points ``corners`` span in ``frame``: the whole image
+    where some lie behind the camera's plane, None where all do."""
+    h, w = frame.depth.shape
+    rows, cols = (h + stride - 1) // stride, (w + stride - 1) // stride
+    to_camera = frame.extrinsics.inverse()
+    camera = np.asarray(corners, dtype=float) @ to_camera.rotation.T + to_camera.position
+    behind = camera[:, 2] <= 0.01
+    if behind.all():
+        return None
+    if behind.any():  # straddles the camera's plane: any pixel may see it
+        return 0, rows, 0, cols
+    k = frame.intrinsics
+    u = k[0, 0] * camera[:, 0] / camera[:, 2] + k[0, 2]
+    v = k[1, 1] * camera[:, 1] / camera[:, 2] + k[1, 2]
+    c0, c1 = max(int(np.floor(u.min() / stride)), 0), min(int(np.ceil(u.max() / stride)) + 1, cols)
+    r0, r1 = max(int(np.floor(v.min() / stride)), 0), min(int(np.ceil(v.max() / stride)) + 1, rows)
+    return r0, r1, c0, c1
 
 
 def evenly_spread(points: np.ndarray, most: int) -> np.ndarray:

@@ -18,7 +18,7 @@ import mujoco
 import numpy as np
 
 from roboscript.geometry import Box3D, Transform
-from roboscript.perception.base import ArticulationJoint, Perception, UnknownObjectError, outside, within
+from roboscript.perception.base import ArticulationJoint, Perception, joints_if_known, outside, within
 from roboscript.perception.furniture.carcass import carcass_facing, carcass_panels
 from roboscript.perception.reconstruction.carving import SHELL, seen_through
 from roboscript.perception.reconstruction.memory import remembered
@@ -68,7 +68,9 @@ def build_perceived_scene(
             body = spec.worldbody.add_body(name=f"fixed/{name}")
             _add_boxes(body, boxes_of(points, VOXEL), np.zeros(3))
             continue
-        carrier = moving.get(joint.part) or moving.setdefault(joint.part, _jointed_body(spec, joint))
+        if joint.part not in moving:
+            moving[joint.part] = _jointed_body(spec, joint)
+        carrier = moving[joint.part]
         body = carrier if name == joint.part else carrier.add_body(name=f"part/{name}")
         _add_boxes(body, boxes_of(points, VOXEL), np.asarray(joint.position, dtype=float))
     for name, points in contents.objects.items():
@@ -203,10 +205,7 @@ def moving_parts(perception: Perception) -> dict[str, ArticulationJoint]:
     for name in perception.furniture():
         if "." not in name:  # the furniture itself: it does not move
             continue
-        try:
-            joints = perception.joints(name)
-        except (UnknownObjectError, ValueError):
-            continue
+        joints = joints_if_known(perception, name)
         if len(joints) == 1:
             out[name] = joints[0]
     return out

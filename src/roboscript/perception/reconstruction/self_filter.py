@@ -20,6 +20,7 @@ import numpy as np
 
 from roboscript.geometry import Transform
 from roboscript.perception.detection.pixel_masks import grown
+from roboscript.perception.points import image_span
 from roboscript.robot_io import CameraFrame
 from roboscript.robots import RobotDescription
 from roboscript.robots.mujoco_model import compiled_robot
@@ -107,22 +108,15 @@ class SelfFilter:
         """The working pixels inside the image rectangle of some visual geom's box (its bounding sphere where the
         box is behind the camera in part)."""
         out = np.zeros((h, w), dtype=bool)
-        to_camera = frame.extrinsics.inverse()
-        k = frame.intrinsics
         signs = np.array([[x, y, z] for x in (-1, 1) for y in (-1, 1) for z in (-1, 1)], dtype=float)
         for g in self._visual:
             center, half = self.model.geom_aabb[g, :3], self.model.geom_aabb[g, 3:]
             rotation = self.data.geom_xmat[g].reshape(3, 3)
             corners = self.data.geom_xpos[g] + (center + signs * half) @ rotation.T
-            camera = corners @ to_camera.rotation.T + to_camera.position
-            if np.any(camera[:, 2] <= 0.01):
-                if np.all(camera[:, 2] <= 0.01):
-                    continue
-                return np.ones((h, w), dtype=bool)  # straddles the camera's plane: cast everywhere
-            u = k[0, 0] * camera[:, 0] / camera[:, 2] + k[0, 2]
-            v = k[1, 1] * camera[:, 1] / camera[:, 2] + k[1, 2]
-            c0, c1 = int(max(np.floor(u.min() / self.stride), 0)), int(min(np.ceil(u.max() / self.stride) + 1, w))
-            r0, r1 = int(max(np.floor(v.min() / self.stride), 0)), int(min(np.ceil(v.max() / self.stride) + 1, h))
+            span = image_span(frame, corners, self.stride)
+            if span is None:
+                continue
+            r0, r1, c0, c1 = span
             if c1 > c0 and r1 > r0:
                 out[r0:r1, c0:c1] = True
         return out
