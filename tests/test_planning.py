@@ -482,22 +482,6 @@ def test_a_carried_object_stays_upright_where_the_arm_changes_branch():
     backend.close()
 
 
-def test_the_straight_line_between_branches_that_turn_the_wrist_over_does_not_keep_a_held_thing_upright():
-    from roboscript.planning.kinematics import ArmKinematics
-    from roboscript.planning.transfer import upright_along
-    from roboscript.robots import get_robot
-
-    description = get_robot("ur5e")
-    kinematics = ArmKinematics(description, Transform.identity())
-    home = np.array(description.home)
-    flipped = home + np.array([0.0, 0.0, 0.0, np.pi, 0.0, np.pi])
-    flipped[4] = -home[4]  # the UR wrist's other branch: the same hand orientation, the wrist turned over
-    assert np.allclose(kinematics.fk(flipped).rotation, kinematics.fk(home).rotation, atol=1e-9)
-    assert not upright_along(kinematics, home, flipped)  # the hand's axis passes through level between them
-    turned = home + np.array([1.2, 0.0, 0.0, 0.0, 0.0, 0.5])  # the base and the last joint turned: always upright
-    assert upright_along(kinematics, home, turned)
-
-
 def test_a_planner_that_runs_out_of_time_retries_with_twice_the_time_and_the_next_goal(monkeypatch):
     """MotionPlanner.plan's retry schedule, with a test double for the OMPL planner that times out twice (the
     machine's load taken as none, then as twice the CPUs)."""
@@ -540,40 +524,6 @@ def test_a_planner_that_runs_out_of_time_retries_with_twice_the_time_and_the_nex
         motion.plan(start, goals, timeout=0.5)
     assert [limit for _, limit in calls] == [1.0, 2.0, 4.0]
     assert not motion.connects(start, goals[0], timeout=0.5) and calls[-1][1] == 1.0
-    backend.close()
-
-
-def test_a_goal_the_straight_way_to_which_tips_what_is_held_gets_one_upright_run(monkeypatch):
-    """Holding something, every run but the last keeps it upright; where the straight way to the goal tips it past
-    the allowance (likely across a turn of the wrist over, where no upright path is), only the first does. Test
-    doubles stand in for the OMPL planner and the transfer."""
-    from roboscript.planning import motion as motion_module
-    from roboscript.planning.planner import JointPath
-
-    monkeypatch.setattr(motion_module, "load_factor", lambda: 1.0)
-    backend, motion = planner_for(objects_world(), "panda")
-    start = np.array([0.15, -0.2, 1.03, -2.67, -2.83, 3.74, -2.12])  # the branch change of the test above
-    tipping = np.array([-2.85, -0.39, -2.85, -2.49, -0.33, 2.85, 1.36])
-    calls: list[tuple[bool, float]] = []
-
-    class UprightNever:
-        def plan(self, start, goal, planner, timeout, constraint=None):
-            calls.append((constraint is not None, timeout))
-            if constraint is not None:
-                raise PlannerTimeoutError(planner, timeout)
-            return JointPath(np.array([start, goal]), planner)
-
-    def no_transfer(planner, kinematics, start, goal, name, timeout):
-        raise PlannerTimeoutError(name, timeout)
-
-    monkeypatch.setattr(motion_module, "plan_transfer", no_transfer)
-    monkeypatch.setattr(type(motion.scene), "attached", property(lambda scene: {"mug": None}))
-    motion._planner = UprightNever()
-    assert motion.plan(start, [tipping], timeout=0.5).attempts == 2
-    assert calls == [(True, 0.5), (False, 1.0)]
-    calls.clear()
-    assert motion.plan(start, [start + 0.05], timeout=0.5).attempts == 3  # upright on every run but the last
-    assert calls == [(True, 0.5), (True, 1.0), (False, 2.0)]
     backend.close()
 
 

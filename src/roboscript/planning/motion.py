@@ -29,7 +29,7 @@ from roboscript.planning.kinematics import ArmKinematics
 from roboscript.planning.planner import JointPath, JointPlanner, pose_distance, same_pose, seed_sampling, whole_turns
 from roboscript.planning.scene import PlanningScene
 from roboscript.planning.timing import time_parameterize
-from roboscript.planning.transfer import plan_transfer, upright, upright_along
+from roboscript.planning.transfer import plan_transfer, upright
 from roboscript.robot_io import ExecutionReport
 
 PLANNING_ATTEMPTS = 3  # tries of a planner that runs out of time, each with twice the time of the one before
@@ -168,18 +168,13 @@ class MotionPlanner:
         validation (a narrow passage the planner's coarser checks slipped through) is retried the same way. While
         the gripper holds something, the path is a transfer (:mod:`roboscript.planning.transfer`) where one can be
         found; the path keeps what the gripper holds upright (:func:`~roboscript.planning.transfer.upright`) on
-        every run but the last, and but the first where the straight way to the goal tips it
-        (:func:`~roboscript.planning.transfer.upright_along`). Each run's time is scaled by the machine's load
+        every run but the last. Each run's time is scaled by the machine's load
         (:func:`~roboscript.load.load_factor`), as every wall-clock budget here is."""
         name, budget = planner or self.default_planner, self._budget(timeout)
         transfer = bool(self.scene.attached)  # carried clear of everything where that can be done
         for attempt in range(PLANNING_ATTEMPTS):
             goal, limit = goals[attempt % len(goals)], budget * 2**attempt
-            # Where the straight way to the goal tips what is held past the allowance, the goal is likely across a
-            # turn of the wrist over, where no upright path is: one upright run, then none (a UR5e's upright runs to
-            # a mug's place in the other wrist branch took 2 + 2 + 4 + 4 + 8 s before the unconstrained last one).
-            hopeless = attempt > 0 and self.scene.attached and not upright_along(self.kinematics, start, goal)
-            if transfer and not hopeless:
+            if transfer:
                 try:
                     path = plan_transfer(self.planner, self.kinematics, start, goal, name, limit)
                     return dataclasses.replace(path, attempts=attempt + 1)
@@ -189,7 +184,7 @@ class MotionPlanner:
                     transfer = False
             # An ordinary path, without the transfer's clearance; still upright while something is held, but for
             # the last run: a path that tips the hand beats none.
-            upright_here = self.scene.attached and attempt < PLANNING_ATTEMPTS - 1 and not hopeless
+            upright_here = self.scene.attached and attempt < PLANNING_ATTEMPTS - 1
             constraint = upright(self.kinematics, start, goal) if upright_here else None
             try:
                 path = self.planner.plan(start, goal, name, limit, constraint=constraint)

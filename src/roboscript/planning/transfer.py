@@ -44,14 +44,6 @@ def upright(kinematics: ArmKinematics, start: np.ndarray, goal: np.ndarray) -> C
     return keeps_upright
 
 
-def upright_along(kinematics: ArmKinematics, start: np.ndarray, goal: np.ndarray, steps: int = 16) -> bool:
-    """Whether the straight joint-space line from ``start`` to ``goal`` keeps what the hand holds as upright as a
-    transfer between them must (:func:`upright`): a cheap sign that an upright path joins them. Two IK branches of
-    one pose that turn the wrist over from each other fail it: between them the hand's axis passes through level."""
-    keeps_upright = upright(kinematics, start, goal)
-    return all(keeps_upright(q) for q in np.linspace(start, goal, steps + 1)[1:-1])
-
-
 def held_tilt(kinematics: ArmKinematics, q: np.ndarray, held_up: np.ndarray) -> float:
     """How far (radians) the held object's upward direction ``held_up`` (in the hand's frame) tilts from the
     world's up with the arm at ``q``."""
