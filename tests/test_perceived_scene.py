@@ -216,7 +216,7 @@ def test_a_perceived_scene_holds_the_robots_colliding_geoms_only_and_all_of_them
 
     for name in ("panda", "ur5e"):
         description = get_robot(name)
-        mount = Transform(np.array([0.1, 0.2, 0.75]), np.array([1.0, 0.0, 0.0, 0.0]))
+        mount = Transform(np.array([0.1, 0.2, 0.75]), np.array([0.0, 0.0, 0.0, 1.0]))
         scene = build_perceived_scene(description, mount, SceneContents({}, {}))
         full = compiled_robot(description, mount)
         collides = (full.geom_contype | full.geom_conaffinity) > 0
@@ -253,7 +253,7 @@ def test_a_part_with_a_perceived_joint_turns_on_it_with_its_handle_and_the_rest_
         {"cabinet.door_0": door, "cabinet.handle_0": handle, "cabinet": top},
         {"cabinet.door_0": hinge, "cabinet.handle_0": hinge},
     )
-    mount = Transform(np.array([0.0, -0.5, 0.75]), np.array([1.0, 0.0, 0.0, 0.0]))
+    mount = Transform(np.array([0.0, -0.5, 0.75]), np.array([0.0, 0.0, 0.0, 1.0]))
     scene = build_perceived_scene(PANDA_DESCRIPTION, mount, contents)
     model, data = scene.model, scene.data
     labels = np.array(scene.body_labels)
@@ -273,3 +273,47 @@ def test_a_part_with_a_perceived_joint_turns_on_it_with_its_handle_and_the_rest_
         expected = (before[name][:, :2] - hinge.position[:2]) @ turn.T + hinge.position[:2]
         assert np.allclose(centres(name)[:, :2], expected, atol=1e-9)
     assert np.array_equal(centres("cabinet"), before["cabinet"])  # the carcass stays
+
+
+def test_the_padding_holds_between_a_surface_seen_as_many_boxes_and_a_finger_of_several_geoms():
+    # MuJoCo's midphase prunes two bodies of several geoms each by their body margins. A perceived scene once left
+    # those at zero: its padding (and a transfer's 2 cm clearance for what the hand holds) held against no observed
+    # box, and a Panda planned a bar's carry under an opened door's bottom edge, seen 5 mm higher than it was.
+    import mujoco
+
+    from roboscript.planning.occupancy import OccupiedBox
+    from roboscript.planning.perceived_scene import SceneContents, build_perceived_scene
+
+    mount = Transform.identity()
+    q = PANDA_DESCRIPTION.home_array()
+
+    def scene_with_surface_at(top: float):
+        def tiles(points, voxel):  # a 30 cm square of 2 cm tiles, 1 cm thick, whatever the points
+            grid = np.arange(-0.15, 0.15, 0.02)
+            corners = [(np.array([x, y, top - 0.01]), np.array([x + 0.02, y + 0.02, top])) for x in grid for y in grid]
+            return [OccupiedBox(lower, upper) for lower, upper in corners]
+
+        empty = build_perceived_scene(PANDA_DESCRIPTION, mount, SceneContents({}, {}))
+        empty.place(q)
+        centre = empty.tcp_pose(q).position
+        contents = SceneContents({}, {"table": np.zeros((1, 3))})
+        under_the_hand = Transform(-centre * [1, 1, 0], mount.quaternion)
+        return build_perceived_scene(PANDA_DESCRIPTION, under_the_hand, contents, boxes_of=tiles)
+
+    probe = scene_with_surface_at(0.0)
+    probe.place(q)
+    model, data = probe.model, probe.data
+    table = np.isin(model.geom_bodyid, [b for b, name in enumerate(probe.body_labels) if name == "table"])
+    assert table.sum() > 100
+    arm = np.flatnonzero(probe.colliding_geoms & ~table)
+    lowest = min(
+        data.geom_xpos[g][2] - np.abs(data.geom_xmat[g].reshape(3, 3)[2]) @ model.geom_size[g]
+        for g in arm
+        if model.geom_type[g] == mujoco.mjtGeom.mjGEOM_BOX
+    )
+    assert 0.1 < lowest < 1.5  # the fingertips' pads, well above the surface at 0
+    gap = 0.003  # inside the 5 mm padding
+    near = scene_with_surface_at(lowest - gap)
+    assert not near.is_free(q)
+    assert any("table" in pair for pair in near.collisions(q))
+    assert scene_with_surface_at(lowest - 0.02).is_free(q)

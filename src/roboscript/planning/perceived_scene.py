@@ -87,10 +87,7 @@ def build_perceived_scene(
         name = model.body(b).name
         labels.append(name.split("/", 1)[1] if name.startswith(("fixed/", "object/", "part/")) else name)
     objects = {name: model.body(f"object/{name}").id for name in contents.objects}
-    # The padding holds against each box only as far as MuJoCo's midphase lets it (the boxes of a body share its
-    # compiled margin, zero): holding it fully made planning through observed clutter three to six times slower
-    # in gt-2d (hard_0, hard_2) and one trial of 80 ran out of planner time under load. Not yet, then.
-    return PlanningScene(model, RobotBinding.bind(model, description), labels, objects, padding, False)
+    return PlanningScene(model, RobotBinding.bind(model, description), labels, objects, padding)
 
 
 def _jointed_body(spec: mujoco.MjSpec, joint: ArticulationJoint) -> mujoco.MjsBody:

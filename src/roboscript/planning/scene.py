@@ -53,14 +53,9 @@ class PlanningScene:
         body_labels: list[str],
         object_bodies: dict[str, int],
         padding: float = 0.005,
-        pad_bodies_of_several_geoms: bool = True,
     ):
-        """``pad_bodies_of_several_geoms``: whether the padding also holds between two bodies of several geoms each
-        (see :meth:`sync_body_margins`); a scene of observed boxes leaves it off (see
-        :func:`roboscript.planning.perceived_scene.build_perceived_scene`)."""
         if padding < 0:
             raise ValueError(f"padding must be >= 0 metres, got {padding}")
-        self._pad_bodies = pad_bodies_of_several_geoms
         self.model = model
         self.data = mujoco.MjData(model)
         self.robot = robot
@@ -437,8 +432,6 @@ class PlanningScene:
         self.sync_body_margins()
 
     def sync_body_margins(self) -> None:
-        """Each body's margin from its geoms' (where the scene pads bodies of several geoms, see
-        :func:`~roboscript.planning.collision_roles.sync_body_margins`)."""
-        if self._pad_bodies:
-            sync_body_margins(self.model, self.colliding_geoms)
+        """Each body's margin from its geoms' (see :func:`~roboscript.planning.collision_roles.sync_body_margins`)."""
+        sync_body_margins(self.model, self.colliding_geoms)
 
