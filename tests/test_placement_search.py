@@ -35,3 +35,28 @@ def test_a_short_drop_on_a_spot_beside_the_first_beats_a_long_one_on_it():
         backend.wait(0.5)
         result = on("red_cup", "red_plate").evaluate(backend.ground_truth)
         assert result.passed, result.detail
+
+
+def test_distinct_spots_drop_those_near_an_earlier_kept_one_turned_the_same_way_or_opposite():
+    import math
+
+    import numpy as np
+
+    from roboscript.api.placement import _distinct
+    from roboscript.api.spots import PlacementSpot
+
+    rng = np.random.default_rng(3)
+    yaws = rng.choice([0.0, 0.5, math.pi, 1.2], 400)
+    centres = rng.uniform(0, 0.3, (400, 2))
+    spots = [PlacementSpot(np.array([x, y, 0.8]), float(w), 0.0) for (x, y), w in zip(centres, yaws, strict=True)]
+    spacing = 0.03
+    expected: list = []
+    for spot in spots:  # the definition, one pair at a time
+        if not any(
+            np.linalg.norm(spot.center - t.center) < spacing and abs(math.remainder(spot.yaw - t.yaw, math.pi)) < 0.1
+            for t in expected
+        ):
+            expected.append(spot)
+    kept = _distinct(spots, spacing)
+    assert 20 < len(kept) < 300
+    assert [id(s) for s in kept] == [id(s) for s in expected]

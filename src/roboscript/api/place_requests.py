@@ -12,6 +12,7 @@ import dataclasses
 import math
 
 import numpy as np
+from scipy.spatial import cKDTree
 
 from roboscript.api import compartments, supports
 from roboscript.api.nearby import (
@@ -310,19 +311,11 @@ def _clear_of(spots: list, points: np.ndarray, radius: float, table_top: float) 
     """The spots with no observed point above the table within ``radius`` of their centre (on the table's level:
     the table itself and what hangs high above it do not count)."""
     band = points[(points[:, 2] > table_top + 0.005) & (points[:, 2] < table_top + 0.5)][:, :2]
-    if len(band) == 0:
+    if len(band) == 0 or not spots:
         return spots
-    # Points binned in cells as wide as the radius: only the 3x3 cells round a spot's can be that near it.
-    cells: dict[tuple[int, int], list[int]] = {}
-    for index, cell in enumerate(map(tuple, np.floor(band / radius).astype(int).tolist())):
-        cells.setdefault(cell, []).append(index)
-    kept = []
-    for s in spots:
-        cx, cy = (int(v) for v in np.floor(s.center[:2] / radius))
-        near = [i for dx in (-1, 0, 1) for dy in (-1, 0, 1) for i in cells.get((cx + dx, cy + dy), ())]
-        if not near or float(np.min(np.linalg.norm(band[near] - s.center[:2], axis=1))) > radius:
-            kept.append(s)
-    return kept
+    centres = np.array([s.center[:2] for s in spots])
+    nearest, _ = cKDTree(band).query(centres, distance_upper_bound=radius)
+    return [s for s, distance in zip(spots, nearest, strict=True) if distance > radius]
 
 
 def _open_side(spots: list[PlacementSpot], receptacle: Receptacle) -> list[PlacementSpot]:

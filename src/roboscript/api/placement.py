@@ -330,8 +330,12 @@ def _distinct(spots: list[PlacementSpot], spacing: float) -> list[PlacementSpot]
     """The spots in order, without those within ``spacing`` of an earlier one turned the same way: a spot that
     near one that failed would fail the same way."""
     out: list[PlacementSpot] = []
+    centres, yaws = np.empty((len(spots), 3)), np.empty(len(spots))
     for spot in spots:
-        if not any(np.linalg.norm(spot.center - t.center) < spacing and _same_turn(spot.yaw, t.yaw) for t in out):
+        kept = len(out)
+        near = np.linalg.norm(centres[:kept] - spot.center, axis=1) < spacing
+        if not near.any() or not any(_same_turn(spot.yaw, float(yaw)) for yaw in yaws[:kept][near]):
+            centres[kept], yaws[kept] = spot.center, spot.yaw
             out.append(spot)
     return out
 
