@@ -150,6 +150,41 @@ def test_a_front_is_fitted_to_points_that_face_its_way():
     assert abs(normal[0]) > 0.99 and len(on_plane) == 60
 
 
+def test_a_front_plane_keeps_the_plane_one_hypothesis_at_a_time_would_keep():
+    """The hypotheses are tested all at once; the winner is what testing them in order finds: the first with the
+    most inliers among the same draws."""
+    from roboscript.perception.furniture import articulation as a
+
+    def in_order(points, toward, normals, seed):
+        rng = np.random.default_rng(seed)
+        best = np.zeros(len(points), dtype=bool)
+        upright = np.flatnonzero(np.abs(np.nan_to_num(normals[:, 2], nan=1.0)) < a.MAX_TILT)
+        for _ in range(200):
+            p, q, r = points[rng.choice(upright, 3, replace=False)]
+            normal = np.cross(q - p, r - p)
+            if np.linalg.norm(normal) < 1e-9:
+                continue
+            normal /= np.linalg.norm(normal)
+            if abs(normal[2]) > a.MAX_TILT or abs(np.dot(toward - p, normal)) > a.HANDLE_REACH:
+                continue
+            inliers = (np.abs((points - p) @ normal) < a.PLANE_TOLERANCE) & (np.abs(normals @ normal) > a.FACING)
+            if inliers.sum() > best.sum():
+                best = inliers
+        return points[best]
+
+    rng = np.random.default_rng(1)
+    for seed in range(6):
+        n = int(rng.integers(100, 3000))
+        front = np.column_stack([rng.uniform(-0.2, 0.2, n), 0.4 + rng.normal(0, 0.002, n), rng.uniform(0.9, 1.1, n)])
+        floor = np.column_stack([rng.uniform(-0.2, 0.2, n), rng.uniform(0.2, 0.4, n), np.full(n, 0.9)])
+        points = np.vstack([front, floor])
+        normals = np.vstack([np.tile([0, -1.0, 0], (n, 1)), np.tile([0, 0, 1.0], (n, 1))])
+        normals += rng.normal(0, 0.3, normals.shape)  # noisy enough that the facing test decides for some points
+        toward = np.array([0.0, 0.37, 1.0])
+        _, _, on_plane = front_plane(points, toward, seed=seed, normals=normals)
+        assert np.array_equal(on_plane, in_order(points, toward, normals, seed))
+
+
 def test_a_drawer_joint_moves_with_its_handle_and_a_hinge_stays():
     drawer = ArticulationJoint("cabinet.drawer_1", "prismatic", np.array([-0.2, 0.6, 1.2]), np.array([1.0, 0, 0]),
                                0.0, 0.0, 0.3)  # fmt: skip

@@ -41,25 +41,33 @@ def front_plane(
         raise ValueError(f"a front needs at least 10 points, got {len(points)}")
     rng = np.random.default_rng(seed)
     toward = np.asarray(toward, dtype=float)
-    best = np.zeros(len(points), dtype=bool)
     pool = np.arange(len(points))
+    facing = None
     if normals is not None:  # planes are drawn through points on upright faces: a front, not the bottom before it
         upright = np.flatnonzero(np.abs(np.nan_to_num(normals[:, 2], nan=1.0)) < MAX_TILT)
         pool = upright if len(upright) >= 10 else pool
-    for _ in range(iterations):
-        a, b, c = points[rng.choice(pool, 3, replace=False)]
-        normal = np.cross(b - a, c - a)
-        norm = np.linalg.norm(normal)
-        if norm < 1e-9:
+        facing = np.nan_to_num(normals)
+    # Every hypothesis at once: the same draws, and the same winner (the first with most inliers), as one at a time.
+    draws = np.array([rng.choice(pool, 3, replace=False) for _ in range(iterations)]).reshape(-1, 3)
+    anchors = points[draws[:, 0]]
+    planes = np.cross(points[draws[:, 1]] - anchors, points[draws[:, 2]] - anchors)
+    lengths = np.linalg.norm(planes, axis=1)
+    usable = lengths >= 1e-9
+    planes[usable] /= lengths[usable, None]
+    usable &= np.abs(planes[:, 2]) <= MAX_TILT
+    usable &= np.abs(np.einsum("ij,ij->i", toward - anchors, planes)) <= HANDLE_REACH
+    best, most = np.zeros(len(points), dtype=bool), 0
+    for chunk in np.array_split(np.flatnonzero(usable), max(1, int(usable.sum()) * len(points) // 1_000_000)):
+        if len(chunk) == 0:
             continue
-        normal /= norm
-        if abs(normal[2]) > MAX_TILT or abs(np.dot(toward - a, normal)) > HANDLE_REACH:
-            continue
-        inliers = np.abs((points - a) @ normal) < PLANE_TOLERANCE
-        if normals is not None:
-            inliers &= np.abs(np.nan_to_num(normals @ normal)) > FACING
-        if inliers.sum() > best.sum():
-            best = inliers
+        offsets = np.einsum("ij,ij->i", anchors[chunk], planes[chunk])
+        inliers = np.abs(planes[chunk] @ points.T - offsets[:, None]) < PLANE_TOLERANCE
+        if facing is not None:
+            inliers &= np.abs(planes[chunk] @ facing.T) > FACING
+        counts = inliers.sum(axis=1)
+        k = int(np.argmax(counts))
+        if counts[k] > most:
+            best, most = inliers[k], int(counts[k])
     if best.sum() < 10:
         raise ValueError(
             f"no upright plane of at least 10 points within {HANDLE_REACH} m of the handle among the {len(points)} "
