@@ -152,20 +152,52 @@ class _StillPerception:
         return contextlib.nullcontext()
 
 
-def test_what_was_seen_of_a_part_the_hand_moved_is_forgotten_and_the_rest_remembered():
-    """A drawer pushed shut: where its front stood out is hidden by the arm still at it, and remembered there it
-    would close round the hand. Everything else hidden stays remembered."""
-    seen = _StillPerception()
+class _StillDrawer(_StillPerception):
+    """Test double: as :class:`_StillPerception`, with the drawer's joint told (it slides along -x to open)."""
+
+    def joints(self, name):
+        from roboscript.perception.base import ArticulationJoint
+
+        if name != "cabinet.drawer_0":
+            return []
+        return [ArticulationJoint(name, "prismatic", np.array([0.4, 0.3, 0.9]), np.array([-1.0, 0, 0]), 0, 0, 0.3)]
+
+
+@pytest.mark.parametrize("perception", [_StillPerception, _StillDrawer])
+def test_what_was_seen_of_a_part_the_hand_moved_is_remembered_where_its_joint_took_it(perception):
+    """A drawer pushed shut by 5 cm, the arm still at it, hiding it: remembered where it stood out, its front
+    closed round the hand; forgotten, a door's handle hidden by the hand that let go of it was free space to hook.
+    A part on a known joint is remembered where the hand's way along the joint took it (the hand's sideways
+    drift is no part of it); one whose joint is not known is forgotten. The rest hidden stays where it was."""
+    seen = perception()
     source = PerceivedSceneSource(seen, PANDA_DESCRIPTION, Transform.identity(), dict)
     source.contents()
     seen.visible = np.zeros((0, 3))  # the next look sees neither: the arm hides both
     source.mark_stale()
     remembered = source.contents()
     assert len(remembered.fixed["cabinet.drawer_0"]) == 50 and len(remembered.fixed[UNKNOWN]) == 50
-    source.mark_stale(moved=["cabinet.drawer_0", "cabinet.handle_0"])
-    after_the_push = source.contents()
-    assert len(after_the_push.fixed["cabinet.drawer_0"]) == 0  # forgotten: the drawer is no longer there
-    assert len(after_the_push.fixed[UNKNOWN]) == 50  # the wall behind the arm is still remembered
+    hand = (np.array([0.45, 0.3, 0.9]), np.array([0.50, 0.31, 0.9]))  # pushed 5 cm along +x, drifting 1 cm in y
+    source.mark_stale(moved={"cabinet.drawer_0": hand, "cabinet.handle_0": hand})
+    kept = np.vstack(list(source.contents().fixed.values()))
+    if perception is _StillPerception:
+        assert np.allclose(np.sort(kept, axis=0), np.sort(seen.wall, axis=0))  # the drawer forgotten, the wall kept
+    else:
+        pushed = seen.front + np.array([0.05, 0.0, 0.0])
+        assert np.allclose(np.sort(kept, axis=0), np.sort(np.vstack([pushed, seen.wall]), axis=0))
+
+
+def test_a_door_let_go_is_moved_by_the_turn_of_the_hand_about_its_hinge_not_by_the_hand_itself():
+    from roboscript.geometry import quat_from_yaw
+    from roboscript.perception.base import ArticulationJoint
+    from roboscript.perception.furniture.articulation import part_motion
+
+    hinge = ArticulationJoint("cabinet.door_0", "revolute", np.array([0.2, 0.4, 1.0]), np.array([0, 0, 1.0]), 0, 0, 2)
+    hand_from = np.array([-0.1, 0.37, 1.1])  # at the handle, 30 cm from the hinge
+    quarter = Transform(np.zeros(3), quat_from_yaw(np.pi / 2))
+    hand_to = hinge.position + quarter.apply((hand_from - hinge.position)[None])[0]
+    motion = part_motion(hinge, hand_from, hand_to)
+    far_edge = np.array([0.19, 0.4, 1.05])
+    assert np.allclose(motion.apply(np.vstack([hand_from, far_edge])), [hand_to, [0.2, 0.39, 1.05]], atol=1e-9)
 
 
 def _inside_a_box(scene, body: str, point: np.ndarray) -> bool:

@@ -106,6 +106,7 @@ class PlanningFollower:
     def __init__(self, motion: MotionPlanner, contacts: ContactAllowances):
         self.motion = motion
         self.contacts = contacts
+        self._part_taken_at: dict[str, Transform] = {}  # the gripper's pose where it took hold of each part
 
     def taken(self, name: str, is_object: bool, gripper: Transform) -> None:
         if is_object:
@@ -113,13 +114,18 @@ class PlanningFollower:
             self.motion.attach(name)
         else:  # a drawer or door with its handle: it moves on its joint, with the hand
             self.contacts.hold_part(name)
+            self._part_taken_at[name] = gripper
 
     def let_go(self, name: str, is_object: bool, gripper: Transform) -> None:
         if is_object:
             self.motion.detach(name)
         self.contacts.released(name, is_object)
-        # A part let go has moved with the hand (pulled, pushed, swung): it and its handle were seen elsewhere.
-        self.motion.world_changed(() if is_object else self.contacts.family(name))
+        if is_object:
+            self.motion.world_changed()
+            return
+        # A part let go has moved with the hand (pulled, pushed, swung), its handle with it.
+        start = self._part_taken_at.pop(name, gripper)
+        self.motion.world_changed({part: (start.position, gripper.position) for part in self.contacts.family(name)})
 
 
 class PerceptionFollower:

@@ -6,7 +6,7 @@ This is what the tool API's motion tools call. Every motion starts from the back
 from __future__ import annotations
 
 import dataclasses
-from collections.abc import Callable, Collection, Sequence
+from collections.abc import Callable, Mapping, Sequence
 from typing import Protocol
 
 import numpy as np
@@ -46,7 +46,7 @@ class SceneSource(Protocol):
 
     def state(self) -> np.ndarray: ...
 
-    def mark_stale(self, moved: Collection[str] = ()) -> None: ...
+    def mark_stale(self, moved: Mapping[str, tuple[np.ndarray, np.ndarray]] | None = None) -> None: ...
 
 
 class MotionPlanner:
@@ -136,10 +136,10 @@ class MotionPlanner:
                 fresh.allow_leaving(a, b, q)
         self._take(fresh)
 
-    def world_changed(self, moved: Collection[str] = ()) -> None:
+    def world_changed(self, moved: Mapping[str, tuple[np.ndarray, np.ndarray]] | None = None) -> None:
         """Something was let go or moved: a scene built from observations is rebuilt before it is next used.
-        ``moved``: furniture parts the hand moved (a drawer pushed shut, with its handle): what was seen of them
-        before is no longer where they are."""
+        ``moved``: furniture parts the hand moved (a drawer pushed shut, with its handle), each with where the TCP
+        took hold of it and where it let go: what was seen of them before moved on their joints with it."""
         if self.scene_source is not None:
             self.scene_source.mark_stale(moved)
 

@@ -11,7 +11,7 @@ looked again, which is when what was seen may have moved.
 
 from __future__ import annotations
 
-from collections.abc import Callable, Collection, Mapping
+from collections.abc import Callable, Mapping
 from dataclasses import dataclass, field
 
 import mujoco
@@ -19,6 +19,7 @@ import numpy as np
 
 from roboscript.geometry import Box3D, Transform
 from roboscript.perception.base import ArticulationJoint, Perception, joints_if_known, outside, within
+from roboscript.perception.furniture.articulation import part_motion
 from roboscript.perception.furniture.carcass import carcass_facing, carcass_panels
 from roboscript.perception.reconstruction.carving import SHELL, seen_through
 from roboscript.perception.reconstruction.memory import remembered
@@ -237,19 +238,27 @@ class PerceivedSceneSource:
         self.perception, self.description, self.mount = perception, description, mount
         self.robot_state, self.padding = robot_state, padding
         self._memory: dict[str, np.ndarray] = {}  # the fixed surfaces the last scene was built from, by owner
+        self._joints: Mapping[str, ArticulationJoint] = {}  # the moving parts' joints the last scene was built with
         self.builds = 0
         self._boxes = RememberedBoxes()
         self._scene: PlanningScene | None = None
         self._looks = -1
         self._stale = True
 
-    def mark_stale(self, moved: Collection[str] = ()) -> None:
+    def mark_stale(self, moved: Mapping[str, tuple[np.ndarray, np.ndarray]] | None = None) -> None:
         """What was seen may have moved (the robot let go of something, or moved a part): rebuild before use.
-        ``moved``: parts the hand moved; their surfaces as seen before are forgotten (the arm, still at a drawer
-        it pushed shut, hides where its front stood out, and remembered there it closed round the hand)."""
+        ``moved``: parts the hand moved, with where the TCP took hold and let go; their surfaces as seen before
+        are remembered where that moved them on the joint the last scene gave them (:func:`part_motion`), and
+        forgotten where it gave them none. Remembered where they were, a drawer's front pushed shut closed round
+        the arm still at it; forgotten, a door's handle that the hand hid as it let go was free space, and the
+        fingers coming back for it hooked it and swung the door (generated into_cupboard.gen_090)."""
         self._stale = True
-        for name in moved:
-            self._memory.pop(name, None)
+        for name, (hand_from, hand_to) in (moved or {}).items():
+            joint = self._joints.get(name)
+            if joint is None:
+                self._memory.pop(name, None)
+            elif name in self._memory:
+                self._memory[name] = part_motion(joint, hand_from, hand_to).apply(self._memory[name])
 
     @timed("scene")
     def current(self) -> PlanningScene:
@@ -280,7 +289,8 @@ class PerceivedSceneSource:
         fixed = dict(contents.fixed)
         for name, panels in carcasses(perception).items():
             fixed[name] = np.vstack([fixed.get(name, np.zeros((0, 3))), within_reach(panels, self.mount)])
-        return SceneContents(contents.objects, fixed, moving_parts(perception))
+        self._joints = moving_parts(perception)
+        return SceneContents(contents.objects, fixed, self._joints)
 
     def _filled(self, name: str, box: Box3D, frames: list, hidden: list) -> np.ndarray:
         """An object's seen points filled down to its underside, less the fill the last look's views (``hidden``:

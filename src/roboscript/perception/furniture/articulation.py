@@ -13,6 +13,7 @@ import math
 
 import numpy as np
 
+from roboscript.geometry import Transform, quat_from_axis_angle, turns_about
 from roboscript.perception.base import ArticulationJoint
 
 DRAWER_TRAVEL = 0.3  # metres a drawer is assumed to slide out at most
@@ -117,6 +118,20 @@ def moved_with_handle(joint: ArticulationJoint, old_handle: np.ndarray, handle_c
     axis = np.asarray(joint.axis, dtype=float)
     shift = float(np.dot(np.asarray(handle_center) - np.asarray(old_handle), axis)) * axis
     return ArticulationJoint(joint.part, joint.type, joint.position + shift, axis, 0.0, joint.lower, joint.upper)
+
+
+def part_motion(joint: ArticulationJoint, hand_from: np.ndarray, hand_to: np.ndarray) -> Transform:
+    """How a part moved on ``joint`` while the hand that held it went from ``hand_from`` to ``hand_to`` (TCP
+    positions): a door turned about its hinge by the angle the hand went round it, a drawer slid along its line by
+    the hand's way along it. Not the hand's own motion: the fingers turn about a handle's bar as a door swings, and
+    the door's far edge, moved with the hand, stood centimetres off."""
+    axis = np.asarray(joint.axis, dtype=float) / np.linalg.norm(joint.axis)
+    hand_from, hand_to = np.asarray(hand_from, dtype=float), np.asarray(hand_to, dtype=float)
+    if joint.type == "revolute":
+        pivot = np.asarray(joint.position, dtype=float)
+        turn = Transform(np.zeros(3), quat_from_axis_angle(axis, float(turns_about(axis, pivot, hand_from, hand_to))))
+        return Transform(pivot - turn.rotation @ pivot, turn.quaternion)
+    return Transform(float(np.dot(hand_to - hand_from, axis)) * axis, np.array([0.0, 0.0, 0.0, 1.0]))
 
 
 def _door(
