@@ -646,3 +646,33 @@ def test_the_padding_holds_between_bodies_of_several_geoms(robot):
         q, found = _hand_over_table_at(motion, gap)
         assert abs(found - gap) < 2e-4, (gap, found)
         assert motion.scene.is_free(q) is free, (gap, motion.scene.collisions(q))
+
+
+def test_a_way_in_with_no_clear_line_starts_as_far_back_as_the_arm_reaches():
+    # A handle at the edge of reach, taken with the hand pointing back at the robot: its pre-grasp lies farther
+    # out. A door's handle swung 60 degrees towards a Panda could not be taken from 10 cm back nor from 5.
+    from roboscript.errors import RoboScriptError
+    from roboscript.planning.approaches import _approach_start
+
+    backend, motion = planner_for("cluttered_1_table_sort", "panda")
+    try:
+        base = backend.base_pose().position
+        inward = Transform.from_rotation(np.zeros(3), np.array([[0, 0, -1.0], [0, 1.0, 0], [1.0, 0, 0]])).quaternion
+        reference = backend.joint_positions()
+
+        def reachable(x: float) -> np.ndarray | None:
+            try:
+                return motion.ik(Transform(base + np.array([x, 0.0, 0.35]), inward), reference)
+            except RoboScriptError:
+                return None
+
+        # The farthest target from which the hand still reaches 2.5 cm farther out, but not 5 cm.
+        edge = [x for x in np.arange(0.3, 1.0, 0.005) if reachable(x) is not None and reachable(x + 0.025) is not None]
+        x = max(edge)
+        assert reachable(x + 0.05) is None
+        target = Transform(base + np.array([x, 0.0, 0.35]), inward)
+        start = _approach_start(motion, target, 0.1, reachable(x))
+        backed = motion.kinematics.fk(start).position - target.position
+        assert np.allclose(backed, [0.025, 0.0, 0.0], atol=2e-3)  # a quarter of the way back: the most in reach
+    finally:
+        backend.close()

@@ -15,6 +15,7 @@ from roboscript.planning.motion import MotionPlanner
 APPROACH_SEARCH = IKSearch(solutions=4)  # the IK branches whose straight approach lines are tried
 WIDE_APPROACH_SEARCH = IKSearch(8, 80, 8)  # see approaches
 MIN_APPROACH_FRACTION = 0.5  # of the pre-grasp distance: the least straight approach a grasp is moved in along
+APPROACH_FRACTIONS = (1.0, 0.5, 0.25, 0.125)  # of the pre-grasp distance: where a way in with no clear line may start
 
 
 def straight_lines(
@@ -105,12 +106,15 @@ def move_to_approach(
 
 def _approach_start(motion: MotionPlanner, target: Transform, distance: float, goal: np.ndarray) -> np.ndarray:
     """Where an approach with no clear straight line starts: the pre-grasp ``distance`` back along the
-    approach axis, or half as far where that is out of reach (a handle at the edge of the arm's reach)."""
+    approach axis, or a half, a quarter, an eighth as far where that is out of reach (a handle at the edge of the
+    arm's reach: a door's handle swung 60 degrees towards a Panda was out of reach from 5 cm back, not from 2.5)."""
     axis = target.rotation[:, 2]
-    try:
-        return motion.ik(Transform(target.position - distance * axis, target.quaternion), goal)
-    except IKError:
-        return motion.ik(Transform(target.position - distance / 2 * axis, target.quaternion), goal)
+    for fraction in APPROACH_FRACTIONS[:-1]:
+        try:
+            return motion.ik(Transform(target.position - fraction * distance * axis, target.quaternion), goal)
+        except IKError:
+            continue
+    return motion.ik(Transform(target.position - APPROACH_FRACTIONS[-1] * distance * axis, target.quaternion), goal)
 
 
 def finish_approach(motion: MotionPlanner, option: tuple[np.ndarray, np.ndarray | None], target: Transform) -> None:
