@@ -109,12 +109,12 @@ def _approach_start(motion: MotionPlanner, target: Transform, distance: float, g
     approach axis, or a half, a quarter, an eighth as far where that is out of reach (a handle at the edge of the
     arm's reach: a door's handle swung 60 degrees towards a Panda was out of reach from 5 cm back, not from 2.5)."""
     axis = target.rotation[:, 2]
-    for fraction in APPROACH_FRACTIONS[:-1]:
+    for fraction in APPROACH_FRACTIONS:
         try:
             return motion.ik(Transform(target.position - fraction * distance * axis, target.quaternion), goal)
-        except IKError:
-            continue
-    return motion.ik(Transform(target.position - APPROACH_FRACTIONS[-1] * distance * axis, target.quaternion), goal)
+        except IKError as exc:
+            failure = exc
+    raise failure
 
 
 def finish_approach(motion: MotionPlanner, option: tuple[np.ndarray, np.ndarray | None], target: Transform) -> None:
