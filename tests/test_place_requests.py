@@ -69,6 +69,28 @@ def test_free_spots_keep_clear_of_neighbours_and_on_the_support():
     assert edge == []
 
 
+def test_a_round_thing_fits_a_turned_basket_by_its_outline_not_its_turned_square():
+    """An apple 7.6 cm across, 3 cm off the middle of a basket 16 cm wide whose sides are turned 22 degrees to
+    the apple's axes: its square, turned so, would reach 5.9 cm from its middle towards the wall, past the wall's
+    margin; the apple itself stays clear of it (measured.clear_table.gen_052: no spot in the basket within 30 cm
+    of the asked one, though the basket's own spots had room)."""
+    turn = np.radians(22.0)
+    frame = Transform(np.array([0.0, 0.0, 0.82]), np.array([0.0, 0.0, np.sin(turn / 2), np.cos(turn / 2)]))
+    basket = Receptacle("basket", frame, np.array([-0.15, -0.08, 0.008]), np.array([0.15, 0.08, 0.2]))
+    support = Support(basket, 0.828, ())
+    radius = 0.038
+    angles = np.linspace(0.0, 2 * np.pi, 16, endpoint=False)
+    outline = radius * np.column_stack([np.cos(angles), np.sin(angles)])
+    half = np.array([radius, radius])
+    across = frame.rotation[:2, 1]  # towards the basket's long wall
+    off_middle = 0.03 * across[None]
+    assert free_spots(off_middle, half, 0.0, 0.076, support) == [], "the turned square meets the wall's margin"
+    (spot,) = free_spots(off_middle, half, 0.0, 0.076, support, outline)
+    np.testing.assert_allclose(spot.center[:2], off_middle[0])
+    # Beyond the room the outline leaves (8 cm less the radius and the margin: 3.5 cm), none.
+    assert free_spots(0.04 * across[None], half, 0.0, 0.076, support, outline) == []
+
+
 def test_a_taken_position_beside_a_neighbour_moves_along_it_not_away_from_it():
     """ "14 cm beside the mug", where a strawberry stands: the thing goes beside the strawberry, still as near the
     mug, rather than beyond the strawberry, which is as near the position but further from the mug."""

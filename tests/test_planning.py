@@ -153,7 +153,7 @@ def test_a_held_box_makes_the_planner_avoid_what_the_bare_gripper_clears(robot):
     assert blocked, "the held box must hit the wall on the straight path"
     assert ("held", "wall") in scene.collisions(blocked[0])
 
-    path = motion.planner.plan(qa, qb)
+    path = motion.planner.plan(qa, qb, "RRTConnect", 10.0)  # one run, no retries: time to spare on a busy machine
     motion.planner.validate(path.waypoints)  # with the box attached
     assert len(path.waypoints) > 2, "the path must detour"
     scene.detach("held")
@@ -449,6 +449,64 @@ def test_a_transfer_lifts_the_held_object_clear_and_carries_it_clear():
     first, last = clear.index(True), len(clear) - 1 - clear[::-1].index(True)
     assert all(clear[first : last + 1])
     motion.planner.validate(path.waypoints)  # and the whole of it is free with the ordinary padding
+
+
+@pytest.mark.parametrize("robot", ROBOTS)
+def test_a_carry_goes_over_what_its_straight_line_meets_without_a_planner(robot):
+    """A box carried level across a wall it would hit goes straight up to the lowest cruise height that clears the
+    wall by the held clearance, across, and straight down: no planner run, the whole of it free and upright."""
+    from roboscript.planning.path_checks import first_blocked
+    from roboscript.planning.transfer import CRUISE_RISES, HELD_CLEARANCE, carry_over, upright
+
+    world = objects_world(
+        {"name": "held", "type": "blue_box", "position": [0.1, -0.35]},
+        {"name": "wall", "type": "cereal_box", "position": [0.05, 0.0], "yaw": 90},
+    )
+    backend, motion = planner_for(world, robot)
+    scene, kinematics = motion.scene, motion.kinematics
+    height = backend.ground_truth.box("wall").upper[2] + 0.04  # the box, 5.5 cm below the TCP, meets the wall
+    qa = motion.ik(Transform(np.array([0.05, -0.25, height]), DOWN))
+    qb = motion.ik(Transform(np.array([0.05, 0.25, height]), DOWN), qa)
+    _hold(backend, motion, "held", qa, below=0.03)
+    step = motion.planner.validation_step
+    with held_clearance(scene, HELD_CLEARANCE):
+        assert first_blocked(scene, np.array([qa, qb]), step) is not None, "the straight carry meets the wall"
+    keeps_upright = upright(kinematics, qa, qb)
+
+    waypoints = carry_over(kinematics, scene, qa, qb, keeps_upright, step)
+
+    assert waypoints is not None
+    np.testing.assert_allclose(waypoints[0], qa)
+    np.testing.assert_allclose(waypoints[-1], qb)
+    tcp = np.array([kinematics.fk(q).position for q in waypoints])
+    cruise = height + CRUISE_RISES[0]  # 5 cm higher clears the wall by 3.5 cm
+    at_start = np.linalg.norm(tcp[:, :2] - tcp[0, :2], axis=1) < 1e-3
+    at_goal = np.linalg.norm(tcp[:, :2] - tcp[-1, :2], axis=1) < 1e-3
+    # Straight up from the start and straight down to the goal, both to the cruise height (in the lines' 5 mm
+    # steps), and across above it.
+    assert cruise - 1e-3 <= tcp[at_start, 2].max() < cruise + 5e-3
+    assert cruise - 1e-3 <= tcp[at_goal, 2].max() < cruise + 5e-3
+    assert np.all(at_start | at_goal | (tcp[:, 2] > cruise - 2e-3))
+    dense = densify(waypoints, scene.lever_arms, 0.005)
+    assert all(keeps_upright(q) for q in dense)
+    motion.planner.validate(waypoints)
+    dense_tcp = np.array([kinematics.fk(q).position for q in dense])
+    across = dense_tcp[:, 2] > cruise - 2e-3
+    with held_clearance(scene, HELD_CLEARANCE - step):  # as a planner's path keeps it: see the transfer test
+        assert all(scene.is_valid(q) for q in dense[across])
+    backend.close()
+
+
+def _hold(backend: MujocoBackend, motion: MotionPlanner, name: str, q: np.ndarray, below: float) -> None:
+    """Puts object ``name`` in the hand of the arm at ``q``, its centre ``below`` metres under the TCP, and
+    attaches it in the planning scene."""
+    model, state = backend.sim_world.model, backend.sim_world.data.qpos.copy()
+    adr = model.jnt_qposadr[model.body_jntadr[model.body(name).id]]
+    state[adr : adr + 3] = motion.kinematics.fk(q).position - [0.0, 0.0, below]
+    state[adr + 3 : adr + 7] = [1.0, 0.0, 0.0, 0.0]
+    state[backend.sim_world.robot.qpos] = q
+    motion.scene.update(state)
+    motion.scene.attach(name, q)
 
 
 def test_a_carried_object_stays_upright_where_the_arm_changes_branch():

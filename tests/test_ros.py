@@ -37,7 +37,7 @@ from roboscript.bench.tasks import get_task
 from roboscript.drivers.base import DriverError
 from roboscript.perception.modes import perception_mode
 from roboscript.robot_config import config_path, parse_robot_config
-from roboscript.ros.driver import _advertised
+from roboscript.ros.driver import _advertised, _goal_status
 from roboscript.ros.launch import SimProcess, start_master, start_sim
 from roboscript.rossim.server import DISTURB_TOPIC
 from roboscript.sim.world_catalog import load_world
@@ -223,6 +223,33 @@ def test_a_goal_the_controller_rejects_is_reported_with_its_reason(panda):
         time.sleep(0.02)
     status = goal.status()
     assert status.state == "rejected" and "are not this controller's" in status.detail
+
+
+def test_a_goal_rejected_before_the_client_tracks_it_is_reported_rejected():
+    """actionlib's SimpleActionClient takes its goal's handle only after sending the goal; a rejection that arrives
+    first is dropped by it and its simple state stays pending, but the handle's state machine has the rejection.
+    A test double of the client in that state (the race seen once in a full run)."""
+    from actionlib import CommState, SimpleGoalState
+    from actionlib_msgs.msg import GoalStatus as Codes
+
+    class RejectedHandle:
+        def get_comm_state(self):
+            return CommState.DONE
+
+    class ClientThatMissedTheRejection:
+        simple_state = SimpleGoalState.PENDING
+        gh = RejectedHandle()
+
+        def get_state(self):
+            return Codes.REJECTED
+
+        def get_goal_status_text(self):
+            return "joints not_a_joint_0 are not this controller's"
+
+    status = _goal_status(ClientThatMissedTheRejection())
+    assert status.done and status.state == "rejected" and "not this controller's" in status.detail
+    ClientThatMissedTheRejection.gh = None  # no goal sent yet
+    assert not _goal_status(ClientThatMissedTheRejection()).done
 
 
 def test_ctrl_c_during_a_motion_cancels_the_goal_and_the_arm_stops(panda):

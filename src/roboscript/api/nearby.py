@@ -109,13 +109,19 @@ def free_spots(
     fitting = np.zeros((len(candidates), len(TURNS)), dtype=bool)
     for k, turn in enumerate(TURNS):
         own_half = np.asarray(half) + MARGIN
-        corners = Footprint(np.zeros(2), yaw + turn - frame_yaw, own_half).corners()
-        extent = np.abs(corners).max(axis=0)
-        # An object wider than its support's top (a block on a can) need only have its middle over it.
-        room = lower + extent <= upper - extent + 1e-9
-        lo, hi = np.where(room, lower + extent, lower), np.where(room, upper - extent, upper)
-        ok = np.all((local >= lo - 1e-9) & (local <= hi + 1e-9), axis=1)
         own = None if outline is None else turned(outline, turn)
+        if own is None:
+            reach = Footprint(np.zeros(2), yaw + turn - frame_yaw, own_half).corners()
+        else:
+            # The outline stays within the region, not the turned rectangle round it: an apple's square, turned
+            # 22 degrees to a basket's sides, reaches 1.4 cm further each way than the apple does.
+            shape = turned(own, -frame_yaw)
+            reach = np.vstack([shape.min(axis=0) - MARGIN, shape.max(axis=0) + MARGIN])
+        low, high = lower - reach.min(axis=0), upper - reach.max(axis=0)
+        # An object wider than its support's top (a block on a can) need only have its middle over it.
+        room = low <= high + 1e-9
+        lo, hi = np.where(room, low, lower), np.where(room, high, upper)
+        ok = np.all((local >= lo - 1e-9) & (local <= hi + 1e-9), axis=1)
         for obstacle in support.obstacles:
             ok &= stands_clear(candidates, yaw + turn, own_half, obstacle, own, ok)
         fitting[:, k] = ok

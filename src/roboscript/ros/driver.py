@@ -363,10 +363,15 @@ def _advertised(topic: str) -> bool:
 
 def _goal_status(client) -> GoalStatus:
     """A SimpleActionClient's goal, done only once its result has arrived (a terminal status may come first)."""
-    from actionlib import SimpleGoalState
+    from actionlib import CommState, SimpleGoalState
 
     if client.simple_state != SimpleGoalState.DONE:
-        return GoalStatus("active")
+        # SimpleActionClient.send_goal learns its goal's handle only after sending the goal: the transitions of a
+        # goal the server rejects (or ends) before then are dropped ("a goal handle that we're not tracking") and
+        # the simple state stays pending for ever. The handle's own state machine did follow them.
+        handle = client.gh
+        if handle is None or handle.get_comm_state() != CommState.DONE:
+            return GoalStatus("active")
     return GoalStatus(_STATES.get(client.get_state(), "lost"), client.get_goal_status_text())
 
 
