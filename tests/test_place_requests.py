@@ -390,3 +390,41 @@ def test_a_position_beside_the_base_moves_out_to_where_the_arm_can_take_the_thin
     out = base + np.array([0.35, 0.0])
     spots = ranked(free_spots(ring_candidates(out, 0.1, base), half, 0.0, 0.1, support), out, half, 0.0, ())
     assert clear_of_base(spots, base) == spots
+
+
+def test_what_stands_under_a_spot_looks_again_at_no_drawer_far_from_it():
+    """What a thing put down at a position rests on is asked of a drawer's inside (a question that, in full
+    perception, looks again first where the arm has moved: a second) only where the inside as already measured
+    comes within INSIDE_SLACK of the position. A test double of ground truth counts those questions."""
+    import mujoco
+
+    from roboscript.api.supports import INSIDE_SLACK, contains_xy, support_under
+    from roboscript.perception.ground_truth import GroundTruthPerception
+
+    class CountsQuestions(GroundTruthPerception):
+        def __init__(self, backend):
+            super().__init__(backend)
+            self.asked: list[str] = []
+
+        def receptacle(self, name):  # the question that may look again
+            self.asked.append(name)
+            return super().receptacle(name)
+
+        def seen_receptacle(self, name):  # the one that never does
+            return super().receptacle(name)
+
+    with MujocoBackend("world_1_table_sort", robot="panda") as backend:
+        model, data = backend.sim_world.model, backend.sim_world.data
+        data.qpos[model.joint("cabinet.drawer_1.joint").qposadr[0]] = 0.2
+        mujoco.mj_forward(model, data)
+        perception = CountsQuestions(backend)
+        drawer = perception.seen_receptacle("cabinet.drawer_1")
+        inside = drawer.frame.apply(np.array([(drawer.lower + drawer.upper) / 2]))[0, :2]
+        far = np.array([0.0, -0.45])  # on the table, clear of everything, 80 cm from the cabinet
+        assert not contains_xy(drawer, far, INSIDE_SLACK)
+        half = np.array([0.03, 0.03])
+
+        assert support_under(perception, "none", far, half).region.name == "table"
+        assert not [name for name in perception.asked if name.startswith("cabinet.")]
+        assert support_under(perception, "none", inside, half).region.name == "cabinet.drawer_1"
+        assert "cabinet.drawer_1" in perception.asked

@@ -29,6 +29,9 @@ FLAT_RIM = 0.03  # metres: a receptacle whose rim stands less than this above it
 PLATE_EDGE = 0.015  # metres kept inside a plate's outline by what is set down on it (its rim rises there)
 RESTS_ON = 0.03  # metres a thing's bottom may stand off a surface it rests on (a plate's rim, a sagging liner)
 UNDER_SLACK = 0.005  # metres a floor may stand above a thing's bottom and still bear it (perceived heights)
+# Metres an inside as last measured may grow by when looked at again: the arm that pulled a drawer hid up to 5 cm of
+# its depth from the look before.
+INSIDE_SLACK = 0.1
 
 
 def top_face(perception: Perception, name: str) -> Receptacle | None:
@@ -122,11 +125,12 @@ def _height(receptacle: Receptacle, local_z: float) -> float:
     return float(receptacle.frame.apply(np.array([[0.0, 0.0, local_z]]))[0, 2])
 
 
-def contains_xy(receptacle: Receptacle, point_xy: np.ndarray) -> bool:
-    """Whether a point lies over the receptacle's floor."""
+def contains_xy(receptacle: Receptacle, point_xy: np.ndarray, slack: float = 0.0) -> bool:
+    """Whether a point lies over the receptacle's floor (grown by ``slack`` metres each way)."""
     floor = floor_of(receptacle)
     local = receptacle.frame.inverse().apply(np.array([[point_xy[0], point_xy[1], floor]]))[0]
-    return bool(np.all(local[:2] >= receptacle.lower[:2]) and np.all(local[:2] <= receptacle.upper[:2]))
+    lower, upper = receptacle.lower[:2] - slack, receptacle.upper[:2] + slack
+    return bool(np.all(local[:2] >= lower) and np.all(local[:2] <= upper))
 
 
 def object_footprint(perception: Perception, name: str) -> Footprint:
@@ -163,6 +167,11 @@ def support_under(perception: Perception, held: str, point_xy: np.ndarray, half:
     for name in [*objects, *perception.furniture()]:
         if name == held or kind_of(name) in ("handle", "door"):
             continue
+        seen = _seen_interior(perception, name)
+        if seen is not None and not contains_xy(seen, point_xy, INSIDE_SLACK):
+            # Far from the point even as a fresh look may measure it: not worth the look (a second in full
+            # perception, taken at every place on the table while the arm carries something past a cabinet).
+            continue
         interior = holds_interior(perception, name)
         if interior is not None:
             # A container holds things in it, not on its rim.
@@ -178,6 +187,14 @@ def support_under(perception: Perception, held: str, point_xy: np.ndarray, half:
     if candidates:
         return support_named(perception, held, max(candidates, key=floor_of))
     return support_named(perception, held, table_top(perception))
+
+
+def _seen_interior(perception: Perception, name: str) -> Receptacle | None:
+    """:func:`holds_interior` as already measured (:meth:`Perception.seen_receptacle`)."""
+    try:
+        return perception.seen_receptacle(name)
+    except (UnknownObjectError, ValueError):
+        return None
 
 
 def holds_interior(perception: Perception, name: str) -> Receptacle | None:

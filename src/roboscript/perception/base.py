@@ -151,6 +151,12 @@ class Perception(ABC):
     def receptacle(self, name: str) -> Receptacle | None:
         """The volume where things put into ``name`` go, or ``None`` if it holds nothing (an apple)."""
 
+    def seen_receptacle(self, name: str) -> Receptacle | None:
+        """:meth:`receptacle` as already measured, without looking again first (perception that looks again
+        before it measures a drawer's inside, where the arm may have hidden part of it, may then find it larger);
+        by default the same."""
+        return self.receptacle(name)
+
     @abstractmethod
     def objects(self) -> list[str]:
         """Movable objects (not the table, furniture or its parts)."""

@@ -435,12 +435,19 @@ class PipelinePerception(Perception):
         return list(self.masks) if self.last else []
 
     def receptacle(self, name: str) -> Receptacle | None:
+        return self._receptacle(name, look_again=True)
+
+    def seen_receptacle(self, name: str) -> Receptacle | None:
+        return self._receptacle(name, look_again=False)
+
+    def _receptacle(self, name: str, look_again: bool) -> Receptacle | None:
         obj = self._object(name)
         if obj is None:
             opening = self.furniture_seen.opening(name)
             if opening is None:
                 return None
-            self._fresh_look_inside()
+            if look_again:
+                self._fresh_look_inside()
             return self.furniture_seen.inside(opening)
         if obj.kind is None or not obj.kind.container or obj.kind.interior is None:
             return None
