@@ -226,7 +226,8 @@ class ToolAPI:
     @tool
     def follow_path(self, path: Sequence[Pose]) -> None:
         """Moves the TCP through the list of Poses, in order, as one Cartesian path, carrying what is attached; a
-        door held swings as far along it as the arm reaches (a ``[notice]`` line says how far, if short)."""
+        door held swings as far along it as the arm reaches (a ``[notice]`` line says how far, if short; where that
+        is less than a fifth of the path, nothing moves and CartesianPathIncompleteError says how far it could)."""
         self.moves.along(pose_list(path, "path"))
 
     @tool
