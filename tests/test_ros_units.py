@@ -97,6 +97,37 @@ def test_a_stale_joint_state_is_waited_on_while_the_arm_stands_still_but_not_dur
     assert driver.asked > asked + 1  # it kept asking through its patience before giving up
 
 
+class StaleUntilDriver(ArmOnlyDriver):
+    """Test double of a driver whose robot stopped publishing for a while: its reading is 5 s old until
+    ``fresh_at`` (monotonic seconds), then fresh."""
+
+    def __init__(self, names: list[str], fresh_at: float):
+        self.names, self.fresh_at = names, fresh_at
+
+    def joint_state(self) -> JointStateReading:
+        now = time.monotonic()
+        return JointStateReading(dict.fromkeys(self.names, 0.0), 0.0, now - (5.0 if now < self.fresh_at else 0.0))
+
+
+def test_the_patience_for_a_stale_joint_state_grows_with_the_machines_load(monkeypatch):
+    """Standing still, a joint state that stays stale for 1.5 times the patience of an idle machine (twice the state
+    timeout) is waited out where the machine is three times busier than its cores, and lost where it is idle."""
+    from roboscript.backends import driven
+
+    config = load_robot_config("panda_franka_ros")
+    names = [*config.arm_driver_joints(), *config.gripper.width_joints]
+    late = 3 * config.state_timeout
+    for factor, waited_out in ((3.0, True), (1.0, False)):
+        monkeypatch.setattr(driven, "load_factor", lambda factor=factor: factor)
+        driver = StaleUntilDriver(names, fresh_at=time.monotonic() + late)
+        backend = DriverBackend(driver, config, Transform.identity())
+        if waited_out:
+            assert backend.joint_positions().shape == (7,)
+        else:
+            with pytest.raises(DriverError, match="the robot's driver or the connection is down"):
+                backend.joint_positions()
+
+
 def _in_thread(call) -> BaseException | None:
     """What ``call`` raised, run in a thread given 30 s (a call that never returns fails the test, not hangs it)."""
     raised: list[BaseException | None] = []

@@ -19,6 +19,7 @@ import numpy as np
 from roboscript.backends.base import Backend, BackendError
 from roboscript.drivers.base import Driver, DriverError, JointStateReading
 from roboscript.geometry import Transform
+from roboscript.load import load_factor
 from roboscript.robot_config import RobotConfig
 from roboscript.robot_io import CameraFrame, ExecutionReport, GripperReport
 from roboscript.robots import RobotDescription
@@ -87,10 +88,12 @@ class DriverBackend(Backend):
 
     def _fresh_state(self, patience: float | None = None) -> JointStateReading:
         """The latest joint state, if it is recent enough. While the arm stands still a stale one is waited on for
-        ``patience`` seconds (default: twice the state timeout) before it counts as lost: after a long computation
-        in this process (fusing depth images holds the interpreter) the subscriber's thread may simply not have run
-        yet. During a motion there is no patience: the arm is stopped at once."""
-        patience = 2 * self.config.state_timeout if patience is None else patience
+        ``patience`` seconds (default: twice the state timeout, scaled by the machine's load as every wall-clock
+        budget is, :func:`~roboscript.load.load_factor`) before it counts as lost: after a long computation in this
+        process (fusing depth images holds the interpreter), or on a machine busier than its cores, the
+        subscriber's thread or the robot's publisher may simply not have run yet. During a motion there is no
+        patience: the arm is stopped at once."""
+        patience = 2 * self.config.state_timeout * load_factor() if patience is None else patience
         deadline = _time.monotonic() + patience
         while True:
             reading = self.driver.joint_state()
