@@ -130,7 +130,7 @@ def test_a_held_box_makes_the_planner_avoid_what_the_bare_gripper_clears(robot):
         {"name": "wall", "type": "cereal_box", "position": [0.05, 0.0], "yaw": 90},
     )
     backend, motion = planner_for(world, robot)
-    scene, kinematics = motion.scene, motion.kinematics
+    scene = motion.scene
     wall_top = backend.ground_truth.box("wall").upper[2]
     height = wall_top + 0.07  # the fingers clear the wall; a box hanging 19 cm below them does not
     qa = motion.ik(Transform(np.array([0.05, -0.25, height]), DOWN))
@@ -138,17 +138,7 @@ def test_a_held_box_makes_the_planner_avoid_what_the_bare_gripper_clears(robot):
     straight = densify(np.array([qa, qb]), motion.scene.lever_arms, 0.005)
     assert all(scene.is_valid(q) for q in straight), "the bare gripper passes over the wall"
 
-    # Put the box in the hand at qa (hanging below the fingers) and attach it.
-    state = backend.sim_world.data.qpos.copy()
-    tcp = kinematics.fk(qa)
-    adr = backend.sim_world.model.jnt_qposadr[
-        backend.sim_world.model.body_jntadr[backend.sim_world.model.body("held").id]
-    ]
-    state[adr : adr + 3] = tcp.position - [0.0, 0.0, 0.19]
-    state[adr + 3 : adr + 7] = [1.0, 0.0, 0.0, 0.0]
-    state[backend.sim_world.robot.qpos] = qa
-    scene.update(state)
-    scene.attach("held", qa)
+    _hold(backend, motion, "held", qa, below=0.19)  # the box hangs below the fingers
     blocked = [q for q in straight if not scene.is_valid(q)]
     assert blocked, "the held box must hit the wall on the straight path"
     assert ("held", "wall") in scene.collisions(blocked[0])
