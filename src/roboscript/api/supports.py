@@ -167,7 +167,7 @@ def support_under(perception: Perception, held: str, point_xy: np.ndarray, half:
     for name in [*objects, *perception.furniture()]:
         if name == held or kind_of(name) in ("handle", "door"):
             continue
-        seen = _seen_interior(perception, name)
+        seen = holds_interior(perception, name, look_again=False)
         if seen is not None and not contains_xy(seen, point_xy, INSIDE_SLACK):
             # Far from the point even as a fresh look may measure it: not worth the look (a second in full
             # perception, taken at every place on the table while the arm carries something past a cabinet).
@@ -189,18 +189,11 @@ def support_under(perception: Perception, held: str, point_xy: np.ndarray, half:
     return support_named(perception, held, table_top(perception))
 
 
-def _seen_interior(perception: Perception, name: str) -> Receptacle | None:
-    """:func:`holds_interior` as already measured (:meth:`Perception.seen_receptacle`)."""
+def holds_interior(perception: Perception, name: str, look_again: bool = True) -> Receptacle | None:
+    """The interior of a container or drawer (not a flat top); None where it has none. Without ``look_again``, as
+    already measured (:meth:`Perception.seen_receptacle`)."""
     try:
-        return perception.seen_receptacle(name)
-    except (UnknownObjectError, ValueError):
-        return None
-
-
-def holds_interior(perception: Perception, name: str) -> Receptacle | None:
-    """The interior of a container or drawer (not a flat top); None where it has none."""
-    try:
-        return perception.receptacle(name)
+        return perception.receptacle(name) if look_again else perception.seen_receptacle(name)
     except (UnknownObjectError, ValueError):
         return None
 
