@@ -98,8 +98,9 @@ def carry_over(
     top = max(float(kinematics.fk(start).position[2]), float(kinematics.fk(goal).position[2]))
     up = _line_up(kinematics, scene, start, top + CRUISE_RISES[-1])
     down = _line_up(kinematics, scene, goal, top + CRUISE_RISES[-1])
+    up_heights, down_heights = _tcp_heights(kinematics, up), _tcp_heights(kinematics, down)
     for rise in CRUISE_RISES:
-        a, b = _first_at(kinematics, up, top + rise), _first_at(kinematics, down, top + rise)
+        a, b = _first_at(up_heights, top + rise), _first_at(down_heights, top + rise)
         if a is None or b is None:
             return None  # a line up is cut short below this height
         across = _across(kinematics, scene, constraint, up[a], down[b], step)
@@ -140,12 +141,15 @@ def _line_up(kinematics: ArmKinematics, scene: PlanningScene, q: np.ndarray, hei
     return cartesian_path(kinematics, scene, q, [Transform(pose.position + rise * UP, pose.quaternion)]).waypoints
 
 
-def _first_at(kinematics: ArmKinematics, waypoints: np.ndarray, height: float) -> int | None:
-    """The index of the first of ``waypoints`` with the TCP at ``height`` or above (within a millimetre), or None."""
-    for k, q in enumerate(waypoints):
-        if float(kinematics.fk(q).position[2]) >= height - 1e-3:
-            return k
-    return None
+def _tcp_heights(kinematics: ArmKinematics, waypoints: np.ndarray) -> np.ndarray:
+    """The TCP's height at each of the joint ``waypoints``."""
+    return np.array([kinematics.fk(q).position[2] for q in waypoints], dtype=float)
+
+
+def _first_at(heights: np.ndarray, height: float) -> int | None:
+    """The index of the first of ``heights`` at ``height`` or above (within a millimetre), or None."""
+    reached = np.flatnonzero(heights >= height - 1e-3)
+    return int(reached[0]) if reached.size else None
 
 
 def _line_clear(
